@@ -1,0 +1,39 @@
+// Body definitions. A body is a rigid frame with mass; shapes attached to it give it that
+// mass (see shape.h). Bodies are created by World::createBody and referred to by BodyId.
+#pragma once
+
+#include <cstdint>
+
+#include "pivot/math.h"
+
+namespace pivot {
+
+enum class BodyType : std::uint8_t {
+    Static,     ///< never moves; infinite mass
+    Kinematic,  ///< moves by its velocity only; infinite mass, ignores forces and gravity
+    Dynamic,    ///< moved by forces, gravity, joints and contacts
+};
+
+/// Everything needed to create a body. Defaults give a static body at the origin.
+struct BodyDef {
+    BodyType type = BodyType::Static;
+    Vec2 position;                 ///< m, world position of the body origin
+    float angle = 0.0f;            ///< rad
+    Vec2 linearVelocity;           ///< m/s, of the body origin
+    float angularVelocity = 0.0f;  ///< rad/s
+    /// 1/s. Velocities are scaled by 1/(1 + h*damping) each step; 0 keeps energy.
+    float linearDamping = 0.0f;
+    float angularDamping = 0.0f;
+    float gravityScale = 1.0f;   ///< multiplies the world gravity for this body
+    bool fixedRotation = false;  ///< infinite rotational inertia: the body never turns
+    std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
+};
+
+/// Mass properties of a shape or body, about the centre of mass.
+struct MassData {
+    float mass = 0.0f;               ///< kg
+    Vec2 center;                     ///< m, centre of mass in the body (or shape) frame
+    float rotationalInertia = 0.0f;  ///< kg m^2, about the centre of mass
+};
+
+}  // namespace pivot

@@ -1,0 +1,52 @@
+// Tuning constants, each with its unit and the reason for its value. The values are those of
+// Box2D 2.4.1 (published constants), so that pivot2d's FullNGS joint can reproduce that
+// engine's reference revolute joint step for step. Change them knowing that every scene,
+// test tolerance and recorded hash depends on them.
+#pragma once
+
+#include "pivot/math.h"
+
+namespace pivot {
+
+/// Metres. Position error a joint or contact may keep: corrections stop once errors are below
+/// it, which avoids jitter from chasing round-off. Also the NGS early-exit threshold.
+/// Normally 0.5 cm; it is tuned for bodies of 0.1 m to 10 m and moving objects up to ~10 m.
+constexpr float kLinearSlop = 0.005f;
+
+/// Radians. Angular error an angle limit may keep (2 degrees), for the same reason.
+constexpr float kAngularSlop = 2.0f / 180.0f * kPi;
+
+/// Radians. The largest angle-limit correction in one position iteration (8 degrees): large
+/// jumps in angle overshoot, so the limit is approached over several iterations.
+constexpr float kMaxAngularCorrection = 8.0f / 180.0f * kPi;
+
+/// Metres per step. The largest distance a body may move in one step. Larger velocities are
+/// scaled down (the velocity itself, not just the move), which keeps a fast body from
+/// tunnelling or exploding the solver. At 60 Hz this is 120 m/s.
+constexpr float kMaxTranslation = 2.0f;
+
+/// Radians per step. The largest rotation of a body in one step (a quarter turn); at 60 Hz
+/// this is about 94 rad/s. Same reason as kMaxTranslation.
+constexpr float kMaxRotation = 0.5f * kPi;
+
+/// The maximum number of vertices of a convex polygon. Small and fixed so polygons are
+/// stored inline without allocation.
+constexpr int kMaxPolygonVertices = 8;
+
+/// Default bias factors (dimensionless fraction of the position error removed per step or per
+/// solve). 0.2 for the velocity-level methods (the seed note's value: larger makes a bridge
+/// less stable, smaller makes joints spongy); 1.0 for the NGS methods, which correct the
+/// error they re-measure and need no tuning.
+constexpr float kDefaultBaumgarteBias = 0.2f;
+constexpr float kDefaultPseudoVelocityBias = 0.2f;
+constexpr float kDefaultNgsBias = 1.0f;
+
+/// Step defaults: iterations of the velocity and position phases.
+constexpr int kDefaultVelocityIterations = 8;
+constexpr int kDefaultPositionIterations = 3;
+
+/// Upper bound on iteration counts accepted by World::step: more is certainly a mistake
+/// (a negative number cast to unsigned, say) and would stall the caller.
+constexpr int kMaxIterations = 1000;
+
+}  // namespace pivot

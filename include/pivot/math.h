@@ -1,0 +1,141 @@
+// 2D vector maths used by the public API and the solver: Vec2, Rot, Transform, Mat22.
+// Everything is inline and single precision, like the engines pivot2d is compared with,
+// so that the same sequence of float operations gives the same bits.
+#pragma once
+
+#include <cmath>
+
+namespace pivot {
+
+struct Vec2 {
+    float x = 0.0f;
+    float y = 0.0f;
+
+    constexpr Vec2() = default;
+    constexpr Vec2(float xIn, float yIn) : x(xIn), y(yIn) {}
+
+    constexpr Vec2 operator-() const { return {-x, -y}; }
+    constexpr Vec2& operator+=(Vec2 v) {
+        x += v.x;
+        y += v.y;
+        return *this;
+    }
+    constexpr Vec2& operator-=(Vec2 v) {
+        x -= v.x;
+        y -= v.y;
+        return *this;
+    }
+    constexpr Vec2& operator*=(float s) {
+        x *= s;
+        y *= s;
+        return *this;
+    }
+};
+
+constexpr Vec2 operator+(Vec2 a, Vec2 b) {
+    return {a.x + b.x, a.y + b.y};
+}
+constexpr Vec2 operator-(Vec2 a, Vec2 b) {
+    return {a.x - b.x, a.y - b.y};
+}
+constexpr Vec2 operator*(float s, Vec2 v) {
+    return {s * v.x, s * v.y};
+}
+constexpr Vec2 operator*(Vec2 v, float s) {
+    return {s * v.x, s * v.y};
+}
+constexpr bool operator==(Vec2 a, Vec2 b) {
+    return a.x == b.x && a.y == b.y;
+}
+constexpr bool operator!=(Vec2 a, Vec2 b) {
+    return !(a == b);
+}
+
+constexpr float dot(Vec2 a, Vec2 b) {
+    return a.x * b.x + a.y * b.y;
+}
+/// The z component of the 3D cross product of two vectors in the plane.
+constexpr float cross(Vec2 a, Vec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
+/// w x v for an angular velocity w (about z) and a vector v: the velocity of point v.
+constexpr Vec2 cross(float w, Vec2 v) {
+    return {-w * v.y, w * v.x};
+}
+/// v x w: the negative of cross(w, v).
+constexpr Vec2 cross(Vec2 v, float w) {
+    return {w * v.y, -w * v.x};
+}
+/// The vector turned a quarter turn counter-clockwise.
+constexpr Vec2 leftPerp(Vec2 v) {
+    return {-v.y, v.x};
+}
+constexpr float lengthSquared(Vec2 v) {
+    return dot(v, v);
+}
+inline float length(Vec2 v) {
+    return std::sqrt(dot(v, v));
+}
+inline float distance(Vec2 a, Vec2 b) {
+    return length(b - a);
+}
+inline bool isFinite(float f) {
+    return std::isfinite(f);
+}
+inline bool isFinite(Vec2 v) {
+    return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
+/// A rotation stored as its sine and cosine.
+struct Rot {
+    float s = 0.0f;
+    float c = 1.0f;
+
+    constexpr Rot() = default;
+    explicit Rot(float angle) : s(std::sin(angle)), c(std::cos(angle)) {}
+
+    float angle() const { return std::atan2(s, c); }
+};
+
+/// Rotate v by q.
+constexpr Vec2 rotate(Rot q, Vec2 v) {
+    return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
+}
+/// Rotate v by the inverse of q.
+constexpr Vec2 inverseRotate(Rot q, Vec2 v) {
+    return {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};
+}
+
+/// A rigid frame: rotation then translation.
+struct Transform {
+    Vec2 p;
+    Rot q;
+};
+
+constexpr Vec2 transformPoint(const Transform& t, Vec2 v) {
+    return rotate(t.q, v) + t.p;
+}
+constexpr Vec2 inverseTransformPoint(const Transform& t, Vec2 v) {
+    return inverseRotate(t.q, v - t.p);
+}
+
+/// A 2x2 matrix stored by columns.
+struct Mat22 {
+    Vec2 cx;
+    Vec2 cy;
+
+    /// Solve A x = b by Cramer's rule; a singular matrix gives x = 0, which to a constraint
+    /// means "no impulse" (both bodies immovable along that direction).
+    constexpr Vec2 solve(Vec2 b) const {
+        float a11 = cx.x, a12 = cy.x, a21 = cx.y, a22 = cy.y;
+        float det = a11 * a22 - a12 * a21;
+        if (det != 0.0f) {
+            det = 1.0f / det;
+        }
+        return {det * (a22 * b.x - a12 * b.y), det * (a11 * b.y - a21 * b.x)};
+    }
+};
+
+constexpr float kPi = 3.14159265359f;
+
+}  // namespace pivot

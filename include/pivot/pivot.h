@@ -1,0 +1,12 @@
+// pivot2d: a 2D rigid-body physics library whose revolute joints each choose their own
+// position-correction algorithm. Include this one header for the whole public API.
+#pragma once
+
+#include "pivot/body.h"
+#include "pivot/constants.h"
+#include "pivot/error.h"
+#include "pivot/id.h"
+#include "pivot/joint.h"
+#include "pivot/math.h"
+#include "pivot/shape.h"
+#include "pivot/world.h"

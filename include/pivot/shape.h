@@ -1,0 +1,50 @@
+// Collision shapes and their mass. A shape belongs to one body; its density, spread over its
+// area, gives the body its mass, centre of mass and rotational inertia.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <initializer_list>
+
+#include "pivot/body.h"
+#include "pivot/constants.h"
+#include "pivot/math.h"
+
+namespace pivot {
+
+/// A solid disc.
+struct Circle {
+    Vec2 center;          ///< m, in the body frame
+    float radius = 0.5f;  ///< m, > 0
+};
+
+/// A solid convex polygon of 3 to kMaxPolygonVertices vertices in the body frame, in either
+/// winding. World::createShape checks it (convex, no repeated or collinear vertices, non-zero
+/// area) and stores it counter-clockwise.
+struct Polygon {
+    std::array<Vec2, kMaxPolygonVertices> vertices{};
+    int count = 0;
+
+    /// An axis-aligned box of the given half extents (m, > 0), centred on the body origin.
+    /// Non-positive or non-finite arguments throw pivot::Error.
+    static Polygon box(float halfWidth, float halfHeight);
+    /// A box of the given half extents, centred at `center` and turned by `angle` (rad).
+    static Polygon box(float halfWidth, float halfHeight, Vec2 center, float angle);
+    /// A polygon from its vertices. More than kMaxPolygonVertices throws pivot::Error.
+    static Polygon fromPoints(std::initializer_list<Vec2> points);
+};
+
+/// Everything a shape needs besides its geometry.
+struct ShapeDef {
+    float density = 1.0f;      ///< kg/m^2, >= 0; a dynamic body needs some shape with density > 0
+    float friction = 0.6f;     ///< Coulomb coefficient, >= 0
+    float restitution = 0.0f;  ///< bounce, in [0, 1]
+    std::uint64_t userData = 0;
+};
+
+/// Mass properties of a circle of the given density (kg/m^2).
+MassData computeMass(const Circle& circle, float density);
+/// Mass properties of a convex polygon (either winding) of the given density (kg/m^2).
+MassData computeMass(const Polygon& polygon, float density);
+
+}  // namespace pivot

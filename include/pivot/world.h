@@ -1,0 +1,138 @@
+// The World: owns bodies, shapes and joints, and advances them with World::step.
+//
+// Every call that takes an id or a def checks it first; bad input throws pivot::Error (see
+// error.h) naming the field and value, and leaves the world unchanged.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "pivot/body.h"
+#include "pivot/constants.h"
+#include "pivot/id.h"
+#include "pivot/joint.h"
+#include "pivot/math.h"
+#include "pivot/shape.h"
+
+namespace pivot {
+
+struct WorldDef {
+    Vec2 gravity{0.0f, -10.0f};  ///< m/s^2
+    /// The position solver of joints whose def leaves it unset (the seed note recommends
+    /// FullNGS: robust, and cheaper per iteration than it sounds thanks to the early exit).
+    PositionSolver defaultPositionSolver = PositionSolver::FullNGS;
+    /// Start each step from the previous step's impulses (scaled by the ratio of time steps).
+    bool warmStarting = true;
+};
+
+/// What the last call to World::step did.
+struct StepStats {
+    int islandCount = 0;
+    int bodyCount = 0;   ///< bodies simulated (in an island)
+    int jointCount = 0;  ///< joints solved
+    /// Bodies whose move this step was limited by kMaxTranslation / kMaxRotation.
+    int translationClamps = 0;
+    int rotationClamps = 0;
+    /// The most NGS position iterations any island ran (fewer than asked when every error was
+    /// within slop early). 0 when no island has an NGS joint.
+    int positionIterations = 0;
+};
+
+class World {
+public:
+    explicit World(const WorldDef& def = WorldDef{});
+    ~World();
+    // A world owns memory its ids point into: it is neither copied nor moved. Hold it by
+    // value where it lives, or in a std::unique_ptr.
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    // --- simulation -------------------------------------------------------------------------
+    /// Advance by dt seconds (> 0, finite) with the given iteration counts (>= 0).
+    void step(float dt, int velocityIterations = kDefaultVelocityIterations,
+              int positionIterations = kDefaultPositionIterations);
+    const StepStats& lastStepStats() const;
+
+    Vec2 gravity() const;
+    void setGravity(Vec2 gravity);
+    PositionSolver defaultPositionSolver() const;
+
+    // --- bodies -----------------------------------------------------------------------------
+    BodyId createBody(const BodyDef& def);
+    /// Destroys the body, its shapes and every joint attached to it.
+    void destroyBody(BodyId id);
+    bool isValid(BodyId id) const;
+    int bodyCount() const;
+
+    BodyType bodyType(BodyId id) const;
+    Vec2 bodyPosition(BodyId id) const;  ///< m, world position of the body origin
+    float bodyAngle(BodyId id) const;    ///< rad
+    Transform bodyTransform(BodyId id) const;
+    Vec2 bodyWorldCenter(BodyId id) const;       ///< m, centre of mass in world coordinates
+    Vec2 bodyLocalCenter(BodyId id) const;       ///< m, centre of mass in the body frame
+    Vec2 bodyLinearVelocity(BodyId id) const;    ///< m/s, of the centre of mass
+    float bodyAngularVelocity(BodyId id) const;  ///< rad/s
+    float bodyMass(BodyId id) const;             ///< kg; 0 for static and kinematic bodies
+    /// kg m^2, about the centre of mass; 0 for non-dynamic or fixed-rotation bodies.
+    float bodyRotationalInertia(BodyId id) const;
+    Vec2 bodyWorldPoint(BodyId id, Vec2 localPoint) const;
+    Vec2 bodyLocalPoint(BodyId id, Vec2 worldPoint) const;
+
+    /// Teleport: moves the body origin to `position` at `angle`, keeping its velocity.
+    void setBodyTransform(BodyId id, Vec2 position, float angle);
+    void setBodyLinearVelocity(BodyId id, Vec2 velocity);
+    void setBodyAngularVelocity(BodyId id, float omega);
+    /// N, applied at a world point until the end of the next step.
+    void applyForce(BodyId id, Vec2 force, Vec2 worldPoint);
+    void applyForceToCenter(BodyId id, Vec2 force);
+    void applyTorque(BodyId id, float torque);  ///< N m
+    /// N s, changes the velocity at once.
+    void applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint);
+    void applyAngularImpulse(BodyId id, float impulse);
+
+    // --- shapes -----------------------------------------------------------------------------
+    /// Attaches a shape and updates the body's mass.
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    void destroyShape(ShapeId id);
+    bool isValid(ShapeId id) const;
+    int shapeCount() const;
+    BodyId shapeBody(ShapeId id) const;
+
+    // --- joints -----------------------------------------------------------------------------
+    JointId createJoint(const RevoluteJointDef& def);
+    void destroyJoint(JointId id);
+    bool isValid(JointId id) const;
+    int jointCount() const;
+
+    BodyId jointBodyA(JointId id) const;
+    BodyId jointBodyB(JointId id) const;
+    Vec2 jointAnchorA(JointId id) const;  ///< m, the pin on body A in world coordinates
+    Vec2 jointAnchorB(JointId id) const;  ///< m, the pin on body B in world coordinates
+    /// m, |anchorB - anchorA|: how far the joint has come apart.
+    float jointSeparation(JointId id) const;
+    /// N, the force the joint applied to body B in the last step.
+    Vec2 jointReactionForce(JointId id) const;
+
+    PositionSolver jointPositionSolver(JointId id) const;
+    /// Takes effect from the next step. A bias factor left to its default follows the new
+    /// solver's default.
+    void setJointPositionSolver(JointId id, PositionSolver solver);
+    float jointBiasFactor(JointId id) const;
+    /// A value in [0, 1], or nullopt for the solver's default.
+    void setJointBiasFactor(JointId id, std::optional<float> biasFactor);
+
+    // --- inspection -------------------------------------------------------------------------
+    /// A 64-bit hash of the exact bits of every body's pose, velocity, pending force and mass,
+    /// every shape's owner and density, and every joint's bodies, solver, bias and impulse:
+    /// equal hashes mean a bit-for-bit equal simulation state.
+    std::uint64_t stateHash() const;
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pivot

@@ -1,0 +1,52 @@
+// Body storage. The solver works on the centre of mass (center, angle); the origin frame xf is
+// derived from it after each step, because users place bodies by their origin.
+#pragma once
+
+#include <cstdint>
+
+#include "pivot/body.h"
+#include "pivot/math.h"
+#include "shape.h"
+#include "slot_pool.h"
+
+namespace pivot {
+
+struct Body {
+    BodyType type = BodyType::Static;
+    Transform xf;      // frame of the body origin
+    Vec2 localCenter;  // centre of mass in the body frame
+    Vec2 center;       // centre of mass in the world
+    float angle = 0.0f;
+    Vec2 linearVelocity;  // of the centre of mass
+    float angularVelocity = 0.0f;
+    Vec2 force;  // accumulated until the end of the next step
+    float torque = 0.0f;
+
+    float mass = 0.0f;
+    float invMass = 0.0f;
+    float inertia = 0.0f;  // about the centre of mass
+    float invInertia = 0.0f;
+
+    float linearDamping = 0.0f;
+    float angularDamping = 0.0f;
+    float gravityScale = 1.0f;
+    bool fixedRotation = false;
+    std::uint64_t userData = 0;
+
+    std::int32_t shapeList = -1;  // head of the body's shape list
+    std::int32_t jointList = -1;  // head of the body's joint edge list (edge key, see joint)
+    std::int32_t shapeCount = 0;
+    std::int32_t islandIndex = -1;  // solver index within the island being solved
+};
+
+/// Recompute the origin frame from the centre of mass and angle.
+inline void synchronizeTransform(Body& body) {
+    body.xf.q = Rot(body.angle);
+    body.xf.p = body.center - rotate(body.xf.q, body.localCenter);
+}
+
+/// Recompute mass, centre of mass and inertia from the body's type and shapes. Moving the
+/// centre of mass keeps the velocity of the centre consistent with the body's rotation.
+void updateBodyMass(Body& body, const SlotPool<Shape>& shapes);
+
+}  // namespace pivot

@@ -1,0 +1,47 @@
+// Revolute joint storage: what persists between steps. The per-step solver state lives in
+// PointConstraint (point_constraint.h), built afresh for each island each step.
+#pragma once
+
+#include <cstdint>
+
+#include "pivot/joint.h"
+#include "pivot/math.h"
+
+namespace pivot {
+
+/// One end of a joint in a body's joint list. A joint's two edges are addressed by the key
+/// (jointIndex << 1) | side, side 0 for body A and 1 for body B.
+struct JointEdge {
+    std::int32_t body = -1;
+    std::int32_t prevKey = -1;
+    std::int32_t nextKey = -1;
+};
+
+inline std::int32_t jointEdgeKey(std::int32_t jointIndex, int side) {
+    return (jointIndex << 1) | side;
+}
+inline std::int32_t jointOfKey(std::int32_t key) {
+    return key >> 1;
+}
+inline int sideOfKey(std::int32_t key) {
+    return key & 1;
+}
+
+struct RevoluteJoint {
+    JointEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
+    Vec2 localAnchorA;   // origin-relative, in body A's frame
+    Vec2 localAnchorB;
+    float referenceAngle = 0.0f;
+    PositionSolver solver = PositionSolver::FullNGS;
+    bool hasBiasOverride = false;
+    float biasOverride = 0.0f;
+    bool collideConnected = false;
+    std::uint64_t userData = 0;
+    Vec2 impulse;  // accumulated point impulse of the last step, N s (warm starting)
+
+    std::int32_t bodyA() const { return edges[0].body; }
+    std::int32_t bodyB() const { return edges[1].body; }
+    float biasFactor() const { return hasBiasOverride ? biasOverride : defaultBiasFactor(solver); }
+};
+
+}  // namespace pivot

@@ -1,0 +1,42 @@
+// Shape storage and polygon checking.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "pivot/shape.h"
+
+namespace pivot {
+
+enum class ShapeType : std::uint8_t { Circle, Polygon };
+
+/// A checked convex polygon: counter-clockwise, with outward unit edge normals
+/// (normals[i] belongs to the edge from vertices[i] to vertices[i + 1]).
+struct ConvexPolygon {
+    std::array<Vec2, kMaxPolygonVertices> vertices{};
+    std::array<Vec2, kMaxPolygonVertices> normals{};
+    int count = 0;
+};
+
+struct Shape {
+    std::int32_t body = -1;
+    ShapeType type = ShapeType::Circle;
+    Circle circle;
+    ConvexPolygon polygon;
+    float density = 0.0f;
+    float friction = 0.0f;
+    float restitution = 0.0f;
+    std::uint64_t userData = 0;
+    // The body's shapes form a doubly linked list through the shape pool.
+    std::int32_t prev = -1;
+    std::int32_t next = -1;
+};
+
+/// Checks a user polygon. Returns what is wrong with it as text, or an empty string and the
+/// polygon in canonical form in `out`.
+std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out);
+
+MassData computeShapeMass(const Shape& shape);
+
+}  // namespace pivot

@@ -1,0 +1,124 @@
+#include "solver/island_solver.h"
+
+#include "pivot/constants.h"
+
+namespace pivot {
+
+namespace {
+
+// Copy body state into the solver arrays; apply gravity, forces and damping to dynamic bodies
+// (semi-implicit Euler: velocities first, positions later from the new velocities).
+void integrateVelocities(Island& island, const SlotPool<Body>& bodies, const StepContext& step) {
+    const float h = step.dt;
+    const std::size_t n = island.bodies.size();
+    island.velocities.resize(n);
+    island.positions.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Body& b = bodies[island.bodies[i]];
+        Vec2 v = b.linearVelocity;
+        float w = b.angularVelocity;
+        if (b.type == BodyType::Dynamic) {
+            v += h * b.invMass * (b.gravityScale * b.mass * step.gravity + b.force);
+            w += h * b.invInertia * b.torque;
+            // Damping, dv/dt = -c v, integrated with the Pade approximation
+            // exp(-c h) ~ 1 / (1 + c h): stable for any c h >= 0.
+            v *= 1.0f / (1.0f + h * b.linearDamping);
+            w *= 1.0f / (1.0f + h * b.angularDamping);
+        }
+        island.positions[i] = {b.center, b.angle};
+        island.velocities[i] = {v, w};
+    }
+}
+
+// Build each joint's solver constraint in its strategy's group and apply the warm start.
+void prepareJoints(Island& island, const SlotPool<Body>& bodies, SlotPool<RevoluteJoint>& joints,
+                   const StepContext& step) {
+    for (PointConstraints& group : island.groups) group.clear();
+
+    for (std::int32_t jointIndex : island.joints) {
+        const RevoluteJoint& joint = joints[jointIndex];
+        const Body& a = bodies[joint.bodyA()];
+        const Body& b = bodies[joint.bodyB()];
+        PointConstraint pc;
+        pc.indexA = a.islandIndex;
+        pc.indexB = b.islandIndex;
+        pc.jointIndex = jointIndex;
+        pc.mA = a.invMass;
+        pc.mB = b.invMass;
+        pc.iA = a.invInertia;
+        pc.iB = b.invInertia;
+        pc.localRA = joint.localAnchorA - a.localCenter;
+        pc.localRB = joint.localAnchorB - b.localCenter;
+        pc.biasFactor = joint.biasFactor();
+        preparePoint(pc, island.positions.data());
+        if (step.warmStarting) {
+            // Impulses scale with the step: keep the force they stand for when dt changes.
+            pc.impulse = step.dtRatio * joint.impulse;
+            applyPointImpulse(pc, island.velocities.data(), pc.impulse);
+        }
+        island.groups[static_cast<int>(joint.solver)].push_back(pc);
+    }
+    prepareVelocityBias(island.groups, island.positions.data(), step.invDt);
+}
+
+void storeImpulses(const Island& island, SlotPool<RevoluteJoint>& joints) {
+    for (const PointConstraints& group : island.groups) {
+        for (const PointConstraint& pc : group) joints[pc.jointIndex].impulse = pc.impulse;
+    }
+}
+
+// Move every body by its velocity, limiting the move per step (kMaxTranslation,
+// kMaxRotation). The limit scales the velocity itself so the next step starts from it.
+void integratePositions(Island& island, const StepContext& step, IslandReport& report) {
+    const float h = step.dt;
+    for (std::size_t i = 0; i < island.bodies.size(); ++i) {
+        SolverVelocity& vel = island.velocities[i];
+        SolverPosition& pos = island.positions[i];
+        Vec2 translation = h * vel.v;
+        if (dot(translation, translation) > kMaxTranslation * kMaxTranslation) {
+            vel.v *= kMaxTranslation / length(translation);
+            ++report.translationClamps;
+        }
+        float rotation = h * vel.w;
+        if (rotation * rotation > kMaxRotation * kMaxRotation) {
+            vel.w *= kMaxRotation / std::fabs(rotation);
+            ++report.rotationClamps;
+        }
+        pos.c += h * vel.v;
+        pos.a += h * vel.w;
+    }
+}
+
+void writeBack(const Island& island, SlotPool<Body>& bodies) {
+    for (std::size_t i = 0; i < island.bodies.size(); ++i) {
+        Body& b = bodies[island.bodies[i]];
+        if (b.type == BodyType::Static) continue;
+        b.center = island.positions[i].c;
+        b.angle = island.positions[i].a;
+        b.linearVelocity = island.velocities[i].v;
+        b.angularVelocity = island.velocities[i].w;
+        synchronizeTransform(b);
+    }
+}
+
+}  // namespace
+
+IslandReport solveIsland(Island& island, SlotPool<Body>& bodies, SlotPool<RevoluteJoint>& joints,
+                         const StepContext& step) {
+    IslandReport report;
+    integrateVelocities(island, bodies, step);
+    prepareJoints(island, bodies, joints, step);
+    for (int it = 0; it < step.velocityIterations; ++it) {
+        solveVelocitySweep(island.groups, island.velocities.data());
+    }
+    storeImpulses(island, joints);
+    integratePositions(island, step, report);
+    island.pseudoVelocities.resize(island.bodies.size());
+    report.positionIterations =
+        solvePositionPhase(island.groups, island.positions.data(), island.pseudoVelocities,
+                           step.positionIterations, step.dt);
+    writeBack(island, bodies);
+    return report;
+}
+
+}  // namespace pivot

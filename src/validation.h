@@ -1,0 +1,26 @@
+// Checks on public input. Each throws pivot::Error with a message of the form
+//   "<call>: <field> <problem> (got <value>)"
+// so the caller sees which argument of which call was wrong, and with what value.
+#pragma once
+
+#include <string>
+
+#include "pivot/error.h"
+#include "pivot/math.h"
+
+namespace pivot {
+
+/// Shortest text that reads back as the same float (nan and inf spelled out).
+std::string formatFloat(float value);
+std::string formatVec2(Vec2 value);
+
+[[noreturn]] void fail(const char* call, const std::string& problem);
+
+void requireFinite(const char* call, const char* field, float value);
+void requireFinite(const char* call, const char* field, Vec2 value);
+/// Finite and >= 0.
+void requireNonNegative(const char* call, const char* field, float value);
+/// Finite and within [lo, hi].
+void requireInRange(const char* call, const char* field, float value, float lo, float hi);
+
+}  // namespace pivot

@@ -1,0 +1,34 @@
+// pivot-testbed's command line.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "pivot/pivot.h"
+
+namespace pivot::testbed {
+
+struct CliOptions {
+    std::optional<std::string> scene;      ///< unset: every scene
+    std::optional<PositionSolver> solver;  ///< unset: every solver
+    std::optional<float> bias;             ///< unset: each solver's default
+    int steps = 600;
+    float hz = 60.0f;
+    int velocityIterations = kDefaultVelocityIterations;
+    int positionIterations = kDefaultPositionIterations;
+    std::optional<std::string> csvPath;
+    bool help = false;
+};
+
+/// A command line that cannot be run; the message says why (and lists valid names).
+class CliError : public std::runtime_error {
+public:
+    explicit CliError(const std::string& message) : std::runtime_error(message) {}
+};
+
+CliOptions parseCli(const std::vector<std::string>& args);
+std::string usage();
+
+}  // namespace pivot::testbed

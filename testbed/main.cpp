@@ -1,0 +1,74 @@
+// pivot-testbed: runs the scenes headless and prints what each position solver does.
+#include <fstream>
+#include <iostream>
+
+#include "cli.h"
+#include "scenes/metrics.h"
+#include "scenes/scene.h"
+#include "table.h"
+
+using namespace pivot;
+
+namespace {
+
+std::vector<testbed::TableRow> runAll(const testbed::CliOptions& options) {
+    std::vector<testbed::TableRow> rows;
+    for (const scenes::SceneInfo& info : scenes::allScenes()) {
+        if (options.scene && *options.scene != info.name) continue;
+        for (int s = 0; s < kPositionSolverCount; ++s) {
+            auto solver = static_cast<PositionSolver>(s);
+            if (options.solver && *options.solver != solver) continue;
+            scenes::SceneOptions sceneOptions;
+            sceneOptions.solver = solver;
+            sceneOptions.biasFactor = options.bias;
+            sceneOptions.hz = options.hz;
+            scenes::Scene scene = scenes::buildScene(info, sceneOptions);
+
+            scenes::RunSettings settings;
+            settings.steps = options.steps;
+            settings.hz = options.hz;
+            settings.velocityIterations = options.velocityIterations;
+            settings.positionIterations = options.positionIterations;
+
+            testbed::TableRow row;
+            row.scene = info.name;
+            row.solver = positionSolverName(solver);
+            row.bias = options.bias.value_or(defaultBiasFactor(solver));
+            row.metrics = scenes::runScene(scene, settings);
+            rows.push_back(row);
+        }
+    }
+    return rows;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        testbed::CliOptions options = testbed::parseCli({argv + 1, argv + argc});
+        if (options.help) {
+            std::cout << testbed::usage();
+            return 0;
+        }
+        std::vector<testbed::TableRow> rows = runAll(options);
+        std::cout << options.steps << " steps at " << options.hz << " Hz, "
+                  << options.velocityIterations << " velocity / " << options.positionIterations
+                  << " position iterations\n";
+        testbed::printTable(std::cout, rows);
+        if (options.csvPath) {
+            std::ofstream csv(*options.csvPath);
+            if (!csv) {
+                std::cerr << "pivot-testbed: cannot write " << *options.csvPath << "\n";
+                return 1;
+            }
+            testbed::writeCsv(csv, rows);
+        }
+        return 0;
+    } catch (const testbed::CliError& e) {
+        std::cerr << "pivot-testbed: " << e.what() << "\n";
+        return 2;
+    } catch (const Error& e) {
+        std::cerr << "pivot-testbed: " << e.what() << "\n";
+        return 1;
+    }
+}

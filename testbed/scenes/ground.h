@@ -1,0 +1,17 @@
+// The static ground most scenes stand on: an 80 m wide slab whose top face is y = 0 (Box2D's
+// testbed uses an edge there; pivot2d has no edge shape, and the slab's top is the same line).
+#pragma once
+
+#include "pivot/pivot.h"
+
+namespace pivot::scenes {
+
+inline BodyId createGround(World& world) {
+    BodyId ground = world.createBody(BodyDef{});
+    ShapeDef def;
+    def.density = 0.0f;
+    world.createShape(ground, def, Polygon::box(40.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    return ground;
+}
+
+}  // namespace pivot::scenes

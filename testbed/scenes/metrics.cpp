@@ -1,0 +1,93 @@
+#include "metrics.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace pivot::scenes {
+
+double mechanicalEnergy(const Scene& scene) {
+    const World& world = *scene.world;
+    const Vec2 g = world.gravity();
+    double energy = 0.0;
+    for (BodyId id : scene.bodies) {
+        double m = world.bodyMass(id);
+        double inertia = world.bodyRotationalInertia(id);
+        Vec2 v = world.bodyLinearVelocity(id);
+        double w = world.bodyAngularVelocity(id);
+        Vec2 c = world.bodyWorldCenter(id);
+        double kinetic = 0.5 * m * (double(v.x) * v.x + double(v.y) * v.y) + 0.5 * inertia * w * w;
+        double potential = -m * (double(g.x) * c.x + double(g.y) * c.y);
+        energy += kinetic + potential;
+    }
+    return energy;
+}
+
+SeparationSample sampleSeparation(const Scene& scene) {
+    SeparationSample sample;
+    for (JointId id : scene.joints) {
+        double s = scene.world->jointSeparation(id);
+        if (!(s <= sample.max)) sample.max = s;  // NaN wins
+        sample.sumSquares += s * s;
+        ++sample.count;
+    }
+    return sample;
+}
+
+bool isBlownUp(const Scene& scene) {
+    const World& world = *scene.world;
+    for (BodyId id : scene.bodies) {
+        Vec2 p = world.bodyPosition(id);
+        Vec2 v = world.bodyLinearVelocity(id);
+        float a = world.bodyAngle(id);
+        float w = world.bodyAngularVelocity(id);
+        if (!isFinite(p) || !isFinite(v) || !std::isfinite(a) || !std::isfinite(w)) return true;
+        if (length(v) > kRunawaySpeed) return true;
+    }
+    return false;
+}
+
+RunMetrics runScene(Scene& scene, const RunSettings& settings,
+                    const std::function<void(int)>& afterStep) {
+    using Clock = std::chrono::steady_clock;
+    World& world = *scene.world;
+    const float dt = 1.0f / settings.hz;
+
+    RunMetrics m;
+    m.energyStart = mechanicalEnergy(scene);
+    double sumSquares = 0.0;
+    long samples = 0;
+    long positionIterations = 0;
+    Clock::duration stepTime{};
+
+    for (int i = 0; i < settings.steps; ++i) {
+        Clock::time_point start = Clock::now();
+        world.step(dt, settings.velocityIterations, settings.positionIterations);
+        stepTime += Clock::now() - start;
+        ++m.steps;
+
+        const StepStats& stats = world.lastStepStats();
+        m.translationClamps += stats.translationClamps;
+        m.rotationClamps += stats.rotationClamps;
+        positionIterations += stats.positionIterations;
+
+        SeparationSample s = sampleSeparation(scene);
+        if (!(s.max <= m.maxSeparation)) m.maxSeparation = s.max;
+        sumSquares += s.sumSquares;
+        samples += s.count;
+        m.finalSeparation = s.max;
+        if (afterStep) afterStep(i);
+        if (isBlownUp(scene)) {
+            m.blewUp = true;
+            break;
+        }
+    }
+    m.energyEnd = mechanicalEnergy(scene);
+    m.rmsSeparation = samples > 0 ? std::sqrt(sumSquares / double(samples)) : 0.0;
+    m.meanPositionIterations = m.steps > 0 ? double(positionIterations) / m.steps : 0.0;
+    m.microsecondsPerStep =
+        m.steps > 0 ? std::chrono::duration<double, std::micro>(stepTime).count() / double(m.steps)
+                    : 0.0;
+    return m;
+}
+
+}  // namespace pivot::scenes

@@ -1,0 +1,57 @@
+// Measurements of a scene as it runs: joint separation, energy, blow-up, cost.
+#pragma once
+
+#include <functional>
+
+#include "scene.h"
+
+namespace pivot::scenes {
+
+/// Speed (m/s) beyond which a body counts as runaway. At 60 Hz the translation clamp holds
+/// bodies below 120 m/s, so only a broken solver gets near this.
+constexpr float kRunawaySpeed = 1.0e4f;
+
+/// Kinetic plus gravitational potential energy of the scene's bodies, J, with potential
+/// measured from y = 0 along the world's gravity: sum 1/2 m v^2 + 1/2 I w^2 - m g.c.
+double mechanicalEnergy(const Scene& scene);
+
+/// Largest |anchorB - anchorA| over the scene's joints, m; and the sum of squares (for RMS).
+struct SeparationSample {
+    double max = 0.0;
+    double sumSquares = 0.0;
+    int count = 0;
+};
+SeparationSample sampleSeparation(const Scene& scene);
+
+/// True when any body has a non-finite pose or velocity, or moves faster than kRunawaySpeed.
+bool isBlownUp(const Scene& scene);
+
+struct RunSettings {
+    int steps = 600;
+    float hz = 60.0f;
+    int velocityIterations = kDefaultVelocityIterations;
+    int positionIterations = kDefaultPositionIterations;
+};
+
+struct RunMetrics {
+    int steps = 0;               ///< steps taken (a run stops at the first blown-up step)
+    double maxSeparation = 0;    ///< m, over all joints and steps
+    double rmsSeparation = 0;    ///< m, over all joints and steps
+    double finalSeparation = 0;  ///< m, largest over joints after the last step
+    double energyStart = 0;      ///< J, before the first step
+    double energyEnd = 0;        ///< J, after the last step
+    bool blewUp = false;
+    long translationClamps = 0;         ///< body-steps limited by kMaxTranslation
+    long rotationClamps = 0;            ///< body-steps limited by kMaxRotation
+    double meanPositionIterations = 0;  ///< NGS sweeps per step actually run
+    double microsecondsPerStep = 0;     ///< mean wall time of World::step alone
+
+    double energyDrift() const { return energyEnd - energyStart; }
+};
+
+/// Steps the scene, measuring after every step. `afterStep(stepIndex)`, when given, runs after
+/// each step's measurements (for time series).
+RunMetrics runScene(Scene& scene, const RunSettings& settings,
+                    const std::function<void(int)>& afterStep = {});
+
+}  // namespace pivot::scenes

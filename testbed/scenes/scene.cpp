@@ -1,0 +1,40 @@
+#include "scene.h"
+
+namespace pivot::scenes {
+
+RevoluteJointDef SceneOptions::jointAt(BodyId a, BodyId b, Vec2 anchor) const {
+    RevoluteJointDef def = RevoluteJointDef::atWorldAnchor(a, b, anchor);
+    def.positionSolver = solver;
+    def.biasFactor = biasFactor;
+    return def;
+}
+
+const std::vector<SceneInfo>& allScenes() {
+    static const std::vector<SceneInfo> scenes = {
+        {"pendulum", "1 m ball on a massless 5 m stick, spun at 100 rad/s about the pivot",
+         buildPendulum},
+        {"bridge", "30 planks 1.0 x 0.25 m jointed end to end, both ends pinned", buildBridge},
+        {"chain", "30 links 1 m apart pinned at one end, released horizontally", buildChain},
+    };
+    return scenes;
+}
+
+const SceneInfo* findScene(std::string_view name) {
+    for (const SceneInfo& info : allScenes()) {
+        if (name == info.name) return &info;
+    }
+    return nullptr;
+}
+
+Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
+    Scene scene;
+    scene.name = info.name;
+    WorldDef def;
+    def.gravity = options.gravity;
+    def.defaultPositionSolver = options.solver;
+    scene.world = std::make_unique<World>(def);
+    info.build(scene, options);
+    return scene;
+}
+
+}  // namespace pivot::scenes

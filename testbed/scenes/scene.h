@@ -1,0 +1,54 @@
+// Scenes shared by the testbed, the tests and (later) the benchmarks, so that what is
+// measured is what is tested. A scene builds into a fresh World and records the bodies and
+// joints that its metrics look at.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pivot/pivot.h"
+
+namespace pivot::scenes {
+
+/// How a scene is built: the joint solver and bias for every joint, the time step, gravity.
+struct SceneOptions {
+    PositionSolver solver = PositionSolver::FullNGS;
+    std::optional<float> biasFactor;  ///< unset: the solver's default
+    float hz = 60.0f;
+    Vec2 gravity{0.0f, -10.0f};
+
+    /// A revolute joint def at a world anchor carrying this scene's solver and bias.
+    RevoluteJointDef jointAt(BodyId a, BodyId b, Vec2 anchor) const;
+};
+
+struct Scene {
+    std::string name;
+    std::unique_ptr<World> world;
+    std::vector<BodyId> bodies;  ///< the dynamic bodies (energy, blow-up checks)
+    std::vector<JointId> joints;
+};
+
+using SceneBuilder = void (*)(Scene& scene, const SceneOptions& options);
+
+struct SceneInfo {
+    const char* name;
+    const char* description;
+    SceneBuilder build;
+};
+
+/// Every scene, in the order the testbed's full table lists them.
+const std::vector<SceneInfo>& allScenes();
+/// nullptr when there is no scene of that name.
+const SceneInfo* findScene(std::string_view name);
+/// Makes the world (gravity from options) and builds the scene into it.
+Scene buildScene(const SceneInfo& info, const SceneOptions& options);
+
+// The individual scenes (defined in their own files).
+void buildPendulum(Scene& scene, const SceneOptions& options);
+void buildBridge(Scene& scene, const SceneOptions& options);
+void buildChain(Scene& scene, const SceneOptions& options);
+
+}  // namespace pivot::scenes

@@ -1,0 +1,90 @@
+// pivot-testbed's command line: valid options parse, invalid ones say what is valid.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "cli.h"
+#include "table.h"
+
+using namespace pivot;
+using namespace pivot::testbed;
+
+namespace {
+std::string errorOf(const std::vector<std::string>& args) {
+    try {
+        parseCli(args);
+    } catch (const CliError& e) {
+        return e.what();
+    }
+    return "";
+}
+}  // namespace
+
+TEST(TestbedCli, DefaultsRunEverything) {
+    CliOptions o = parseCli({});
+    EXPECT_FALSE(o.scene);
+    EXPECT_FALSE(o.solver);
+    EXPECT_FALSE(o.bias);
+    EXPECT_EQ(o.steps, 600);
+    EXPECT_EQ(o.hz, 60.0f);
+    EXPECT_EQ(o.velocityIterations, 8);
+    EXPECT_EQ(o.positionIterations, 3);
+}
+
+TEST(TestbedCli, ParsesEveryOption) {
+    CliOptions o =
+        parseCli({"--scene", "chain", "--solver", "pseudo_velocity", "--bias", "0.5", "--steps",
+                  "42", "--hz", "120", "--vel-iters", "4", "--pos-iters", "0", "--csv", "out.csv"});
+    EXPECT_EQ(*o.scene, "chain");
+    EXPECT_EQ(*o.solver, PositionSolver::PseudoVelocity);
+    EXPECT_EQ(*o.bias, 0.5f);
+    EXPECT_EQ(o.steps, 42);
+    EXPECT_EQ(o.hz, 120.0f);
+    EXPECT_EQ(o.velocityIterations, 4);
+    EXPECT_EQ(o.positionIterations, 0);
+    EXPECT_EQ(*o.csvPath, "out.csv");
+    EXPECT_TRUE(parseCli({"--help"}).help);
+}
+
+TEST(TestbedCli, UnknownNamesListTheValidOnes) {
+    std::string scene = errorOf({"--scene", "bridg"});
+    EXPECT_NE(scene.find("unknown scene 'bridg'"), std::string::npos) << scene;
+    EXPECT_NE(scene.find("pendulum, bridge, chain"), std::string::npos) << scene;
+    std::string solver = errorOf({"--solver", "ngs"});
+    EXPECT_NE(solver.find("baumgarte, pseudo_velocity, modified_ngs, full_ngs"), std::string::npos)
+        << solver;
+}
+
+TEST(TestbedCli, BadValuesAreErrors) {
+    EXPECT_NE(errorOf({"--steps", "ten"}), "");
+    EXPECT_NE(errorOf({"--steps", "0"}), "");
+    EXPECT_NE(errorOf({"--hz", "-60"}), "");
+    EXPECT_NE(errorOf({"--hz", "nan"}), "");
+    EXPECT_NE(errorOf({"--bias", "2"}), "");
+    EXPECT_NE(errorOf({"--vel-iters", "-1"}), "");
+    EXPECT_NE(errorOf({"--scene"}), "");
+    EXPECT_NE(errorOf({"--frobnicate"}), "");
+}
+
+TEST(TestbedCli, HelpExplainsEachOption) {
+    std::string text = usage();
+    for (const char* option : {"--scene", "--solver", "--bias", "--steps", "--hz", "--vel-iters",
+                               "--pos-iters", "--csv", "--help"}) {
+        EXPECT_NE(text.find(option), std::string::npos) << option;
+    }
+}
+
+TEST(TestbedTable, CsvHasOneLinePerRunAndAHeader) {
+    TableRow row;
+    row.scene = "chain";
+    row.solver = "full_ngs";
+    row.bias = 1.0f;
+    row.metrics.steps = 600;
+    row.metrics.maxSeparation = 0.25;
+    std::ostringstream csv;
+    writeCsv(csv, {row, row});
+    std::string text = csv.str();
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3);
+    EXPECT_EQ(text.rfind("scene,solver,bias,steps,max_sep_m", 0), 0u);
+    EXPECT_NE(text.find("chain,full_ngs,1,600,2.500000e-01"), std::string::npos) << text;
+}
