@@ -36,12 +36,26 @@ struct PointConstraint {
     float biasFactor = 0.0f;
 };
 
+// K is evaluated in two float orders: the same matrix, rounded differently. The velocity phase
+// and the position phase each use the order Box2D 2.4.1's revolute joint uses in that phase, so
+// FullNGS reproduces that reference joint bit for bit wherever the inputs agree (see
+// docs/reference-agreement.md). Any other choice costs nothing but that exactness.
 inline Mat22 pointEffectiveMass(float mA, float mB, float iA, float iB, Vec2 rA, Vec2 rB) {
     Mat22 K;
     K.cx.x = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
     K.cy.x = -rA.y * rA.x * iA - rB.y * rB.x * iB;
     K.cx.y = K.cy.x;
     K.cy.y = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
+    return K;
+}
+
+inline Mat22 pointEffectiveMassForPositions(float mA, float mB, float iA, float iB, Vec2 rA,
+                                            Vec2 rB) {
+    Mat22 K;
+    K.cx.x = mA + mB + iA * rA.y * rA.y + iB * rB.y * rB.y;
+    K.cx.y = -iA * rA.x * rA.y - iB * rB.x * rB.y;
+    K.cy.x = K.cx.y;
+    K.cy.y = mA + mB + iA * rA.x * rA.x + iB * rB.x * rB.x;
     return K;
 }
 
@@ -87,7 +101,8 @@ inline float solvePointPosition(const PointConstraint& pc, SolverPosition* posit
     Vec2 rB = rotate(Rot(B.a), pc.localRB);
     Vec2 C = B.c + rB - A.c - rA;
     float error = length(C);
-    Mat22 K = rebuildMass ? pointEffectiveMass(pc.mA, pc.mB, pc.iA, pc.iB, rA, rB) : pc.K;
+    Mat22 K =
+        rebuildMass ? pointEffectiveMassForPositions(pc.mA, pc.mB, pc.iA, pc.iB, rA, rB) : pc.K;
     Vec2 P = -pc.biasFactor * K.solve(C);
     A.c -= pc.mA * P;
     A.a -= pc.iA * cross(rA, P);
