@@ -29,6 +29,37 @@ constexpr float kMaxTranslation = 2.0f;
 /// this is about 94 rad/s. Same reason as kMaxTranslation.
 constexpr float kMaxRotation = 0.5f * kPi;
 
+/// Metres. The largest position correction a contact applies in one NGS solve: a deep overlap
+/// is resolved over several steps instead of launching bodies apart.
+constexpr float kMaxLinearCorrection = 0.2f;
+
+/// Metres. Every polygon collides as if rounded by this skin (twice the linear slop), so that
+/// resting polygons keep a small gap and contacts exist before the shapes' cores touch. It does
+/// not change mass properties.
+constexpr float kPolygonRadius = 2.0f * kLinearSlop;
+
+/// Metres. Broad-phase boxes are fattened by this margin, so a shape that moves a little does
+/// not need its box updated every step.
+constexpr float kAabbMargin = 0.1f;
+
+/// Broad-phase boxes are also stretched along a body's motion by this many steps' worth of
+/// displacement, predicting where it will be.
+constexpr float kAabbMotionFactor = 4.0f;
+
+/// m/s. A contact closing faster than this bounces with its restitution; slower contacts are
+/// treated as inelastic so resting bodies do not jitter.
+constexpr float kRestitutionThreshold = 1.0f;
+
+/// Sleeping: a body slower than these for kTimeToSleep seconds may sleep, with its island.
+constexpr float kLinearSleepTolerance = 0.01f;               ///< m/s
+constexpr float kAngularSleepTolerance = 2.0f / 180.0f * kPi;  ///< rad/s
+constexpr float kTimeToSleep = 0.5f;                         ///< s
+
+/// Default bias factor of contact position correction (both the Baumgarte velocity bias and
+/// the NGS position solve): contacts remove a fifth of their penetration beyond the slop per
+/// step or solve, which keeps stacks from popping apart.
+constexpr float kDefaultContactBias = 0.2f;
+
 /// The maximum number of vertices of a convex polygon. Small and fixed so polygons are
 /// stored inline without allocation.
 constexpr int kMaxPolygonVertices = 8;

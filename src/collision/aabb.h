@@ -1,0 +1,36 @@
+// Axis-aligned bounding boxes.
+#pragma once
+
+#include <algorithm>
+
+#include "pivot/math.h"
+
+namespace pivot {
+
+struct AABB {
+    Vec2 lower;
+    Vec2 upper;
+};
+
+inline bool overlaps(const AABB& a, const AABB& b) {
+    return !(b.lower.x > a.upper.x || b.lower.y > a.upper.y || a.lower.x > b.upper.x ||
+             a.lower.y > b.upper.y);
+}
+
+/// Whether `outer` contains `inner` entirely.
+inline bool contains(const AABB& outer, const AABB& inner) {
+    return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y &&
+           inner.upper.x <= outer.upper.x && inner.upper.y <= outer.upper.y;
+}
+
+inline AABB combine(const AABB& a, const AABB& b) {
+    return {{std::min(a.lower.x, b.lower.x), std::min(a.lower.y, b.lower.y)},
+            {std::max(a.upper.x, b.upper.x), std::max(a.upper.y, b.upper.y)}};
+}
+
+/// The cost measure of the tree's surface-area heuristic (in 2D, the perimeter).
+inline float perimeter(const AABB& a) {
+    return 2.0f * ((a.upper.x - a.lower.x) + (a.upper.y - a.lower.y));
+}
+
+}  // namespace pivot
