@@ -1,0 +1,2 @@
+// Placeholder: implementation pending.
+#include "collision/dynamic_tree.h"
