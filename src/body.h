@@ -33,16 +33,44 @@ struct Body {
     bool fixedRotation = false;
     std::uint64_t userData = 0;
 
-    std::int32_t shapeList = -1;  // head of the body's shape list
-    std::int32_t jointList = -1;  // head of the body's joint edge list (edge key, see joint)
+    std::int32_t shapeList = -1;    // head of the body's shape list
+    std::int32_t jointList = -1;    // head of the body's joint edge list (see body_edge.h)
+    std::int32_t contactList = -1;  // head of the body's contact edge list
     std::int32_t shapeCount = 0;
     std::int32_t islandIndex = -1;  // solver index within the island being solved
+
+    // Sleeping: a body slower than the sleep tolerances accumulates sleepTime; an island whose
+    // bodies all reach kTimeToSleep goes to sleep and is skipped until something wakes it.
+    bool awake = true;
+    bool allowSleep = true;
+    float sleepTime = 0.0f;
+
+    // Pose at the start of the last step, for the broad phase's swept boxes.
+    Vec2 center0;
+    float angle0 = 0.0f;
 };
 
 /// Recompute the origin frame from the centre of mass and angle.
 inline void synchronizeTransform(Body& body) {
     body.xf.q = Rot(body.angle);
     body.xf.p = body.center - rotate(body.xf.q, body.localCenter);
+}
+
+/// Sleep: no motion and no pending push until something wakes the body.
+inline void putToSleep(Body& body) {
+    body.awake = false;
+    body.sleepTime = 0.0f;
+    body.linearVelocity = Vec2{};
+    body.angularVelocity = 0.0f;
+    body.force = Vec2{};
+    body.torque = 0.0f;
+}
+
+/// Wake a body; static bodies have nothing to wake.
+inline void wakeUp(Body& body) {
+    if (body.type == BodyType::Static) return;
+    body.awake = true;
+    body.sleepTime = 0.0f;
 }
 
 /// Recompute mass, centre of mass and inertia from the body's type and shapes. Moving the

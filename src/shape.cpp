@@ -1,5 +1,6 @@
 #include "shape.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "validation.h"
@@ -151,6 +152,23 @@ MassData computeMass(const Polygon& polygon, float density) {
     md.rotationalInertia =
         sign * density * (secondMoment - area * dot(centroidFromOrigin, centroidFromOrigin));
     return md;
+}
+
+AABB computeShapeBox(const Shape& shape, const Transform& xf) {
+    if (shape.type == ShapeType::Circle) {
+        Vec2 c = transformPoint(xf, shape.circle.center);
+        Vec2 r{shape.circle.radius, shape.circle.radius};
+        return {c - r, c + r};
+    }
+    Vec2 lower = transformPoint(xf, shape.polygon.vertices[0]);
+    Vec2 upper = lower;
+    for (int i = 1; i < shape.polygon.count; ++i) {
+        Vec2 v = transformPoint(xf, shape.polygon.vertices[i]);
+        lower = {std::min(lower.x, v.x), std::min(lower.y, v.y)};
+        upper = {std::max(upper.x, v.x), std::max(upper.y, v.y)};
+    }
+    Vec2 r{kPolygonRadius, kPolygonRadius};
+    return {lower - r, upper + r};
 }
 
 MassData computeShapeMass(const Shape& shape) {

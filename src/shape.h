@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "collision/aabb.h"
 #include "pivot/shape.h"
 
 namespace pivot {
@@ -27,7 +28,9 @@ struct Shape {
     float density = 0.0f;
     float friction = 0.0f;
     float restitution = 0.0f;
+    Filter filter;
     std::uint64_t userData = 0;
+    std::int32_t proxyId = -1;  // broad-phase proxy
     // The body's shapes form a doubly linked list through the shape pool.
     std::int32_t prev = -1;
     std::int32_t next = -1;
@@ -38,5 +41,13 @@ struct Shape {
 std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out);
 
 MassData computeShapeMass(const Shape& shape);
+
+/// The radius a shape collides with: a circle's own, or the polygon skin kPolygonRadius.
+inline float collisionRadius(const Shape& shape) {
+    return shape.type == ShapeType::Circle ? shape.circle.radius : kPolygonRadius;
+}
+
+/// The shape's bounding box at a transform, including its collision radius.
+AABB computeShapeBox(const Shape& shape, const Transform& xf);
 
 }  // namespace pivot

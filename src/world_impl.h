@@ -1,16 +1,23 @@
-// World's private state. world.cpp holds the public facade (checks, then changes); the step
-// pipeline is in step.cpp.
+// World's private state. The public facade is split by concept: world.cpp (lifetime, step,
+// settings), world_bodies.cpp, world_shapes.cpp, world_joints.cpp, world_contacts.cpp; the
+// contact bookkeeping is in contact_manager.cpp and the step pipeline in step.cpp.
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "body.h"
+#include "collision/broad_phase.h"
+#include "contact.h"
 #include "joints/revolute_joint.h"
+#include "pair_map.h"
 #include "pivot/world.h"
 #include "shape.h"
 #include "slot_pool.h"
 #include "solver/island_builder.h"
 #include "solver/island_solver.h"
+#include "validation.h"
 
 namespace pivot {
 
@@ -21,15 +28,27 @@ struct World::Impl {
     Vec2 gravity;
     PositionSolver defaultPositionSolver;
     bool warmStarting;
+    ContactCorrection contactCorrection;
+    float contactBiasFactor;
+    float restitutionThreshold;
+    bool enableSleep;
 
     SlotPool<Body> bodies;
     SlotPool<Shape> shapes;
     SlotPool<RevoluteJoint> joints;
+    SlotPool<Contact> contacts;
+    BroadPhase broadPhase;
+    PairMap contactPairs;    // shape pair -> contact index
+    bool newShapes = false;  // pairs to find before the next step's contact update
+
+    std::vector<ContactEvent> beginEvents;
+    std::vector<ContactEvent> endEvents;
 
     float previousInvDt = 0.0f;  // 1/dt of the last step; 0 before the first
     StepStats stats;
     IslandBuilder islandBuilder;
     Island island;
+    std::vector<std::int32_t> solvedBodies;  // bodies that moved this step, for the broad phase
 
     void step(float dt, int velocityIterations, int positionIterations);
 
@@ -42,10 +61,47 @@ struct World::Impl {
     ShapeId shapeId(std::int32_t index) const { return {index, shapes.generation(index), id}; }
     JointId jointId(std::int32_t index) const { return {index, joints.generation(index), id}; }
 
-    void linkJoint(std::int32_t jointIndex);
-    void unlinkJoint(std::int32_t jointIndex);
     void removeJoint(std::int32_t jointIndex);
     void removeShape(std::int32_t shapeIndex);
+    void wakeAll();
+
+    // Contact bookkeeping (contact_manager.cpp).
+    /// A broad-phase pair: makes a contact unless one exists or the pair may not collide.
+    void addPair(std::int32_t shapeA, std::int32_t shapeB);
+    void destroyContact(std::int32_t contactIndex);
+    /// Re-filters flagged contacts, drops those whose boxes parted, and recomputes the
+    /// manifolds of contacts with an awake body.
+    void updateContacts();
+    void findNewContacts();
+    /// Moves a body's broad-phase boxes to cover its motion from (center0, angle0) to now.
+    void synchronizeShapes(std::int32_t bodyIndex);
+    /// Whether two bodies may collide at all: one must be dynamic, and no joint between them
+    /// may forbid it.
+    bool bodiesMayCollide(std::int32_t bodyA, std::int32_t bodyB) const;
+    /// Flags the contacts between two bodies for re-filtering and makes the broad phase report
+    /// their shapes again (after a joint between them appeared or went).
+    void refilterBodyPair(std::int32_t bodyA, std::int32_t bodyB);
 };
+
+/// Checks a handle against a pool; returns the slot index or throws pivot::Error.
+template <typename Tag, typename T>
+std::int32_t checkHandle(const char* call, const char* what, detail::Handle<Tag> id,
+                         const SlotPool<T>& pool, std::uint32_t worldId) {
+    const std::string name(what);
+    if (id.isNull()) fail(call, name + " id is null (default-constructed)");
+    if (id.world != worldId) {
+        fail(call, name + " id was issued by another world (world " + std::to_string(id.world) +
+                       ", this is world " + std::to_string(worldId) + ")");
+    }
+    if (id.index < 0 || id.index >= pool.capacity()) {
+        fail(call, name + " id has index " + std::to_string(id.index) +
+                       ", which this world never issued");
+    }
+    if (!pool.isAlive(id.index) || pool.generation(id.index) != id.generation) {
+        fail(call, name + " id is stale: " + name + " " + std::to_string(id.index) +
+                       " (generation " + std::to_string(id.generation) + ") was destroyed");
+    }
+    return id.index;
+}
 
 }  // namespace pivot

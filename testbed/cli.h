@@ -11,16 +11,21 @@
 namespace pivot::testbed {
 
 struct CliOptions {
-    std::optional<std::string> scene;      ///< unset: every scene
-    std::optional<PositionSolver> solver;  ///< unset: every solver
-    std::optional<float> bias;             ///< unset: each solver's default
+    std::optional<std::string> scene;          ///< unset: every scene
+    std::optional<PositionSolver> solver;      ///< unset: every solver
+    std::optional<float> bias;                 ///< unset: each solver's default
+    std::optional<ContactCorrection> contact;  ///< unset: both
     int steps = 600;
     float hz = 60.0f;
     int velocityIterations = kDefaultVelocityIterations;
     int positionIterations = kDefaultPositionIterations;
     std::optional<std::string> csvPath;
     bool help = false;
+    bool list = false;
 };
+
+/// "baumgarte" or "ngs".
+const char* contactCorrectionName(ContactCorrection correction);
 
 /// A command line that cannot be run; the message says why (and lists valid names).
 class CliError : public std::runtime_error {

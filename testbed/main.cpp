@@ -16,26 +16,32 @@ std::vector<testbed::TableRow> runAll(const testbed::CliOptions& options) {
     for (const scenes::SceneInfo& info : scenes::allScenes()) {
         if (options.scene && *options.scene != info.name) continue;
         for (int s = 0; s < kPositionSolverCount; ++s) {
-            auto solver = static_cast<PositionSolver>(s);
-            if (options.solver && *options.solver != solver) continue;
-            scenes::SceneOptions sceneOptions;
-            sceneOptions.solver = solver;
-            sceneOptions.biasFactor = options.bias;
-            sceneOptions.hz = options.hz;
-            scenes::Scene scene = scenes::buildScene(info, sceneOptions);
+            for (ContactCorrection contact :
+                 {ContactCorrection::NGS, ContactCorrection::Baumgarte}) {
+                auto solver = static_cast<PositionSolver>(s);
+                if (options.solver && *options.solver != solver) continue;
+                if (options.contact && *options.contact != contact) continue;
+                scenes::SceneOptions sceneOptions;
+                sceneOptions.solver = solver;
+                sceneOptions.contactCorrection = contact;
+                sceneOptions.biasFactor = options.bias;
+                sceneOptions.hz = options.hz;
+                scenes::Scene scene = scenes::buildScene(info, sceneOptions);
 
-            scenes::RunSettings settings;
-            settings.steps = options.steps;
-            settings.hz = options.hz;
-            settings.velocityIterations = options.velocityIterations;
-            settings.positionIterations = options.positionIterations;
+                scenes::RunSettings settings;
+                settings.steps = options.steps;
+                settings.hz = options.hz;
+                settings.velocityIterations = options.velocityIterations;
+                settings.positionIterations = options.positionIterations;
 
-            testbed::TableRow row;
-            row.scene = info.name;
-            row.solver = positionSolverName(solver);
-            row.bias = options.bias.value_or(defaultBiasFactor(solver));
-            row.metrics = scenes::runScene(scene, settings);
-            rows.push_back(row);
+                testbed::TableRow row;
+                row.scene = info.name;
+                row.solver = positionSolverName(solver);
+                row.contact = testbed::contactCorrectionName(contact);
+                row.bias = options.bias.value_or(defaultBiasFactor(solver));
+                row.metrics = scenes::runScene(scene, settings);
+                rows.push_back(row);
+            }
         }
     }
     return rows;
@@ -48,6 +54,12 @@ int main(int argc, char** argv) {
         testbed::CliOptions options = testbed::parseCli({argv + 1, argv + argc});
         if (options.help) {
             std::cout << testbed::usage();
+            return 0;
+        }
+        if (options.list) {
+            for (const scenes::SceneInfo& info : scenes::allScenes()) {
+                std::cout << info.name << "  " << info.description << "\n";
+            }
             return 0;
         }
         std::vector<testbed::TableRow> rows = runAll(options);

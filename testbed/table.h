@@ -12,6 +12,7 @@ namespace pivot::testbed {
 struct TableRow {
     std::string scene;
     std::string solver;
+    std::string contact;
     float bias = 0.0f;
     scenes::RunMetrics metrics;
 };

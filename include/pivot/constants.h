@@ -51,9 +51,9 @@ constexpr float kAabbMotionFactor = 4.0f;
 constexpr float kRestitutionThreshold = 1.0f;
 
 /// Sleeping: a body slower than these for kTimeToSleep seconds may sleep, with its island.
-constexpr float kLinearSleepTolerance = 0.01f;               ///< m/s
+constexpr float kLinearSleepTolerance = 0.01f;                 ///< m/s
 constexpr float kAngularSleepTolerance = 2.0f / 180.0f * kPi;  ///< rad/s
-constexpr float kTimeToSleep = 0.5f;                         ///< s
+constexpr float kTimeToSleep = 0.5f;                           ///< s
 
 /// Default bias factor of contact position correction (both the Baumgarte velocity bias and
 /// the NGS position solve): contacts remove a fifth of their penetration beyond the slop per

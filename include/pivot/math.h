@@ -134,7 +134,22 @@ struct Mat22 {
         }
         return {det * (a22 * b.x - a12 * b.y), det * (a11 * b.y - a21 * b.x)};
     }
+
+    /// The inverse; a singular matrix gives the zero matrix (see solve).
+    constexpr Mat22 inverse() const {
+        float a = cx.x, b = cy.x, c = cx.y, d = cy.y;
+        float det = a * d - b * c;
+        if (det != 0.0f) {
+            det = 1.0f / det;
+        }
+        return {{det * d, -det * c}, {-det * b, det * a}};
+    }
 };
+
+/// The matrix times a vector.
+constexpr Vec2 operator*(const Mat22& m, Vec2 v) {
+    return {m.cx.x * v.x + m.cy.x * v.y, m.cx.y * v.x + m.cy.y * v.y};
+}
 
 constexpr float kPi = 3.14159265359f;
 

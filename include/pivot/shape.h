@@ -34,11 +34,24 @@ struct Polygon {
     static Polygon fromPoints(std::initializer_list<Vec2> points);
 };
 
+/// Which shapes may touch. Two shapes collide when each one's category is in the other's mask,
+/// unless they share a non-zero group: then a positive group always collides and a negative
+/// group never does.
+struct Filter {
+    std::uint16_t categoryBits = 0x0001;
+    std::uint16_t maskBits = 0xFFFF;
+    std::int16_t groupIndex = 0;
+};
+
 /// Everything a shape needs besides its geometry.
 struct ShapeDef {
-    float density = 1.0f;      ///< kg/m^2, >= 0; a dynamic body needs some shape with density > 0
-    float friction = 0.6f;     ///< Coulomb coefficient, >= 0
-    float restitution = 0.0f;  ///< bounce, in [0, 1]
+    float density = 1.0f;  ///< kg/m^2, >= 0; a dynamic body needs some shape with density > 0
+    /// Coulomb coefficient, >= 0. A contact uses sqrt(frictionA * frictionB).
+    float friction = 0.6f;
+    /// Bounce, in [0, 1]. A contact uses max(restitutionA, restitutionB), and bounces only when
+    /// it closes faster than WorldDef::restitutionThreshold.
+    float restitution = 0.0f;
+    Filter filter;
     std::uint64_t userData = 0;
 };
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "pivot/body.h"
 #include "pivot/constants.h"
@@ -17,6 +18,16 @@
 
 namespace pivot {
 
+/// How contacts remove penetration (all contacts of a world use the same).
+enum class ContactCorrection : std::uint8_t {
+    /// A velocity bias proportional to the penetration, in the velocity iterations.
+    Baumgarte,
+    /// After integration, re-measure each point's penetration from the bodies' current
+    /// transforms (the manifold is kept in the bodies' local frames, so collision is not run
+    /// again) and move the bodies apart, in the same iterations as NGS joints.
+    NGS,
+};
+
 struct WorldDef {
     Vec2 gravity{0.0f, -10.0f};  ///< m/s^2
     /// The position solver of joints whose def leaves it unset (the seed note recommends
@@ -24,6 +35,36 @@ struct WorldDef {
     PositionSolver defaultPositionSolver = PositionSolver::FullNGS;
     /// Start each step from the previous step's impulses (scaled by the ratio of time steps).
     bool warmStarting = true;
+    ContactCorrection contactCorrection = ContactCorrection::NGS;
+    /// Fraction of a contact's penetration (beyond kLinearSlop) removed per step (Baumgarte)
+    /// or per solve (NGS), in [0, 1].
+    float contactBiasFactor = kDefaultContactBias;
+    /// m/s: contacts closing slower than this do not bounce.
+    float restitutionThreshold = kRestitutionThreshold;
+    /// Let islands that have come to rest sleep (see BodyDef::allowSleep).
+    bool enableSleep = true;
+};
+
+/// A touching contact as seen from outside, measured at the bodies' current poses.
+struct ContactPoint {
+    Vec2 point;                   ///< m, midway between the two surfaces
+    float separation = 0.0f;      ///< m, negative when the shapes overlap
+    float normalImpulse = 0.0f;   ///< N s, of the last step
+    float tangentImpulse = 0.0f;  ///< N s, of the last step
+};
+
+struct ContactData {
+    ShapeId shapeA;
+    ShapeId shapeB;
+    Vec2 normal;  ///< unit, from shape A to shape B
+    int pointCount = 0;
+    ContactPoint points[2];
+};
+
+/// Two shapes that started or stopped touching during the last step.
+struct ContactEvent {
+    ShapeId shapeA;
+    ShapeId shapeB;
 };
 
 /// What the last call to World::step did.
@@ -35,8 +76,11 @@ struct StepStats {
     int translationClamps = 0;
     int rotationClamps = 0;
     /// The most NGS position iterations any island ran (fewer than asked when every error was
-    /// within slop early). 0 when no island has an NGS joint.
+    /// within slop early). 0 when no island has an NGS joint or NGS contact.
     int positionIterations = 0;
+    int contactCount = 0;       ///< contacts in the world (broad-phase boxes overlapping)
+    int touchingCount = 0;      ///< of which touching (manifold with points)
+    int sleepingBodyCount = 0;  ///< dynamic and kinematic bodies asleep after the step
 };
 
 class World {
@@ -55,8 +99,14 @@ public:
     const StepStats& lastStepStats() const;
 
     Vec2 gravity() const;
+    /// Changes gravity and wakes every body, so sleeping bodies feel the change.
     void setGravity(Vec2 gravity);
     PositionSolver defaultPositionSolver() const;
+    ContactCorrection contactCorrection() const;
+    void setContactCorrection(ContactCorrection correction);
+    /// Switching sleep off wakes every body.
+    void setSleepEnabled(bool enabled);
+    bool isSleepEnabled() const;
 
     // --- bodies -----------------------------------------------------------------------------
     BodyId createBody(const BodyDef& def);
@@ -79,6 +129,13 @@ public:
     Vec2 bodyWorldPoint(BodyId id, Vec2 localPoint) const;
     Vec2 bodyLocalPoint(BodyId id, Vec2 worldPoint) const;
 
+    bool isBodyAwake(BodyId id) const;
+    /// Wakes a body (and, at the next step, its island) or puts it to sleep at once.
+    void setBodyAwake(BodyId id, bool awake);
+    /// Whether the body may sleep; forbidding it wakes the body.
+    void setBodySleepAllowed(BodyId id, bool allowed);
+
+    // Every call below that moves or pushes a body wakes it.
     /// Teleport: moves the body origin to `position` at `angle`, keeping its velocity.
     void setBodyTransform(BodyId id, Vec2 position, float angle);
     void setBodyLinearVelocity(BodyId id, Vec2 velocity);
@@ -95,10 +152,21 @@ public:
     /// Attaches a shape and updates the body's mass.
     ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    /// Destroys the shape and its contacts and wakes its body.
     void destroyShape(ShapeId id);
     bool isValid(ShapeId id) const;
     int shapeCount() const;
     BodyId shapeBody(ShapeId id) const;
+    Filter shapeFilter(ShapeId id) const;
+    /// Takes effect at the next step: existing contacts are re-filtered, new pairs found.
+    void setShapeFilter(ShapeId id, const Filter& filter);
+
+    // --- contacts ---------------------------------------------------------------------------
+    /// Every touching contact, measured at the current poses.
+    std::vector<ContactData> contacts() const;
+    /// Contacts that started / stopped touching during the last step.
+    const std::vector<ContactEvent>& contactBeginEvents() const;
+    const std::vector<ContactEvent>& contactEndEvents() const;
 
     // --- joints -----------------------------------------------------------------------------
     JointId createJoint(const RevoluteJointDef& def);
@@ -116,8 +184,8 @@ public:
     Vec2 jointReactionForce(JointId id) const;
 
     PositionSolver jointPositionSolver(JointId id) const;
-    /// Takes effect from the next step. A bias factor left to its default follows the new
-    /// solver's default.
+    /// Takes effect from the next step and wakes the joint's bodies. A bias factor left to its
+    /// default follows the new solver's default.
     void setJointPositionSolver(JointId id, PositionSolver solver);
     float jointBiasFactor(JointId id) const;
     /// A value in [0, 1], or nullopt for the solver's default.

@@ -4,31 +4,14 @@
 
 #include <cstdint>
 
+#include "body_edge.h"
 #include "pivot/joint.h"
 #include "pivot/math.h"
 
 namespace pivot {
 
-/// One end of a joint in a body's joint list. A joint's two edges are addressed by the key
-/// (jointIndex << 1) | side, side 0 for body A and 1 for body B.
-struct JointEdge {
-    std::int32_t body = -1;
-    std::int32_t prevKey = -1;
-    std::int32_t nextKey = -1;
-};
-
-inline std::int32_t jointEdgeKey(std::int32_t jointIndex, int side) {
-    return (jointIndex << 1) | side;
-}
-inline std::int32_t jointOfKey(std::int32_t key) {
-    return key >> 1;
-}
-inline int sideOfKey(std::int32_t key) {
-    return key & 1;
-}
-
 struct RevoluteJoint {
-    JointEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
+    BodyEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
     Vec2 localAnchorA;   // origin-relative, in body A's frame
     Vec2 localAnchorB;
     float referenceAngle = 0.0f;

@@ -1,5 +1,8 @@
 #include "solver/island_solver.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "pivot/constants.h"
 
 namespace pivot {
@@ -8,13 +11,15 @@ namespace {
 
 // Copy body state into the solver arrays; apply gravity, forces and damping to dynamic bodies
 // (semi-implicit Euler: velocities first, positions later from the new velocities).
-void integrateVelocities(Island& island, const SlotPool<Body>& bodies, const StepContext& step) {
+void integrateVelocities(Island& island, SlotPool<Body>& bodies, const StepContext& step) {
     const float h = step.dt;
     const std::size_t n = island.bodies.size();
     island.velocities.resize(n);
     island.positions.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const Body& b = bodies[island.bodies[i]];
+        Body& b = bodies[island.bodies[i]];
+        b.center0 = b.center;  // for the broad phase's swept box
+        b.angle0 = b.angle;
         Vec2 v = b.linearVelocity;
         float w = b.angularVelocity;
         if (b.type == BodyType::Dynamic) {
@@ -89,6 +94,36 @@ void integratePositions(Island& island, const StepContext& step, IslandReport& r
     }
 }
 
+// Bodies slower than the sleep tolerances accumulate rest time; once every body of the island
+// has rested kTimeToSleep and the position phase converged, the whole island sleeps.
+bool updateSleep(const Island& island, SlotPool<Body>& bodies, const StepContext& step,
+                 bool positionSolved) {
+    if (!step.enableSleep) return false;
+    const float linearTolerance = kLinearSleepTolerance * kLinearSleepTolerance;
+    const float angularTolerance = kAngularSleepTolerance * kAngularSleepTolerance;
+    float minSleepTime = kTimeToSleep;
+    bool anyMovable = false;
+    for (std::int32_t index : island.bodies) {
+        Body& b = bodies[index];
+        if (b.type == BodyType::Static) continue;
+        anyMovable = true;
+        if (!b.allowSleep || b.angularVelocity * b.angularVelocity > angularTolerance ||
+            dot(b.linearVelocity, b.linearVelocity) > linearTolerance) {
+            b.sleepTime = 0.0f;
+            minSleepTime = 0.0f;
+        } else {
+            b.sleepTime += step.dt;
+            minSleepTime = std::min(minSleepTime, b.sleepTime);
+        }
+    }
+    if (!anyMovable || minSleepTime < kTimeToSleep || !positionSolved) return false;
+    for (std::int32_t index : island.bodies) {
+        Body& b = bodies[index];
+        if (b.type != BodyType::Static) putToSleep(b);
+    }
+    return true;
+}
+
 void writeBack(const Island& island, SlotPool<Body>& bodies) {
     for (std::size_t i = 0; i < island.bodies.size(); ++i) {
         Body& b = bodies[island.bodies[i]];
@@ -103,21 +138,29 @@ void writeBack(const Island& island, SlotPool<Body>& bodies) {
 
 }  // namespace
 
-IslandReport solveIsland(Island& island, SlotPool<Body>& bodies, SlotPool<RevoluteJoint>& joints,
-                         const StepContext& step) {
+IslandReport solveIsland(Island& island, SolverStorage& storage, const StepContext& step) {
     IslandReport report;
+    SlotPool<Body>& bodies = storage.bodies;
     integrateVelocities(island, bodies, step);
-    prepareJoints(island, bodies, joints, step);
+    // Contacts are prepared and warm-started before joints, and solved after them in each
+    // velocity sweep, as in Box2D 2.4.1 (see docs/position-correction.md).
+    island.contactSolver.prepare(island.contacts, storage.contacts, bodies, storage.shapes, step,
+                                 island.positions.data(), island.velocities.data());
+    prepareJoints(island, bodies, storage.joints, step);
     for (int it = 0; it < step.velocityIterations; ++it) {
         solveVelocitySweep(island.groups, island.velocities.data());
+        island.contactSolver.solveVelocities(island.velocities.data());
     }
-    storeImpulses(island, joints);
+    storeImpulses(island, storage.joints);
+    island.contactSolver.storeImpulses(storage.contacts);
     integratePositions(island, step, report);
     island.pseudoVelocities.resize(island.bodies.size());
-    report.positionIterations =
-        solvePositionPhase(island.groups, island.positions.data(), island.pseudoVelocities,
-                           step.positionIterations, step.dt);
+    PositionPhaseResult phase =
+        solvePositionPhase(island.groups, island.contactSolver, island.positions.data(),
+                           island.pseudoVelocities, step.positionIterations, step.dt);
+    report.positionIterations = phase.sweeps;
     writeBack(island, bodies);
+    report.fellAsleep = updateSleep(island, bodies, step, phase.solved);
     return report;
 }
 

@@ -75,27 +75,38 @@ void solveVelocitySweep(ConstraintGroups& groups, SolverVelocity* velocities) {
     solveVelocityGroup<false>(groupOf(groups, PositionSolver::FullNGS), velocities);
 }
 
-int solvePositionPhase(ConstraintGroups& groups, SolverPosition* positions,
-                       std::vector<SolverVelocity>& pseudo, int iterations, float h) {
+PositionPhaseResult solvePositionPhase(ConstraintGroups& groups, const ContactSolver& contacts,
+                                       SolverPosition* positions,
+                                       std::vector<SolverVelocity>& pseudo, int iterations,
+                                       float h) {
     solvePseudoVelocityPass(groupOf(groups, PositionSolver::PseudoVelocity), positions, pseudo,
                             iterations, h);
 
     PointConstraints& modified = groupOf(groups, PositionSolver::ModifiedNGS);
     PointConstraints& full = groupOf(groups, PositionSolver::FullNGS);
-    if (modified.empty() && full.empty()) return 0;
+    PositionPhaseResult result;
+    if (modified.empty() && full.empty() && !contacts.hasPositionConstraints()) {
+        result.solved = true;
+        return result;
+    }
 
     // ModifiedNGS keeps the effective mass of the pose the position phase starts from.
     for (PointConstraint& pc : modified) preparePoint(pc, positions);
 
-    int sweeps = 0;
-    while (sweeps < iterations) {
-        ++sweeps;
+    while (result.sweeps < iterations) {
+        ++result.sweeps;
+        // Contacts first: a joint then has the last word on a body both move, and a joint's
+        // error is the one users look at (as in Box2D 2.4.1's position loop).
+        float minSeparation = contacts.solvePositions(positions);
         float error = solveNgsSweep<false>(modified, positions);
         float fullError = solveNgsSweep<true>(full, positions);
         if (!(fullError <= error)) error = fullError;
-        if (error <= kLinearSlop) break;
+        if (ContactSolver::withinTolerance(minSeparation) && error <= kLinearSlop) {
+            result.solved = true;
+            break;
+        }
     }
-    return sweeps;
+    return result;
 }
 
 }  // namespace pivot

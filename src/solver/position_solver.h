@@ -10,6 +10,7 @@
 
 #include "joints/point_constraint.h"
 #include "pivot/joint.h"
+#include "solver/contact_solver.h"
 #include "solver/solver_types.h"
 
 namespace pivot {
@@ -24,13 +25,21 @@ void prepareVelocityBias(ConstraintGroups& groups, const SolverPosition* positio
 /// One velocity iteration over every group, accumulating impulses.
 void solveVelocitySweep(ConstraintGroups& groups, SolverVelocity* velocities);
 
+struct PositionPhaseResult {
+    int sweeps = 0;       ///< NGS sweeps run
+    bool solved = false;  ///< every NGS joint and contact ended within tolerance
+};
+
 /// The position phase, after position integration:
 ///   1. PseudoVelocity: one pass of `iterations` sweeps on pseudo velocities (scratch `pseudo`,
 ///      one entry per island body), then positions += h * pseudo velocity;
-///   2. NGS: up to `iterations` sweeps over ModifiedNGS then FullNGS joints, stopping once every
-///      error is within kLinearSlop.
-/// Returns the number of NGS sweeps run.
-int solvePositionPhase(ConstraintGroups& groups, SolverPosition* positions,
-                       std::vector<SolverVelocity>& pseudo, int iterations, float h);
+///   2. NGS: up to `iterations` sweeps, each over the NGS contacts, then the ModifiedNGS and
+///      FullNGS joints, stopping once every joint error is within kLinearSlop and no contact
+///      is deeper than ContactSolver::withinTolerance allows.
+/// An island with nothing for NGS to check counts as solved.
+PositionPhaseResult solvePositionPhase(ConstraintGroups& groups, const ContactSolver& contacts,
+                                       SolverPosition* positions,
+                                       std::vector<SolverVelocity>& pseudo, int iterations,
+                                       float h);
 
 }  // namespace pivot

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "pivot/math.h"
+#include "pivot/world.h"
 
 namespace pivot {
 
@@ -26,6 +27,10 @@ struct StepContext {
     int velocityIterations = 0;
     int positionIterations = 0;
     bool warmStarting = true;
+    bool enableSleep = true;
+    ContactCorrection contactCorrection = ContactCorrection::NGS;
+    float contactBiasFactor = 0.0f;
+    float restitutionThreshold = 0.0f;
 };
 
 }  // namespace pivot

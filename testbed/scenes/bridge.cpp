@@ -7,10 +7,14 @@
 
 namespace pivot::scenes {
 
+namespace {
+constexpr int kPlanks = 30;
+constexpr float kDeckHeight = 5.0f;
+}  // namespace
+
 void buildBridge(Scene& scene, const SceneOptions& options) {
     World& world = *scene.world;
-    constexpr int kPlanks = 30;
-    const float y = 5.0f;
+    const float y = kDeckHeight;
 
     BodyId ground = createGround(world);
 
@@ -33,6 +37,27 @@ void buildBridge(Scene& scene, const SceneOptions& options) {
     }
     Vec2 anchor{-15.0f + 1.0f * static_cast<float>(kPlanks), y};
     scene.joints.push_back(world.createJoint(options.jointAt(previous, ground, anchor)));
+}
+
+// The seed note's "heavy cube dropped on the bridge": after 2 s a 1 m box of four times the
+// bridge's mass (4 x 30 planks x 5 kg = 600 kg) is released 5 m above the deck's middle.
+void buildBridgeHeavy(Scene& scene, const SceneOptions& options) {
+    buildBridge(scene, options);
+    const int dropStep = static_cast<int>(2.0f * options.hz + 0.5f);
+    scene.beforeStep = [dropStep](Scene& s, int step) {
+        if (step != dropStep) return;
+        float bridgeMass = 0.0f;
+        for (BodyId plank : s.bodies) bridgeMass += s.world->bodyMass(plank);
+        BodyDef def;
+        def.type = BodyType::Dynamic;
+        def.position = {0.0f, kDeckHeight + 5.0f};
+        BodyId box = s.world->createBody(def);
+        ShapeDef shape;
+        shape.density = 4.0f * bridgeMass;  // a 1 m x 1 m box: density equals mass
+        shape.friction = 0.6f;
+        s.world->createShape(box, shape, Polygon::box(0.5f, 0.5f));
+        s.bodies.push_back(box);
+    };
 }
 
 }  // namespace pivot::scenes

@@ -60,6 +60,13 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
     Clock::duration stepTime{};
 
     for (int i = 0; i < settings.steps; ++i) {
+        if (scene.beforeStep) {
+            // Bodies a scene adds bring their own energy: count it in the baseline, so the
+            // drift measures only what the solver did.
+            double before = mechanicalEnergy(scene);
+            scene.beforeStep(scene, i);
+            m.energyStart += mechanicalEnergy(scene) - before;
+        }
         Clock::time_point start = Clock::now();
         world.step(dt, settings.velocityIterations, settings.positionIterations);
         stepTime += Clock::now() - start;

@@ -15,6 +15,11 @@ const std::vector<SceneInfo>& allScenes() {
          buildPendulum},
         {"bridge", "30 planks 1.0 x 0.25 m jointed end to end, both ends pinned", buildBridge},
         {"chain", "30 links 1 m apart pinned at one end, released horizontally", buildChain},
+        {"bridge_heavy", "the bridge; after 2 s a box of 4x its mass falls on its middle from 5 m",
+         buildBridgeHeavy},
+        {"pyramid", "1 m boxes stacked 20 rows high on the ground", buildPyramid},
+        {"tumbler", "a box pinned at its centre and turned slowly, tumbling 200 small boxes",
+         buildTumbler},
     };
     return scenes;
 }
@@ -32,6 +37,7 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
     WorldDef def;
     def.gravity = options.gravity;
     def.defaultPositionSolver = options.solver;
+    def.contactCorrection = options.contactCorrection;
     scene.world = std::make_unique<World>(def);
     info.build(scene, options);
     return scene;

@@ -3,6 +3,7 @@
 // joints that its metrics look at.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,10 +14,12 @@
 
 namespace pivot::scenes {
 
-/// How a scene is built: the joint solver and bias for every joint, the time step, gravity.
+/// How a scene is built: the joint solver and bias for every joint, the contact correction,
+/// the time step, gravity.
 struct SceneOptions {
     PositionSolver solver = PositionSolver::FullNGS;
     std::optional<float> biasFactor;  ///< unset: the solver's default
+    ContactCorrection contactCorrection = ContactCorrection::NGS;
     float hz = 60.0f;
     Vec2 gravity{0.0f, -10.0f};
 
@@ -29,6 +32,9 @@ struct Scene {
     std::unique_ptr<World> world;
     std::vector<BodyId> bodies;  ///< the dynamic bodies (energy, blow-up checks)
     std::vector<JointId> joints;
+    /// Called before each step with the step's index (0 first), for scenes where something
+    /// happens during the run (a body dropped in, a drive torque). May add bodies and joints.
+    std::function<void(Scene&, int)> beforeStep;
 };
 
 using SceneBuilder = void (*)(Scene& scene, const SceneOptions& options);
@@ -50,5 +56,8 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options);
 void buildPendulum(Scene& scene, const SceneOptions& options);
 void buildBridge(Scene& scene, const SceneOptions& options);
 void buildChain(Scene& scene, const SceneOptions& options);
+void buildBridgeHeavy(Scene& scene, const SceneOptions& options);
+void buildPyramid(Scene& scene, const SceneOptions& options);
+void buildTumbler(Scene& scene, const SceneOptions& options);
 
 }  // namespace pivot::scenes

@@ -1,0 +1,43 @@
+#include "contact.h"
+
+namespace pivot {
+
+namespace {
+// Contacts are made with the polygon first whenever a polygon meets a circle (see
+// World::Impl::addPair), so these three cases are all there is.
+void collide(Manifold& m, const Shape& a, const Transform& xfA, const Shape& b,
+             const Transform& xfB) {
+    if (a.type == ShapeType::Polygon) {
+        if (b.type == ShapeType::Polygon) {
+            collidePolygons(m, a.polygon, xfA, b.polygon, xfB);
+        } else {
+            collidePolygonAndCircle(m, a.polygon, xfA, b.circle, xfB);
+        }
+    } else {
+        collideCircles(m, a.circle, xfA, b.circle, xfB);
+    }
+}
+}  // namespace
+
+bool updateContact(Contact& contact, const Shape& shapeA, const Transform& xfA, const Shape& shapeB,
+                   const Transform& xfB) {
+    const Manifold old = contact.manifold;
+    Manifold& m = contact.manifold;
+    collide(m, shapeA, xfA, shapeB, xfB);
+    for (int i = 0; i < m.pointCount; ++i) {
+        ManifoldPoint& p = m.points[i];
+        p.normalImpulse = 0.0f;
+        p.tangentImpulse = 0.0f;
+        for (int j = 0; j < old.pointCount; ++j) {
+            if (old.points[j].id == p.id) {
+                p.normalImpulse = old.points[j].normalImpulse;
+                p.tangentImpulse = old.points[j].tangentImpulse;
+                break;
+            }
+        }
+    }
+    contact.touching = m.pointCount > 0;
+    return contact.touching;
+}
+
+}  // namespace pivot

@@ -1,0 +1,324 @@
+#include "solver/contact_solver.h"
+
+#include <algorithm>
+
+#include "pivot/constants.h"
+
+namespace pivot {
+
+namespace {
+
+// Above this ratio of a two-point manifold's K entries the block solve is numerically unsafe
+// (the two points are nearly the same constraint) and only the first point is kept.
+constexpr float kMaxBlockConditionNumber = 1000.0f;
+
+Transform solverTransform(const SolverPosition& p, Vec2 localCenter) {
+    Transform xf;
+    xf.q = Rot(p.a);
+    xf.p = p.c - rotate(xf.q, localCenter);
+    return xf;
+}
+
+Vec2 tangentOf(Vec2 normal) {
+    return cross(normal, 1.0f);
+}
+
+Vec2 relativeVelocity(const SolverVelocity& A, const SolverVelocity& B, Vec2 rA, Vec2 rB) {
+    return B.v + cross(B.w, rB) - A.v - cross(A.w, rA);
+}
+
+void applyImpulse(SolverVelocity& A, SolverVelocity& B, const ContactVelocityConstraint& c,
+                  const ContactVelocityPoint& p, Vec2 P) {
+    A.v -= c.mA * P;
+    A.w -= c.iA * cross(p.rA, P);
+    B.v += c.mB * P;
+    B.w += c.iB * cross(p.rB, P);
+}
+
+float effectiveMass(const ContactVelocityConstraint& c, Vec2 rA, Vec2 rB, Vec2 direction) {
+    float rnA = cross(rA, direction);
+    float rnB = cross(rB, direction);
+    float k = c.mA + c.mB + c.iA * rnA * rnA + c.iB * rnB * rnB;
+    return k > 0.0f ? 1.0f / k : 0.0f;
+}
+
+void solveFriction(ContactVelocityConstraint& c, SolverVelocity& A, SolverVelocity& B) {
+    Vec2 tangent = tangentOf(c.normal);
+    for (int j = 0; j < c.pointCount; ++j) {
+        ContactVelocityPoint& p = c.points[j];
+        float vt = dot(relativeVelocity(A, B, p.rA, p.rB), tangent);
+        float lambda = p.tangentMass * (-vt);
+        float maxFriction = c.friction * p.normalImpulse;
+        float total = std::clamp(p.tangentImpulse + lambda, -maxFriction, maxFriction);
+        lambda = total - p.tangentImpulse;
+        p.tangentImpulse = total;
+        applyImpulse(A, B, c, p, lambda * tangent);
+    }
+}
+
+void solveNormalPointByPoint(ContactVelocityConstraint& c, SolverVelocity& A, SolverVelocity& B) {
+    for (int j = 0; j < c.pointCount; ++j) {
+        ContactVelocityPoint& p = c.points[j];
+        float vn = dot(relativeVelocity(A, B, p.rA, p.rB), c.normal);
+        float lambda = -p.normalMass * (vn - p.velocityBias);
+        float total = std::max(p.normalImpulse + lambda, 0.0f);
+        lambda = total - p.normalImpulse;
+        p.normalImpulse = total;
+        applyImpulse(A, B, c, p, lambda * c.normal);
+    }
+}
+
+// The two normal impulses x of a two-point manifold together: find x >= 0 with
+// vn = K x + b' >= 0 and x_i vn_i = 0, where b' = vn_now - bias - K x_old. Of the four cases
+// (both points pushing; only the first; only the second; neither) the first consistent one is
+// taken. If none is (round-off on a degenerate manifold), the impulses are left unchanged.
+void solveNormalBlock(ContactVelocityConstraint& c, SolverVelocity& A, SolverVelocity& B) {
+    ContactVelocityPoint& p1 = c.points[0];
+    ContactVelocityPoint& p2 = c.points[1];
+    Vec2 old{p1.normalImpulse, p2.normalImpulse};
+    float vn1 = dot(relativeVelocity(A, B, p1.rA, p1.rB), c.normal);
+    float vn2 = dot(relativeVelocity(A, B, p2.rA, p2.rB), c.normal);
+    Vec2 b{vn1 - p1.velocityBias, vn2 - p2.velocityBias};
+    b -= c.K * old;
+
+    Vec2 x;
+    bool found = false;
+    // Both points push: vn = 0.
+    x = -(c.normalMass * b);
+    if (x.x >= 0.0f && x.y >= 0.0f) {
+        found = true;
+    }
+    // Only the first pushes: vn1 = 0, x2 = 0, and the second must not be approaching.
+    if (!found) {
+        x = {-p1.normalMass * b.x, 0.0f};
+        float v2 = c.K.cx.y * x.x + b.y;
+        found = x.x >= 0.0f && v2 >= 0.0f;
+    }
+    // Only the second pushes.
+    if (!found) {
+        x = {0.0f, -p2.normalMass * b.y};
+        float v1 = c.K.cy.x * x.y + b.x;
+        found = x.y >= 0.0f && v1 >= 0.0f;
+    }
+    // Neither pushes: both points separating.
+    if (!found) {
+        x = {0.0f, 0.0f};
+        found = b.x >= 0.0f && b.y >= 0.0f;
+    }
+    if (!found) return;
+
+    Vec2 d = x - old;
+    Vec2 P1 = d.x * c.normal;
+    Vec2 P2 = d.y * c.normal;
+    A.v -= c.mA * (P1 + P2);
+    A.w -= c.iA * (cross(p1.rA, P1) + cross(p2.rA, P2));
+    B.v += c.mB * (P1 + P2);
+    B.w += c.iB * (cross(p1.rB, P1) + cross(p2.rB, P2));
+    p1.normalImpulse = x.x;
+    p2.normalImpulse = x.y;
+}
+
+// A manifold point re-measured at the current transforms: world normal, point, separation.
+struct MeasuredPoint {
+    Vec2 normal;
+    Vec2 point;
+    float separation;
+};
+
+MeasuredPoint measure(const ContactPositionConstraint& pc, const Transform& xfA,
+                      const Transform& xfB, int index) {
+    MeasuredPoint m;
+    switch (pc.type) {
+        case ManifoldType::Circles: {
+            Vec2 pointA = transformPoint(xfA, pc.localPoint);
+            Vec2 pointB = transformPoint(xfB, pc.localPoints[0]);
+            Vec2 d = pointB - pointA;
+            float len = length(d);
+            m.normal = len > 0.0f ? (1.0f / len) * d : Vec2{1.0f, 0.0f};
+            m.point = 0.5f * (pointA + pointB);
+            m.separation = dot(d, m.normal) - pc.radiusA - pc.radiusB;
+            break;
+        }
+        case ManifoldType::FaceA: {
+            m.normal = rotate(xfA.q, pc.localNormal);
+            Vec2 planePoint = transformPoint(xfA, pc.localPoint);
+            m.point = transformPoint(xfB, pc.localPoints[index]);
+            m.separation = dot(m.point - planePoint, m.normal) - pc.radiusA - pc.radiusB;
+            break;
+        }
+        case ManifoldType::FaceB: {
+            m.normal = rotate(xfB.q, pc.localNormal);
+            Vec2 planePoint = transformPoint(xfB, pc.localPoint);
+            m.point = transformPoint(xfA, pc.localPoints[index]);
+            m.separation = dot(m.point - planePoint, m.normal) - pc.radiusA - pc.radiusB;
+            m.normal = -m.normal;  // keep it pointing from A to B
+            break;
+        }
+    }
+    return m;
+}
+
+}  // namespace
+
+void ContactSolver::prepare(const std::vector<std::int32_t>& contacts,
+                            const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
+                            const SlotPool<Shape>& shapes, const StepContext& step,
+                            const SolverPosition* positions, SolverVelocity* velocities) {
+    velocity_.clear();
+    position_.clear();
+    positionBias_ = step.contactBiasFactor;
+    const bool baumgarte = step.contactCorrection == ContactCorrection::Baumgarte;
+
+    for (std::int32_t contactIndex : contacts) {
+        const Contact& contact = pool[contactIndex];
+        const Manifold& manifold = contact.manifold;
+        const Body& bodyA = bodies[contact.bodyA()];
+        const Body& bodyB = bodies[contact.bodyB()];
+
+        ContactVelocityConstraint c;
+        c.indexA = bodyA.islandIndex;
+        c.indexB = bodyB.islandIndex;
+        c.contactIndex = contactIndex;
+        c.mA = bodyA.invMass;
+        c.mB = bodyB.invMass;
+        c.iA = bodyA.invInertia;
+        c.iB = bodyB.invInertia;
+        c.friction = contact.friction;
+        c.pointCount = manifold.pointCount;
+
+        ContactPositionConstraint pc;
+        pc.indexA = c.indexA;
+        pc.indexB = c.indexB;
+        pc.mA = c.mA;
+        pc.mB = c.mB;
+        pc.iA = c.iA;
+        pc.iB = c.iB;
+        pc.localCenterA = bodyA.localCenter;
+        pc.localCenterB = bodyB.localCenter;
+        pc.localNormal = manifold.localNormal;
+        pc.localPoint = manifold.localPoint;
+        pc.type = manifold.type;
+        pc.pointCount = manifold.pointCount;
+        pc.radiusA = collisionRadius(shapes[contact.shapeA]);
+        pc.radiusB = collisionRadius(shapes[contact.shapeB]);
+
+        const SolverPosition& posA = positions[c.indexA];
+        const SolverPosition& posB = positions[c.indexB];
+        const SolverVelocity& velA = velocities[c.indexA];
+        const SolverVelocity& velB = velocities[c.indexB];
+        WorldManifold wm =
+            computeWorldManifold(manifold, solverTransform(posA, bodyA.localCenter), pc.radiusA,
+                                 solverTransform(posB, bodyB.localCenter), pc.radiusB);
+        c.normal = wm.normal;
+        const Vec2 tangent = tangentOf(c.normal);
+
+        for (int j = 0; j < manifold.pointCount; ++j) {
+            const ManifoldPoint& mp = manifold.points[j];
+            ContactVelocityPoint& p = c.points[j];
+            pc.localPoints[j] = mp.localPoint;
+            if (step.warmStarting) {
+                p.normalImpulse = step.dtRatio * mp.normalImpulse;
+                p.tangentImpulse = step.dtRatio * mp.tangentImpulse;
+            }
+            p.rA = wm.points[j] - posA.c;
+            p.rB = wm.points[j] - posB.c;
+            p.normalMass = effectiveMass(c, p.rA, p.rB, c.normal);
+            p.tangentMass = effectiveMass(c, p.rA, p.rB, tangent);
+
+            // Bounce only off fast approaches, so resting contacts stay inelastic.
+            float vRel = dot(c.normal, relativeVelocity(velA, velB, p.rA, p.rB));
+            if (vRel < -step.restitutionThreshold) p.velocityBias = -contact.restitution * vRel;
+            if (baumgarte) {
+                float push = -step.contactBiasFactor * step.invDt *
+                             std::min(0.0f, wm.separations[j] + kLinearSlop);
+                p.velocityBias = std::max(p.velocityBias, push);
+            }
+        }
+
+        if (c.pointCount == 2) {
+            const ContactVelocityPoint& p1 = c.points[0];
+            const ContactVelocityPoint& p2 = c.points[1];
+            float rn1A = cross(p1.rA, c.normal), rn1B = cross(p1.rB, c.normal);
+            float rn2A = cross(p2.rA, c.normal), rn2B = cross(p2.rB, c.normal);
+            float k11 = c.mA + c.mB + c.iA * rn1A * rn1A + c.iB * rn1B * rn1B;
+            float k22 = c.mA + c.mB + c.iA * rn2A * rn2A + c.iB * rn2B * rn2B;
+            float k12 = c.mA + c.mB + c.iA * rn1A * rn2A + c.iB * rn1B * rn2B;
+            if (k11 * k11 < kMaxBlockConditionNumber * (k11 * k22 - k12 * k12)) {
+                c.K = {{k11, k12}, {k12, k22}};
+                c.normalMass = c.K.inverse();
+            } else {
+                c.pointCount = 1;
+            }
+        }
+
+        velocity_.push_back(c);
+        if (!baumgarte) position_.push_back(pc);
+    }
+
+    // Warm start: apply last step's impulses before iterating.
+    for (const ContactVelocityConstraint& c : velocity_) {
+        SolverVelocity& A = velocities[c.indexA];
+        SolverVelocity& B = velocities[c.indexB];
+        Vec2 tangent = tangentOf(c.normal);
+        for (int j = 0; j < c.pointCount; ++j) {
+            const ContactVelocityPoint& p = c.points[j];
+            applyImpulse(A, B, c, p, p.normalImpulse * c.normal + p.tangentImpulse * tangent);
+        }
+    }
+}
+
+void ContactSolver::solveVelocities(SolverVelocity* velocities) {
+    for (ContactVelocityConstraint& c : velocity_) {
+        SolverVelocity& A = velocities[c.indexA];
+        SolverVelocity& B = velocities[c.indexB];
+        // Friction first: its bound depends on the normal impulse, and penetration matters
+        // more than sliding, so the normal solve gets the last word.
+        solveFriction(c, A, B);
+        if (c.pointCount == 2) {
+            solveNormalBlock(c, A, B);
+        } else {
+            solveNormalPointByPoint(c, A, B);
+        }
+    }
+}
+
+void ContactSolver::storeImpulses(SlotPool<Contact>& pool) const {
+    for (const ContactVelocityConstraint& c : velocity_) {
+        Manifold& m = pool[c.contactIndex].manifold;
+        for (int j = 0; j < c.pointCount; ++j) {
+            m.points[j].normalImpulse = c.points[j].normalImpulse;
+            m.points[j].tangentImpulse = c.points[j].tangentImpulse;
+        }
+    }
+}
+
+float ContactSolver::solvePositions(SolverPosition* positions) const {
+    float minSeparation = 0.0f;
+    for (const ContactPositionConstraint& pc : position_) {
+        SolverPosition& A = positions[pc.indexA];
+        SolverPosition& B = positions[pc.indexB];
+        for (int j = 0; j < pc.pointCount; ++j) {
+            MeasuredPoint m = measure(pc, solverTransform(A, pc.localCenterA),
+                                      solverTransform(B, pc.localCenterB), j);
+            Vec2 rA = m.point - A.c;
+            Vec2 rB = m.point - B.c;
+            if (!(m.separation >= minSeparation)) minSeparation = m.separation;  // NaN wins
+            // Only penetration beyond the slop is corrected, a fraction at a time and never by
+            // more than kMaxLinearCorrection in one solve.
+            float C = std::clamp(positionBias_ * (m.separation + kLinearSlop),
+                                 -kMaxLinearCorrection, 0.0f);
+            float rnA = cross(rA, m.normal);
+            float rnB = cross(rB, m.normal);
+            float K = pc.mA + pc.mB + pc.iA * rnA * rnA + pc.iB * rnB * rnB;
+            float impulse = K > 0.0f ? -C / K : 0.0f;
+            Vec2 P = impulse * m.normal;
+            A.c -= pc.mA * P;
+            A.a -= pc.iA * cross(rA, P);
+            B.c += pc.mB * P;
+            B.a += pc.iB * cross(rB, P);
+        }
+    }
+    return minSeparation;
+}
+
+}  // namespace pivot

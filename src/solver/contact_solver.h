@@ -1,0 +1,97 @@
+// The contact solver: non-penetration and friction for one island's touching contacts.
+//
+// Per manifold point, with normal n (A to B), tangent t = n x 1 = (n.y, -n.x), and rA, rB the
+// point relative to the centres of mass:
+//   vn = (vB + wB x rB - vA - wA x rA) . n       normal relative velocity
+//   normal:   K = mA + mB + iA (rA x n)^2 + iB (rB x n)^2; lambda >= 0 accumulated (pushes only)
+//   friction: same with t; |lambda_t| <= friction * lambda_n (Coulomb, accumulated clamping)
+// Two-point manifolds solve both normal impulses together (a 2x2 linear complementarity
+// problem, solved by trying its four cases in turn) when their 2x2 K is well conditioned,
+// which is what lets boxes stack; otherwise only the first point is solved for velocity.
+//
+// Position error (penetration beyond kLinearSlop) is removed one of two ways
+// (WorldDef::contactCorrection):
+//   Baumgarte: a velocity bias  beta / h * max(0, -(separation + slop))  at the start of step;
+//   NGS:       after integration, per point, re-measure the separation from the current
+//              transforms and the manifold kept in local frames, and move the bodies by
+//              -K^-1 C with C = clamp(beta (separation + slop), -kMaxLinearCorrection, 0).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "body.h"
+#include "contact.h"
+#include "pivot/world.h"
+#include "slot_pool.h"
+#include "solver/solver_types.h"
+
+namespace pivot {
+
+struct ContactVelocityPoint {
+    Vec2 rA;
+    Vec2 rB;
+    float normalImpulse = 0.0f;
+    float tangentImpulse = 0.0f;
+    float normalMass = 0.0f;
+    float tangentMass = 0.0f;
+    float velocityBias = 0.0f;  // restitution or Baumgarte target, m/s
+};
+
+struct ContactVelocityConstraint {
+    ContactVelocityPoint points[2];
+    Vec2 normal;
+    Mat22 K;           // two-point normal effective mass
+    Mat22 normalMass;  // its inverse
+    std::int32_t indexA = 0;
+    std::int32_t indexB = 0;
+    std::int32_t contactIndex = 0;
+    float mA = 0.0f, mB = 0.0f, iA = 0.0f, iB = 0.0f;
+    float friction = 0.0f;
+    int pointCount = 0;  // 1 when a two-point manifold is too ill-conditioned to block solve
+};
+
+struct ContactPositionConstraint {
+    Vec2 localPoints[2];
+    Vec2 localNormal;
+    Vec2 localPoint;
+    Vec2 localCenterA;
+    Vec2 localCenterB;
+    std::int32_t indexA = 0;
+    std::int32_t indexB = 0;
+    float mA = 0.0f, mB = 0.0f, iA = 0.0f, iB = 0.0f;
+    float radiusA = 0.0f;
+    float radiusB = 0.0f;
+    ManifoldType type = ManifoldType::Circles;
+    int pointCount = 0;
+};
+
+/// The contact constraints of one island, rebuilt every step into reused buffers.
+class ContactSolver {
+public:
+    /// Builds the constraints of `contacts` from the solver arrays' current state (the start of
+    /// the step) and applies the warm start, scaled by step.dtRatio.
+    void prepare(const std::vector<std::int32_t>& contacts, const SlotPool<Contact>& pool,
+                 const SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
+                 const StepContext& step, const SolverPosition* positions,
+                 SolverVelocity* velocities);
+    void solveVelocities(SolverVelocity* velocities);
+    void storeImpulses(SlotPool<Contact>& pool) const;
+    /// One NGS sweep over every contact point. Returns the smallest separation measured (m,
+    /// before each correction); 0 when there are no contacts.
+    float solvePositions(SolverPosition* positions) const;
+    /// Whether any contact takes part in the NGS position phase.
+    bool hasPositionConstraints() const { return !position_.empty(); }
+
+    /// A sweep's contacts count as solved when no point is deeper than three slops.
+    static bool withinTolerance(float minSeparation) {
+        return minSeparation >= -3.0f * kLinearSlop;
+    }
+
+private:
+    std::vector<ContactVelocityConstraint> velocity_;
+    std::vector<ContactPositionConstraint> position_;
+    float positionBias_ = 0.0f;
+};
+
+}  // namespace pivot

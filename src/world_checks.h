@@ -1,0 +1,33 @@
+// Checks shared by the World facade's files.
+#pragma once
+
+#include <string>
+
+#include "pivot/joint.h"
+#include "pivot/world.h"
+#include "validation.h"
+
+namespace pivot {
+
+inline void checkSolver(const char* call, const char* field, PositionSolver solver) {
+    int value = static_cast<int>(solver);
+    if (value < 0 || value >= kPositionSolverCount) {
+        fail(call,
+             std::string(field) + " is not a PositionSolver (got " + std::to_string(value) + ")");
+    }
+}
+
+inline void checkContactCorrection(const char* call, const char* field,
+                                   ContactCorrection correction) {
+    int value = static_cast<int>(correction);
+    if (value < 0 || value > static_cast<int>(ContactCorrection::NGS)) {
+        fail(call, std::string(field) + " is not a ContactCorrection (got " +
+                       std::to_string(value) + ")");
+    }
+}
+
+inline void checkBiasFactor(const char* call, const char* field, float bias) {
+    requireInRange(call, field, bias, 0.0f, 1.0f);
+}
+
+}  // namespace pivot

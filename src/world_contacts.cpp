@@ -1,0 +1,36 @@
+// The World facade, part five: what users can read about contacts.
+#include "world_impl.h"
+
+namespace pivot {
+
+std::vector<ContactData> World::contacts() const {
+    const Impl& w = *impl_;
+    std::vector<ContactData> result;
+    w.contacts.forEach([&](std::int32_t, const Contact& c) {
+        if (!c.touching) return;
+        const Shape& a = w.shapes[c.shapeA];
+        const Shape& b = w.shapes[c.shapeB];
+        WorldManifold wm = computeWorldManifold(c.manifold, w.bodies[a.body].xf, collisionRadius(a),
+                                                w.bodies[b.body].xf, collisionRadius(b));
+        ContactData data;
+        data.shapeA = w.shapeId(c.shapeA);
+        data.shapeB = w.shapeId(c.shapeB);
+        data.normal = wm.normal;
+        data.pointCount = c.manifold.pointCount;
+        for (int i = 0; i < data.pointCount; ++i) {
+            data.points[i] = {wm.points[i], wm.separations[i], c.manifold.points[i].normalImpulse,
+                              c.manifold.points[i].tangentImpulse};
+        }
+        result.push_back(data);
+    });
+    return result;
+}
+
+const std::vector<ContactEvent>& World::contactBeginEvents() const {
+    return impl_->beginEvents;
+}
+const std::vector<ContactEvent>& World::contactEndEvents() const {
+    return impl_->endEvents;
+}
+
+}  // namespace pivot

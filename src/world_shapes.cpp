@@ -1,0 +1,130 @@
+// The World facade, part three: shapes.
+#include "world_checks.h"
+#include "world_impl.h"
+
+namespace pivot {
+
+namespace {
+
+void checkShapeDef(const char* call, const ShapeDef& def, const Body& body) {
+    requireNonNegative(call, "def.density", def.density);
+    if (body.type == BodyType::Dynamic && def.density <= 0.0f) {
+        fail(call,
+             "def.density must be > 0 on a dynamic body (got " + formatFloat(def.density) + ")");
+    }
+    requireNonNegative(call, "def.friction", def.friction);
+    requireInRange(call, "def.restitution", def.restitution, 0.0f, 1.0f);
+}
+
+ShapeId attachShape(World::Impl& w, std::int32_t bodyIndex, const ShapeDef& def, Shape shape) {
+    shape.body = bodyIndex;
+    shape.density = def.density;
+    shape.friction = def.friction;
+    shape.restitution = def.restitution;
+    shape.filter = def.filter;
+    shape.userData = def.userData;
+    Body& body = w.bodies[bodyIndex];
+    shape.next = body.shapeList;
+    std::int32_t index = w.shapes.insert(shape);
+    if (body.shapeList != -1) w.shapes[body.shapeList].prev = index;
+    body.shapeList = index;
+    ++body.shapeCount;
+    updateBodyMass(body, w.shapes);
+    w.shapes[index].proxyId =
+        w.broadPhase.createProxy(computeShapeBox(w.shapes[index], body.xf), index);
+    w.newShapes = true;
+    wakeUp(body);
+    return w.shapeId(index);
+}
+
+}  // namespace
+
+void World::Impl::removeShape(std::int32_t index) {
+    const Shape& shape = shapes[index];
+    Body& body = bodies[shape.body];
+    for (std::int32_t key = body.contactList; key != -1;) {
+        std::int32_t contactIndex = edgeOwner(key);
+        const Contact& contact = contacts[contactIndex];
+        key = contact.edges[edgeSide(key)].nextKey;
+        if (contact.shapeA == index || contact.shapeB == index) destroyContact(contactIndex);
+    }
+    broadPhase.destroyProxy(shape.proxyId);
+    if (shape.prev != -1) {
+        shapes[shape.prev].next = shape.next;
+    } else {
+        body.shapeList = shape.next;
+    }
+    if (shape.next != -1) shapes[shape.next].prev = shape.prev;
+    --body.shapeCount;
+    shapes.erase(index);
+}
+
+ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Circle& circle) {
+    const char* call = "World::createShape";
+    std::int32_t bodyIndex = impl_->bodyIndex(call, bodyId);
+    checkShapeDef(call, def, impl_->bodies[bodyIndex]);
+    requireFinite(call, "circle.center", circle.center);
+    requireFinite(call, "circle.radius", circle.radius);
+    if (circle.radius <= 0.0f) {
+        fail(call, "circle.radius must be > 0 (got " + formatFloat(circle.radius) + ")");
+    }
+    Shape shape;
+    shape.type = ShapeType::Circle;
+    shape.circle = circle;
+    return attachShape(*impl_, bodyIndex, def, shape);
+}
+
+ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& polygon) {
+    const char* call = "World::createShape";
+    std::int32_t bodyIndex = impl_->bodyIndex(call, bodyId);
+    checkShapeDef(call, def, impl_->bodies[bodyIndex]);
+    Shape shape;
+    shape.type = ShapeType::Polygon;
+    std::string problem = makeConvexPolygon(polygon, shape.polygon);
+    if (!problem.empty()) fail(call, problem);
+    return attachShape(*impl_, bodyIndex, def, shape);
+}
+
+void World::destroyShape(ShapeId id) {
+    Impl& w = *impl_;
+    std::int32_t index = w.shapeIndex("World::destroyShape", id);
+    std::int32_t bodyIndex = w.shapes[index].body;
+    w.removeShape(index);
+    updateBodyMass(w.bodies[bodyIndex], w.shapes);
+    wakeUp(w.bodies[bodyIndex]);
+}
+
+bool World::isValid(ShapeId id) const {
+    return id.world == impl_->id && impl_->shapes.isAlive(id.index) &&
+           impl_->shapes.generation(id.index) == id.generation;
+}
+
+int World::shapeCount() const {
+    return impl_->shapes.size();
+}
+
+BodyId World::shapeBody(ShapeId id) const {
+    return impl_->bodyId(impl_->shapes[impl_->shapeIndex("World::shapeBody", id)].body);
+}
+
+Filter World::shapeFilter(ShapeId id) const {
+    return impl_->shapes[impl_->shapeIndex("World::shapeFilter", id)].filter;
+}
+
+void World::setShapeFilter(ShapeId id, const Filter& filter) {
+    Impl& w = *impl_;
+    std::int32_t index = w.shapeIndex("World::setShapeFilter", id);
+    Shape& shape = w.shapes[index];
+    shape.filter = filter;
+    // Existing contacts may now be forbidden; pairs the old filter refused may now be allowed.
+    for (std::int32_t key = w.bodies[shape.body].contactList; key != -1;) {
+        Contact& contact = w.contacts[edgeOwner(key)];
+        if (contact.shapeA == index || contact.shapeB == index) contact.needsFiltering = true;
+        key = contact.edges[edgeSide(key)].nextKey;
+    }
+    w.broadPhase.touchProxy(shape.proxyId);
+    w.newShapes = true;
+    wakeUp(w.bodies[shape.body]);
+}
+
+}  // namespace pivot
