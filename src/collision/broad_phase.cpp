@@ -1,2 +1,46 @@
-// Placeholder: implementation pending.
+// The broad phase's bookkeeping around its tree: which proxies to re-examine at the next
+// updatePairs.
 #include "collision/broad_phase.h"
+
+namespace pivot {
+
+std::int32_t BroadPhase::createProxy(const AABB& tightBox, std::int32_t userData) {
+    const std::int32_t proxyId = tree_.createProxy(tightBox, userData);
+    moveBuffer_.push_back(proxyId);
+    return proxyId;
+}
+
+void BroadPhase::destroyProxy(std::int32_t proxyId) {
+    // Every copy goes: a proxy can be buffered more than once (moved, then touched), and its
+    // id may be handed to a new proxy before the next update.
+    for (std::int32_t& buffered : moveBuffer_) {
+        if (buffered == proxyId) buffered = kNullProxy;
+    }
+    tree_.destroyProxy(proxyId);
+}
+
+void BroadPhase::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) {
+    if (tree_.moveProxy(proxyId, tightBox, displacement)) moveBuffer_.push_back(proxyId);
+}
+
+void BroadPhase::touchProxy(std::int32_t proxyId) {
+    moveBuffer_.push_back(proxyId);
+}
+
+bool BroadPhase::testOverlap(std::int32_t proxyA, std::int32_t proxyB) const {
+    return overlaps(tree_.fatBox(proxyA), tree_.fatBox(proxyB));
+}
+
+const AABB& BroadPhase::fatBox(std::int32_t proxyId) const {
+    return tree_.fatBox(proxyId);
+}
+
+std::int32_t BroadPhase::userData(std::int32_t proxyId) const {
+    return tree_.userData(proxyId);
+}
+
+const DynamicTree& BroadPhase::tree() const {
+    return tree_;
+}
+
+}  // namespace pivot

@@ -3,6 +3,7 @@
 // each overlapping pair that involves at least one of them.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -13,6 +14,7 @@ namespace pivot {
 class BroadPhase {
 public:
     std::int32_t createProxy(const AABB& tightBox, std::int32_t userData);
+    /// Also forgets the proxy if it is buffered, so it is never reported after this call.
     void destroyProxy(std::int32_t proxyId);
     /// See DynamicTree::moveProxy; a proxy the tree re-inserted is buffered for updatePairs.
     void moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement);
@@ -30,8 +32,57 @@ public:
     /// the buffer. Pairs are reported in a deterministic order (sorted by proxy ids), each
     /// with the smaller proxy id's user data first. It does not know which pairs already have
     /// contacts: the caller ignores pairs it already has.
+    ///
+    /// The buffer is emptied before the first addPair call, so proxies that addPair buffers
+    /// (by touchProxy, say) wait for the next update; addPair must not destroy proxies.
     template <typename AddPair>
     void updatePairs(AddPair&& addPair);
+
+private:
+    static constexpr std::int32_t kNullProxy = -1;
+
+    struct ProxyPair {
+        std::int32_t lower;  ///< the smaller proxy id
+        std::int32_t upper;
+    };
+
+    DynamicTree tree_;
+    // Buffered proxy ids in the order they were buffered; destroyed ones are overwritten with
+    // kNullProxy rather than erased, which keeps destroyProxy from shifting the rest.
+    std::vector<std::int32_t> moveBuffer_;
+    // Kept between calls for its capacity: updatePairs allocates nothing once it has grown.
+    std::vector<ProxyPair> pairBuffer_;
 };
+
+template <typename AddPair>
+void BroadPhase::updatePairs(AddPair&& addPair) {
+    pairBuffer_.clear();
+    for (const std::int32_t queryProxy : moveBuffer_) {
+        if (queryProxy == kNullProxy) continue;
+        tree_.query(tree_.fatBox(queryProxy), [&](std::int32_t otherProxy) {
+            if (otherProxy != queryProxy) {
+                pairBuffer_.push_back(
+                    {std::min(queryProxy, otherProxy), std::max(queryProxy, otherProxy)});
+            }
+            return true;
+        });
+    }
+    moveBuffer_.clear();
+
+    // A pair both of whose proxies were buffered (or one buffered twice) is found more than
+    // once; sorting by ids puts the copies side by side and fixes the reporting order.
+    std::sort(pairBuffer_.begin(), pairBuffer_.end(), [](const ProxyPair& a, const ProxyPair& b) {
+        return a.lower < b.lower || (a.lower == b.lower && a.upper < b.upper);
+    });
+    const std::size_t count = pairBuffer_.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        const ProxyPair pair = pairBuffer_[i];
+        if (i > 0 && pair.lower == pairBuffer_[i - 1].lower &&
+            pair.upper == pairBuffer_[i - 1].upper) {
+            continue;
+        }
+        addPair(tree_.userData(pair.lower), tree_.userData(pair.upper));
+    }
+}
 
 }  // namespace pivot

@@ -1,2 +1,309 @@
-// Placeholder: implementation pending.
+// The dynamic AABB tree: node pool and free list, insertion by the perimeter heuristic,
+// removal, and the rotations that keep the tree balanced.
 #include "collision/dynamic_tree.h"
+
+#include <algorithm>
+#include <cassert>
+
+#include "pivot/constants.h"
+
+namespace pivot {
+
+namespace {
+
+AABB fatten(const AABB& tightBox) {
+    const Vec2 margin{kAabbMargin, kAabbMargin};
+    return {tightBox.lower - margin, tightBox.upper + margin};
+}
+
+}  // namespace
+
+std::int32_t DynamicTree::createProxy(const AABB& tightBox, std::int32_t userData) {
+    const std::int32_t proxyId = allocateNode();
+    Node& leaf = nodes_[proxyId];
+    leaf.box = fatten(tightBox);
+    leaf.userData = userData;
+    leaf.height = 0;
+    insertLeaf(proxyId);
+    ++proxyCount_;
+    return proxyId;
+}
+
+void DynamicTree::destroyProxy(std::int32_t proxyId) {
+    assert(isProxy(proxyId));
+    removeLeaf(proxyId);
+    // Freed after its old parent, so the next createProxy reuses this id first.
+    freeNode(proxyId);
+    --proxyCount_;
+}
+
+bool DynamicTree::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) {
+    assert(isProxy(proxyId));
+    if (contains(nodes_[proxyId].box, tightBox)) return false;
+
+    // Stretch only the side the shape is heading towards: the box then covers where it will
+    // be over the next few steps without growing behind it.
+    AABB box = fatten(tightBox);
+    const Vec2 ahead = kAabbMotionFactor * displacement;
+    if (ahead.x < 0.0f) {
+        box.lower.x += ahead.x;
+    } else {
+        box.upper.x += ahead.x;
+    }
+    if (ahead.y < 0.0f) {
+        box.lower.y += ahead.y;
+    } else {
+        box.upper.y += ahead.y;
+    }
+
+    removeLeaf(proxyId);
+    nodes_[proxyId].box = box;
+    insertLeaf(proxyId);
+    return true;
+}
+
+const AABB& DynamicTree::fatBox(std::int32_t proxyId) const {
+    assert(isProxy(proxyId));
+    return nodes_[proxyId].box;
+}
+
+std::int32_t DynamicTree::userData(std::int32_t proxyId) const {
+    assert(isProxy(proxyId));
+    return nodes_[proxyId].userData;
+}
+
+int DynamicTree::proxyCount() const {
+    return proxyCount_;
+}
+
+int DynamicTree::height() const {
+    return root_ == kNullNode ? -1 : nodes_[root_].height;
+}
+
+std::int32_t DynamicTree::allocateNode() {
+    std::int32_t nodeId;
+    if (freeList_ != kNullNode) {
+        nodeId = freeList_;
+        freeList_ = nodes_[nodeId].next;
+        nodes_[nodeId] = Node{};
+    } else {
+        nodeId = static_cast<std::int32_t>(nodes_.size());
+        nodes_.emplace_back();
+    }
+    nodes_[nodeId].height = 0;
+    return nodeId;
+}
+
+void DynamicTree::freeNode(std::int32_t nodeId) {
+    nodes_[nodeId] = Node{};
+    nodes_[nodeId].next = freeList_;
+    freeList_ = nodeId;
+}
+
+bool DynamicTree::isProxy(std::int32_t proxyId) const {
+    return proxyId >= 0 && proxyId < static_cast<std::int32_t>(nodes_.size()) &&
+           nodes_[proxyId].height == 0;
+}
+
+void DynamicTree::insertLeaf(std::int32_t leaf) {
+    if (root_ == kNullNode) {
+        root_ = leaf;
+        nodes_[leaf].parent = kNullNode;
+        return;
+    }
+
+    const AABB leafBox = nodes_[leaf].box;
+    const std::int32_t sibling = chooseSibling(leafBox);
+    const std::int32_t oldParent = nodes_[sibling].parent;
+    const std::int32_t newParent = allocateNode();  // may reallocate nodes_: no references held
+
+    Node& parent = nodes_[newParent];
+    parent.parent = oldParent;
+    parent.child1 = sibling;
+    parent.child2 = leaf;
+    nodes_[sibling].parent = newParent;
+    nodes_[leaf].parent = newParent;
+    if (oldParent == kNullNode) {
+        root_ = newParent;
+    } else {
+        replaceChild(oldParent, sibling, newParent);
+    }
+    // The new parent itself may be unbalanced when the sibling is a tall subtree.
+    refitUpwards(newParent);
+}
+
+void DynamicTree::removeLeaf(std::int32_t leaf) {
+    if (leaf == root_) {
+        root_ = kNullNode;
+        return;
+    }
+
+    const std::int32_t parent = nodes_[leaf].parent;
+    const std::int32_t grandParent = nodes_[parent].parent;
+    const std::int32_t sibling =
+        nodes_[parent].child1 == leaf ? nodes_[parent].child2 : nodes_[parent].child1;
+
+    nodes_[sibling].parent = grandParent;
+    if (grandParent == kNullNode) {
+        root_ = sibling;
+    } else {
+        replaceChild(grandParent, parent, sibling);
+    }
+    freeNode(parent);
+    nodes_[leaf].parent = kNullNode;
+    refitUpwards(grandParent);
+}
+
+// The cost of a tree is the sum of its internal nodes' perimeters (a query's chance of
+// entering a node grows with its size). Pairing the new leaf with node N creates a parent the
+// size of combine(N, leaf) and grows every ancestor of N; that growth is the "inherited" cost
+// carried down the walk. Descending into a child costs at least the inherited cost plus the
+// child's own growth plus a new parent no smaller than the leaf, so the walk stops where
+// pairing is cheaper than the cheapest such bound.
+std::int32_t DynamicTree::chooseSibling(const AABB& leafBox) const {
+    const float leafPerimeter = perimeter(leafBox);
+    auto descentBound = [&](std::int32_t childId) {
+        const Node& child = nodes_[childId];
+        const float paired = perimeter(combine(child.box, leafBox));
+        if (child.isLeaf()) return paired;
+        return std::min(paired, paired - perimeter(child.box) + leafPerimeter);
+    };
+
+    std::int32_t nodeId = root_;
+    float inherited = 0.0f;
+    while (!nodes_[nodeId].isLeaf()) {
+        const Node& node = nodes_[nodeId];
+        const float combined = perimeter(combine(node.box, leafBox));
+        const float pairCost = combined + inherited;
+        const float childInherited = inherited + (combined - perimeter(node.box));
+        const float cost1 = descentBound(node.child1) + childInherited;
+        const float cost2 = descentBound(node.child2) + childInherited;
+
+        // Ties go down, and to the shorter child: a leaf placed low unbalances the tree least.
+        if (pairCost < cost1 && pairCost < cost2) break;
+        if (cost1 < cost2) {
+            nodeId = node.child1;
+        } else if (cost2 < cost1) {
+            nodeId = node.child2;
+        } else {
+            nodeId = nodes_[node.child1].height <= nodes_[node.child2].height ? node.child1
+                                                                              : node.child2;
+        }
+        inherited = childInherited;
+    }
+    return nodeId;
+}
+
+void DynamicTree::refitUpwards(std::int32_t nodeId) {
+    while (nodeId != kNullNode) {
+        nodeId = balance(nodeId);
+        nodeId = nodes_[nodeId].parent;
+    }
+}
+
+std::int32_t DynamicTree::balance(std::int32_t nodeId) {
+    const Node& node = nodes_[nodeId];
+    if (node.isLeaf()) return nodeId;
+    const std::int32_t height1 = nodes_[node.child1].height;
+    const std::int32_t height2 = nodes_[node.child2].height;
+    if (height2 > height1 + 1) return rotateUp(nodeId, node.child2);
+    if (height1 > height2 + 1) return rotateUp(nodeId, node.child1);
+    refitNode(nodeId);
+    return nodeId;
+}
+
+// `heavy` (a child of `top`, at least two taller than its sibling) takes top's place. It keeps
+// its taller child and hands the other to `top`, which takes that child's slot under heavy.
+// When a leaf was paired with a tall subtree (the heuristic may choose any node, not just a
+// leaf), the imbalance is larger than one rotation can absorb: `top` then still leans the same
+// way and is balanced in turn, which carries the leaf down one level per rotation.
+std::int32_t DynamicTree::rotateUp(std::int32_t top, std::int32_t heavy) {
+    const std::int32_t first = nodes_[heavy].child1;
+    const std::int32_t second = nodes_[heavy].child2;
+    const std::int32_t given = nodes_[first].height >= nodes_[second].height ? second : first;
+
+    const std::int32_t above = nodes_[top].parent;
+    nodes_[heavy].parent = above;
+    if (above == kNullNode) {
+        root_ = heavy;
+    } else {
+        replaceChild(above, top, heavy);
+    }
+
+    replaceChild(heavy, given, top);
+    nodes_[top].parent = heavy;
+    replaceChild(top, heavy, given);
+    nodes_[given].parent = top;
+
+    balance(top);  // relinks its result under `heavy` itself
+    refitNode(heavy);
+    return heavy;
+}
+
+void DynamicTree::refitNode(std::int32_t nodeId) {
+    Node& node = nodes_[nodeId];
+    if (node.isLeaf()) return;
+    const Node& child1 = nodes_[node.child1];
+    const Node& child2 = nodes_[node.child2];
+    node.box = combine(child1.box, child2.box);
+    node.height = 1 + std::max(child1.height, child2.height);
+}
+
+void DynamicTree::replaceChild(std::int32_t parent, std::int32_t oldChild, std::int32_t newChild) {
+    Node& node = nodes_[parent];
+    if (node.child1 == oldChild) {
+        node.child1 = newChild;
+    } else {
+        assert(node.child2 == oldChild);
+        node.child2 = newChild;
+    }
+}
+
+bool DynamicTree::isValid() const {
+    const auto nodeCount = static_cast<std::int32_t>(nodes_.size());
+    auto inPool = [&](std::int32_t id) { return id >= 0 && id < nodeCount; };
+
+    // Free list: in range, marked free, no cycles (it cannot be longer than the pool).
+    std::vector<bool> seen(nodes_.size(), false);
+    std::int32_t freeCount = 0;
+    for (std::int32_t id = freeList_; id != kNullNode; id = nodes_[id].next) {
+        if (!inPool(id) || seen[id] || nodes_[id].height != -1) return false;
+        seen[id] = true;
+        ++freeCount;
+    }
+
+    std::int32_t usedCount = 0;
+    std::int32_t leafCount = 0;
+    if (root_ != kNullNode) {
+        if (!inPool(root_) || nodes_[root_].parent != kNullNode) return false;
+        std::vector<std::int32_t> stack{root_};
+        while (!stack.empty()) {
+            const std::int32_t id = stack.back();
+            stack.pop_back();
+            if (seen[id]) return false;  // a free node in the tree, or a node reached twice
+            seen[id] = true;
+            ++usedCount;
+
+            const Node& node = nodes_[id];
+            if (node.isLeaf()) {
+                if (node.child2 != kNullNode || node.height != 0) return false;
+                ++leafCount;
+                continue;
+            }
+            for (std::int32_t child : {node.child1, node.child2}) {
+                if (!inPool(child) || nodes_[child].parent != id) return false;
+                if (!contains(node.box, nodes_[child].box)) return false;
+            }
+            if (node.child1 == node.child2) return false;
+            const std::int32_t expectedHeight =
+                1 + std::max(nodes_[node.child1].height, nodes_[node.child2].height);
+            if (node.height != expectedHeight) return false;
+            stack.push_back(node.child1);
+            stack.push_back(node.child2);
+        }
+    }
+
+    return leafCount == proxyCount_ && usedCount + freeCount == nodeCount;
+}
+
+}  // namespace pivot

@@ -4,12 +4,45 @@
 // stays inside its fattened box.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "collision/aabb.h"
 
 namespace pivot {
+
+/// A LIFO stack whose first N entries live inline (no allocation); it spills onto the heap
+/// only beyond that, so deep traversals stay correct while the usual ones never allocate.
+template <typename T, std::size_t N>
+class InlineStack {
+public:
+    void push(const T& value) {
+        if (inlineCount_ < N) {
+            inline_[inlineCount_++] = value;
+        } else {
+            spill_.push_back(value);
+        }
+    }
+    /// Requires !empty(). The spill only holds entries while the inline part is full, so its
+    /// back is always the newest entry.
+    T pop() {
+        if (!spill_.empty()) {
+            T value = spill_.back();
+            spill_.pop_back();
+            return value;
+        }
+        return inline_[--inlineCount_];
+    }
+    bool empty() const { return inlineCount_ == 0; }
+    std::size_t size() const { return inlineCount_ + spill_.size(); }
+
+private:
+    std::array<T, N> inline_;
+    std::size_t inlineCount_ = 0;
+    std::vector<T> spill_;
+};
 
 class DynamicTree {
 public:
@@ -26,7 +59,7 @@ public:
     std::int32_t userData(std::int32_t proxyId) const;
 
     /// Calls `visit(proxyId)` for every proxy whose fat box overlaps `box`; `visit` returns
-    /// false to stop the query early.
+    /// false to stop the query early. `visit` must not create, move or destroy proxies.
     template <typename Visit>
     void query(const AABB& box, Visit&& visit) const;
 
@@ -38,7 +71,64 @@ public:
     bool isValid() const;
 
 private:
-    // (implementation detail: node pool, free list, root, insertion, removal, balancing)
+    static constexpr std::int32_t kNullNode = -1;
+    // A balanced tree of a million leaves is about 30 deep, and the traversal holds at most
+    // one pending sibling per level, so 256 inline entries never spill in practice.
+    static constexpr std::size_t kQueryStackSize = 256;
+
+    // A leaf (child1 == kNullNode) is a proxy: its id is its index, which never changes while
+    // it lives, because re-insertion after a move keeps the node and only relinks it. Free
+    // nodes have height -1 and chain through `next`, last freed first reused.
+    struct Node {
+        AABB box;
+        std::int32_t parent = kNullNode;
+        std::int32_t child1 = kNullNode;
+        std::int32_t child2 = kNullNode;
+        std::int32_t next = kNullNode;
+        std::int32_t height = -1;
+        std::int32_t userData = 0;
+
+        bool isLeaf() const { return child1 == kNullNode; }
+    };
+
+    std::int32_t allocateNode();
+    void freeNode(std::int32_t nodeId);
+    bool isProxy(std::int32_t proxyId) const;
+
+    void insertLeaf(std::int32_t leaf);
+    void removeLeaf(std::int32_t leaf);
+    std::int32_t chooseSibling(const AABB& leafBox) const;
+    /// Refits boxes and heights from `nodeId` to the root, rotating where a node is unbalanced.
+    void refitUpwards(std::int32_t nodeId);
+    /// Rotates `nodeId`'s subtree until its children's heights differ by at most one and refits
+    /// it; returns the subtree's (possibly new) root, already linked in nodeId's place.
+    std::int32_t balance(std::int32_t nodeId);
+    std::int32_t rotateUp(std::int32_t top, std::int32_t heavy);
+    void refitNode(std::int32_t nodeId);
+    void replaceChild(std::int32_t parent, std::int32_t oldChild, std::int32_t newChild);
+
+    std::vector<Node> nodes_;
+    std::int32_t root_ = kNullNode;
+    std::int32_t freeList_ = kNullNode;
+    std::int32_t proxyCount_ = 0;
 };
+
+template <typename Visit>
+void DynamicTree::query(const AABB& box, Visit&& visit) const {
+    if (root_ == kNullNode) return;
+    InlineStack<std::int32_t, kQueryStackSize> stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+        const std::int32_t nodeId = stack.pop();
+        const Node& node = nodes_[nodeId];
+        if (!overlaps(node.box, box)) continue;
+        if (node.isLeaf()) {
+            if (!visit(nodeId)) return;
+        } else {
+            stack.push(node.child2);
+            stack.push(node.child1);
+        }
+    }
+}
 
 }  // namespace pivot
