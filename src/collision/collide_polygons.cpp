@@ -1,2 +1,192 @@
-// Placeholder: implementation pending.
+// Polygon against polygon: the contact manifold of two convex polygons, each with the skin
+// kPolygonRadius.
+//
+// Algorithm (separating axes, then clipping; the decisions are Box2D 2.4.1's so that contacts
+// match that engine step for step):
+//  1. For each polygon, the face whose plane the other polygon's deepest vertex is furthest in
+//     front of. If either separation exceeds the total radius, the shapes are apart.
+//  2. The reference face is A's unless B's separation is larger by more than a small tolerance
+//     (which keeps the choice from flickering between nearly equal faces).
+//  3. The incident edge is the other polygon's edge whose normal is most anti-parallel to the
+//     reference normal.
+//  4. The incident edge is clipped against the two side planes through the ends of the
+//     reference face (moved outward by the total radius); the clipped points that lie within
+//     the total radius of the reference plane are the contact points.
+#include <cstdint>
+#include <limits>
+
 #include "collision/manifold.h"
+
+namespace pivot {
+
+namespace {
+
+// Box2D's reference-face tolerance: B's face must beat A's by this much to become the
+// reference, so that two nearly equal faces do not swap every step (m).
+constexpr float kReferenceFaceTolerance = 0.1f * kLinearSlop;
+
+// The frame `to` as seen from the frame `from`: maps `to`-local points into `from`-local ones.
+// Written as one composed transform (rather than two transforms per point) so that the
+// arithmetic, and with it every near-tie decision, is that of the reference engine.
+Transform relativeTransform(const Transform& from, const Transform& to) {
+    Transform t;
+    t.q.s = from.q.c * to.q.s - from.q.s * to.q.c;
+    t.q.c = from.q.c * to.q.c + from.q.s * to.q.s;
+    t.p = inverseRotate(from.q, to.p - from.p);
+    return t;
+}
+
+struct FaceSeparation {
+    int face = 0;
+    float separation = 0.0f;  // m, largest over the faces of the first polygon
+};
+
+// The face of poly1 with the largest separation from poly2, measured in poly2's frame: for each
+// face, the distance of poly2's deepest vertex in front of the face's plane.
+FaceSeparation maxFaceSeparation(const ConvexPolygon& poly1, const Transform& xf1,
+                                 const ConvexPolygon& poly2, const Transform& xf2) {
+    const Transform xf = relativeTransform(xf2, xf1);
+    FaceSeparation best{0, -std::numeric_limits<float>::max()};
+    for (int i = 0; i < poly1.count; ++i) {
+        const Vec2 n = rotate(xf.q, poly1.normals[i]);
+        const Vec2 v = transformPoint(xf, poly1.vertices[i]);
+        float deepest = std::numeric_limits<float>::max();
+        for (int j = 0; j < poly2.count; ++j) {
+            const float s = dot(n, poly2.vertices[j] - v);
+            if (s < deepest) deepest = s;
+        }
+        // Strictly greater: on an exact tie the lower face index wins, as in the reference.
+        if (deepest > best.separation) best = {i, deepest};
+    }
+    return best;
+}
+
+// A point of the incident edge during clipping, with the features that made it: the
+// reference polygon's face or vertex, and the incident polygon's vertex or face.
+struct ClipVertex {
+    Vec2 point;
+    std::uint8_t referenceIndex = 0;
+    std::uint8_t incidentIndex = 0;
+    FeatureType referenceType = FeatureType::Face;
+    FeatureType incidentType = FeatureType::Vertex;
+};
+
+// The incident edge (world frame) of poly2 against face `referenceFace` of poly1.
+void findIncidentEdge(ClipVertex edge[2], const ConvexPolygon& poly1, const Transform& xf1,
+                      int referenceFace, const ConvexPolygon& poly2, const Transform& xf2) {
+    const Vec2 referenceNormal = inverseRotate(xf2.q, rotate(xf1.q, poly1.normals[referenceFace]));
+    int incident = 0;
+    float minDot = std::numeric_limits<float>::max();
+    for (int i = 0; i < poly2.count; ++i) {
+        const float d = dot(referenceNormal, poly2.normals[i]);
+        if (d < minDot) {
+            minDot = d;
+            incident = i;
+        }
+    }
+    const int i1 = incident;
+    const int i2 = i1 + 1 < poly2.count ? i1 + 1 : 0;
+    const auto face = static_cast<std::uint8_t>(referenceFace);
+    edge[0] = {transformPoint(xf2, poly2.vertices[i1]), face, static_cast<std::uint8_t>(i1),
+               FeatureType::Face, FeatureType::Vertex};
+    edge[1] = {transformPoint(xf2, poly2.vertices[i2]), face, static_cast<std::uint8_t>(i2),
+               FeatureType::Face, FeatureType::Vertex};
+}
+
+// Keeps the part of segment `in` behind the plane dot(normal, x) = offset (Sutherland-Hodgman
+// for one plane). A point made by the cut is where reference vertex `referenceVertex` meets the
+// incident face; the incident index is taken from in[0], whatever in[0] is, which is what the
+// reference does and what makes the ids agree. Returns the number of points written.
+int clipSegmentToLine(ClipVertex out[2], const ClipVertex in[2], Vec2 normal, float offset,
+                      int referenceVertex) {
+    int count = 0;
+    const float distance0 = dot(normal, in[0].point) - offset;
+    const float distance1 = dot(normal, in[1].point) - offset;
+    if (distance0 <= 0.0f) out[count++] = in[0];
+    if (distance1 <= 0.0f) out[count++] = in[1];
+    if (distance0 * distance1 < 0.0f) {
+        const float t = distance0 / (distance0 - distance1);
+        out[count] = {in[0].point + t * (in[1].point - in[0].point),
+                      static_cast<std::uint8_t>(referenceVertex), in[0].incidentIndex,
+                      FeatureType::Vertex, FeatureType::Face};
+        ++count;
+    }
+    return count;
+}
+
+}  // namespace
+
+void collidePolygons(Manifold& manifold, const ConvexPolygon& polygonA, const Transform& xfA,
+                     const ConvexPolygon& polygonB, const Transform& xfB) {
+    manifold = Manifold{};
+    const float totalRadius = 2.0f * kPolygonRadius;
+
+    const FaceSeparation onA = maxFaceSeparation(polygonA, xfA, polygonB, xfB);
+    if (onA.separation > totalRadius) return;
+    const FaceSeparation onB = maxFaceSeparation(polygonB, xfB, polygonA, xfA);
+    if (onB.separation > totalRadius) return;
+
+    // poly1 holds the reference face, poly2 the incident edge.
+    const bool referenceOnB = onB.separation > onA.separation + kReferenceFaceTolerance;
+    const ConvexPolygon& poly1 = referenceOnB ? polygonB : polygonA;
+    const ConvexPolygon& poly2 = referenceOnB ? polygonA : polygonB;
+    const Transform& xf1 = referenceOnB ? xfB : xfA;
+    const Transform& xf2 = referenceOnB ? xfA : xfB;
+    const int face = referenceOnB ? onB.face : onA.face;
+
+    ClipVertex incidentEdge[2];
+    findIncidentEdge(incidentEdge, poly1, xf1, face, poly2, xf2);
+
+    const int iv1 = face;
+    const int iv2 = face + 1 < poly1.count ? face + 1 : 0;
+    const Vec2 localV1 = poly1.vertices[iv1];
+    const Vec2 localV2 = poly1.vertices[iv2];
+
+    // The normal is rebuilt from the edge itself, so it is exactly perpendicular to the side
+    // planes' tangent (the stored normal may differ from it in the last bit).
+    Vec2 localTangent = localV2 - localV1;
+    const float edgeLength = length(localTangent);
+    if (edgeLength >= std::numeric_limits<float>::epsilon()) {
+        localTangent = (1.0f / edgeLength) * localTangent;
+    }
+    const Vec2 localNormal = cross(localTangent, 1.0f);
+    const Vec2 planePoint = 0.5f * (localV1 + localV2);
+
+    const Vec2 tangent = rotate(xf1.q, localTangent);
+    const Vec2 normal = cross(tangent, 1.0f);
+    const Vec2 v1 = transformPoint(xf1, localV1);
+    const Vec2 v2 = transformPoint(xf1, localV2);
+
+    const float frontOffset = dot(normal, v1);
+    // The side planes are pushed out by the total radius: the rounded corners of the reference
+    // face still support the incident edge a little beyond the face's ends.
+    const float sideOffset1 = -dot(tangent, v1) + totalRadius;
+    const float sideOffset2 = dot(tangent, v2) + totalRadius;
+
+    ClipVertex clipped1[2];
+    ClipVertex clipped2[2];
+    // Fewer than two points left: the incident edge lies wholly beyond an end of the reference
+    // face (the shapes approach corner to corner); like the reference, report no contact.
+    if (clipSegmentToLine(clipped1, incidentEdge, -tangent, sideOffset1, iv1) < 2) return;
+    if (clipSegmentToLine(clipped2, clipped1, tangent, sideOffset2, iv2) < 2) return;
+
+    manifold.type = referenceOnB ? ManifoldType::FaceB : ManifoldType::FaceA;
+    manifold.localNormal = localNormal;
+    manifold.localPoint = planePoint;
+
+    int count = 0;
+    for (const ClipVertex& c : clipped2) {
+        const float separation = dot(normal, c.point) - frontOffset;
+        if (separation > totalRadius) continue;
+        ManifoldPoint& mp = manifold.points[count++];
+        mp.localPoint = inverseTransformPoint(xf2, c.point);
+        // Ids always name shape A's feature first, whichever polygon held the reference face.
+        mp.id =
+            referenceOnB
+                ? makeFeatureId(c.incidentIndex, c.referenceIndex, c.incidentType, c.referenceType)
+                : makeFeatureId(c.referenceIndex, c.incidentIndex, c.referenceType, c.incidentType);
+    }
+    manifold.pointCount = count;
+}
+
+}  // namespace pivot
