@@ -92,7 +92,7 @@ float World::jointSeparation(JointId id) const {
 }
 Vec2 World::jointReactionForce(JointId id) const {
     const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointReactionForce", id)];
-    return impl_->previousInvDt * j.impulse;
+    return j.impulseInvDt * j.impulse;
 }
 
 PositionSolver World::jointPositionSolver(JointId id) const {

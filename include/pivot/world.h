@@ -180,7 +180,8 @@ public:
     Vec2 jointAnchorB(JointId id) const;  ///< m, the pin on body B in world coordinates
     /// m, |anchorB - anchorA|: how far the joint has come apart.
     float jointSeparation(JointId id) const;
-    /// N, the force the joint applied to body B in the last step.
+    /// N, the force the joint applied to body B in the last step that solved it (a sleeping
+    /// joint keeps reporting the force it held when it fell asleep).
     Vec2 jointReactionForce(JointId id) const;
 
     PositionSolver jointPositionSolver(JointId id) const;

@@ -20,7 +20,8 @@ struct RevoluteJoint {
     float biasOverride = 0.0f;
     bool collideConnected = false;
     std::uint64_t userData = 0;
-    Vec2 impulse;  // accumulated point impulse of the last step, N s (warm starting)
+    Vec2 impulse;  // accumulated point impulse of the last step solved, N s (warm starting)
+    float impulseInvDt = 0.0f;  // 1/dt of that step: impulse * impulseInvDt is the force
 
     std::int32_t bodyA() const { return edges[0].body; }
     std::int32_t bodyB() const { return edges[1].body; }

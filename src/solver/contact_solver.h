@@ -69,8 +69,9 @@ struct ContactPositionConstraint {
 /// The contact constraints of one island, rebuilt every step into reused buffers.
 class ContactSolver {
 public:
-    /// Builds the constraints of `contacts` from the solver arrays' current state (the start of
-    /// the step) and applies the warm start, scaled by step.dtRatio.
+    /// Builds the constraints of `contacts` from the solver arrays' poses (the start of the
+    /// step) and applies the warm start, scaled by step.dtRatio. Restitution measures the
+    /// approach speed from the bodies' velocities before this step's forces.
     void prepare(const std::vector<std::int32_t>& contacts, const SlotPool<Contact>& pool,
                  const SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
                  const StepContext& step, const SolverPosition* positions,

@@ -66,9 +66,12 @@ void prepareJoints(Island& island, const SlotPool<Body>& bodies, SlotPool<Revolu
     prepareVelocityBias(island.groups, island.positions.data(), step.invDt);
 }
 
-void storeImpulses(const Island& island, SlotPool<RevoluteJoint>& joints) {
+void storeImpulses(const Island& island, SlotPool<RevoluteJoint>& joints, float invDt) {
     for (const PointConstraints& group : island.groups) {
-        for (const PointConstraint& pc : group) joints[pc.jointIndex].impulse = pc.impulse;
+        for (const PointConstraint& pc : group) {
+            joints[pc.jointIndex].impulse = pc.impulse;
+            joints[pc.jointIndex].impulseInvDt = invDt;
+        }
     }
 }
 
@@ -151,7 +154,7 @@ IslandReport solveIsland(Island& island, SolverStorage& storage, const StepConte
         solveVelocitySweep(island.groups, island.velocities.data());
         island.contactSolver.solveVelocities(island.velocities.data());
     }
-    storeImpulses(island, storage.joints);
+    storeImpulses(island, storage.joints, step.invDt);
     island.contactSolver.storeImpulses(storage.contacts);
     integratePositions(island, step, report);
     island.pseudoVelocities.resize(island.bodies.size());

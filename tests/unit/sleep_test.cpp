@@ -111,7 +111,8 @@ TEST(Sleep, JointChangesWake) {
     BodyId other = rig.addBox({3.0f, 0.515f});
     rig.run(120);
     ASSERT_FALSE(rig.world.isBodyAwake(rig.box));
-    JointId joint = rig.world.createJoint(RevoluteJointDef::atWorldAnchor(rig.box, other, {1.5f, 0.5f}));
+    JointId joint =
+        rig.world.createJoint(RevoluteJointDef::atWorldAnchor(rig.box, other, {1.5f, 0.5f}));
     EXPECT_TRUE(rig.world.isBodyAwake(rig.box));
     EXPECT_TRUE(rig.world.isBodyAwake(other));
     rig.run(120);

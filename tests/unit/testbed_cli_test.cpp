@@ -37,6 +37,7 @@ TEST(TestbedCli, ParsesEveryOption) {
                   "42", "--hz", "120", "--vel-iters", "4", "--pos-iters", "0", "--csv", "out.csv"});
     EXPECT_EQ(*o.scene, "chain");
     EXPECT_EQ(*o.solver, PositionSolver::PseudoVelocity);
+    EXPECT_EQ(*o.contact, ContactCorrection::Baumgarte);
     EXPECT_EQ(*o.bias, 0.5f);
     EXPECT_EQ(o.steps, 42);
     EXPECT_EQ(o.hz, 120.0f);
@@ -64,12 +65,13 @@ TEST(TestbedCli, BadValuesAreErrors) {
     EXPECT_NE(errorOf({"--vel-iters", "-1"}), "");
     EXPECT_NE(errorOf({"--scene"}), "");
     EXPECT_NE(errorOf({"--frobnicate"}), "");
+    EXPECT_NE(errorOf({"--contact", "soft"}).find("baumgarte, ngs"), std::string::npos);
 }
 
 TEST(TestbedCli, HelpExplainsEachOption) {
     std::string text = usage();
-    for (const char* option : {"--scene", "--solver", "--bias", "--steps", "--hz", "--vel-iters",
-                               "--pos-iters", "--csv", "--help"}) {
+    for (const char* option : {"--scene", "--solver", "--contact", "--list", "--bias", "--steps",
+                               "--hz", "--vel-iters", "--pos-iters", "--csv", "--help"}) {
         EXPECT_NE(text.find(option), std::string::npos) << option;
     }
 }
@@ -78,6 +80,7 @@ TEST(TestbedTable, CsvHasOneLinePerRunAndAHeader) {
     TableRow row;
     row.scene = "chain";
     row.solver = "full_ngs";
+    row.contact = "ngs";
     row.bias = 1.0f;
     row.metrics.steps = 600;
     row.metrics.maxSeparation = 0.25;
@@ -85,6 +88,6 @@ TEST(TestbedTable, CsvHasOneLinePerRunAndAHeader) {
     writeCsv(csv, {row, row});
     std::string text = csv.str();
     EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3);
-    EXPECT_EQ(text.rfind("scene,solver,bias,steps,max_sep_m", 0), 0u);
-    EXPECT_NE(text.find("chain,full_ngs,1,600,2.500000e-01"), std::string::npos) << text;
+    EXPECT_EQ(text.rfind("scene,solver,contact,bias,steps,max_sep_m", 0), 0u);
+    EXPECT_NE(text.find("chain,full_ngs,ngs,1,600,2.500000e-01"), std::string::npos) << text;
 }
