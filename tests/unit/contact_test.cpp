@@ -148,6 +148,49 @@ TEST_P(EveryContactCorrection, ABallWithRestitutionOneBouncesBackTo2m) {
     EXPECT_NEAR(peak, 2.0f, 0.05f * 2.0f);
 }
 
+TEST_P(EveryContactCorrection, SlowImpactsDoNotBounce) {
+    // Dropped from 2 cm the ball arrives at about 0.6 m/s, below the 1 m/s threshold.
+    World world(worldWith(GetParam()));
+    addGround(world);
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    def.position = {0.0f, 0.25f + 0.02f};
+    BodyId ball = world.createBody(def);
+    ShapeDef shape;
+    shape.restitution = 1.0f;
+    world.createShape(ball, shape, Circle{{0, 0}, 0.25f});
+    float highest = 0.0f;
+    bool landed = false;
+    for (int i = 0; i < 60; ++i) {
+        world.step(kDt);
+        landed = landed || !world.contacts().empty();
+        if (landed) highest = std::max(highest, world.bodyLinearVelocity(ball).y);
+    }
+    ASSERT_TRUE(landed);
+    EXPECT_LT(highest, 0.1f);
+}
+
+TEST_P(EveryContactCorrection, FrictionMixesAsTheGeometricMean) {
+    // Ground 0.6, box 0.1: the contact has sqrt(0.06) = 0.245 < tan 20 deg, so the box slides
+    // with acceleration g (sin 20 - 0.245 cos 20).
+    const float angle = 20.0f / 180.0f * kPi;
+    World world(worldWith(GetParam()));
+    BodyId slope = world.createBody(BodyDef{});
+    ShapeDef ground;
+    ground.density = 0.0f;
+    ground.friction = 0.6f;
+    world.createShape(slope, ground, Polygon::box(20.0f, 0.5f, {0, 0}, angle));
+    Vec2 normal{-std::sin(angle), std::cos(angle)};
+    BodyId box =
+        addBox(world, (1.0f + 2.0f * kPolygonRadius - kLinearSlop) * normal, 0.5f, angle, 0.1f);
+    Vec2 start = world.bodyPosition(box);
+    for (int i = 0; i < 120; ++i) world.step(kDt);
+    float travelled = distance(world.bodyPosition(box), start);
+    float mixed = std::sqrt(0.6f * 0.1f);
+    float expected = 0.5f * 10.0f * (std::sin(angle) - mixed * std::cos(angle)) * 4.0f;
+    EXPECT_NEAR(travelled, expected, 0.05f * expected);
+}
+
 INSTANTIATE_TEST_SUITE_P(Contacts, EveryContactCorrection,
                          testing::Values(ContactCorrection::NGS, ContactCorrection::Baumgarte),
                          correctionName);
@@ -268,4 +311,25 @@ TEST(Contacts, DestroyingABodyWakesWhatRestedOnIt) {
     EXPECT_TRUE(world.isBodyAwake(upper));
     for (int i = 0; i < 30; ++i) world.step(kDt);
     EXPECT_LT(world.bodyPosition(upper).y, restingHeight - 0.5f);
+}
+
+TEST(Contacts, JointsAndNgsContactsShareThePositionSweepsAndTheEarlyExit) {
+    // A box pinned to a static anchor and placed 0.3 m deep in the ground, more than the
+    // position phase can push out in one step: an NGS contact keeps every sweep busy, while a
+    // Baumgarte contact (no position phase) leaves the early exit to the joint alone.
+    for (ContactCorrection correction : {ContactCorrection::NGS, ContactCorrection::Baumgarte}) {
+        World world(worldWith(correction));
+        addGround(world);
+        BodyId anchor = world.createBody(BodyDef{});  // not the ground: the joint would forbid
+                                                      // the very contact under test
+        BodyId box = addBox(world, {0.0f, 0.2f});
+        world.createJoint(RevoluteJointDef::atWorldAnchor(anchor, box, {0.0f, 0.2f}));
+        for (int i = 0; i < 3; ++i) world.step(kDt, 8, 3);
+        if (correction == ContactCorrection::NGS) {
+            EXPECT_EQ(world.lastStepStats().positionIterations, 3);
+        } else {
+            // Only the joint is checked: it converges once the contact's push is absorbed.
+            EXPECT_LT(world.lastStepStats().positionIterations, 3);
+        }
+    }
 }

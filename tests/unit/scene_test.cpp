@@ -1,6 +1,11 @@
 // The seed note's three systems, run through the shared scene library.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
 
@@ -19,6 +24,9 @@ TEST(Scenes, ListTheSeedNotesSystems) {
     ASSERT_NE(findScene("pendulum"), nullptr);
     ASSERT_NE(findScene("bridge"), nullptr);
     ASSERT_NE(findScene("chain"), nullptr);
+    ASSERT_NE(findScene("bridge_heavy"), nullptr);
+    ASSERT_NE(findScene("pyramid"), nullptr);
+    ASSERT_NE(findScene("tumbler"), nullptr);
     EXPECT_EQ(findScene("nope"), nullptr);
     EXPECT_EQ(build("bridge", PositionSolver::FullNGS).joints.size(), 31u);
     EXPECT_EQ(build("chain", PositionSolver::FullNGS).joints.size(), 30u);
@@ -81,11 +89,74 @@ TEST(Scenes, FullNgsKeepsTheBridgeUp) {
     EXPECT_LT(middle.y, 5.0f);
 }
 
-class EverySceneAndSolver : public testing::TestWithParam<std::tuple<const char*, PositionSolver>> {
-};
+TEST(Scenes, BridgeHeavyDropsItsBoxAndEverySolverSurvivesIt) {
+    for (int solver = 0; solver < kPositionSolverCount; ++solver) {
+        for (ContactCorrection contact : {ContactCorrection::NGS, ContactCorrection::Baumgarte}) {
+            SceneOptions options;
+            options.solver = static_cast<PositionSolver>(solver);
+            options.contactCorrection = contact;
+            Scene scene = buildScene(*findScene("bridge_heavy"), options);
+            ASSERT_EQ(scene.bodies.size(), 30u);
+            RunMetrics m = runScene(scene, RunSettings{});
+            const std::string what = positionSolverName(options.solver);
+            ASSERT_EQ(scene.bodies.size(), 31u) << what;  // the box came at 2 s
+            BodyId box = scene.bodies.back();
+            EXPECT_NEAR(scene.world->bodyMass(box), 4.0f * 150.0f, 1e-2f) << what;
+            EXPECT_LT(scene.world->bodyPosition(box).y, 5.0f) << what;  // it fell onto the deck
+            EXPECT_FALSE(m.blewUp) << what;
+            if (options.solver == PositionSolver::FullNGS) {
+                // The bridge has no slack, so the load can only sag it by stretching every
+                // joint a little; FullNGS stretches it but never tears it.
+                EXPECT_LT(m.maxSeparation, 0.25) << what;
+            }
+        }
+    }
+}
+
+TEST(Scenes, PyramidFallsAsleepStanding) {
+    for (ContactCorrection contact : {ContactCorrection::NGS, ContactCorrection::Baumgarte}) {
+        SceneOptions options;
+        options.contactCorrection = contact;
+        Scene scene = buildScene(*findScene("pyramid"), options);
+        ASSERT_EQ(scene.bodies.size(), 210u);
+        Vec2 top = scene.world->bodyPosition(scene.bodies.back());
+        RunMetrics m = runScene(scene, RunSettings{});
+        EXPECT_EQ(scene.world->lastStepStats().sleepingBodyCount, 210);
+        EXPECT_LT(distance(scene.world->bodyPosition(scene.bodies.back()), top), 0.1f);
+        EXPECT_FALSE(m.blewUp);
+    }
+}
+
+TEST(Scenes, TumblerTurnsAndKeepsItsBoxesInside) {
+    for (ContactCorrection contact : {ContactCorrection::NGS, ContactCorrection::Baumgarte}) {
+        SceneOptions options;
+        options.contactCorrection = contact;
+        Scene scene = buildScene(*findScene("tumbler"), options);
+        RunSettings settings;
+        settings.steps = 1200;  // 20 s: more than half a turn
+        float worst = 0.0f;
+        RunMetrics m = runScene(scene, settings, [&](int) {
+            Transform drum = scene.world->bodyTransform(scene.bodies[0]);
+            for (std::size_t i = 1; i < scene.bodies.size(); ++i) {
+                Vec2 p = inverseTransformPoint(drum, scene.world->bodyPosition(scene.bodies[i]));
+                worst = std::max({worst, std::fabs(p.x), std::fabs(p.y)});
+            }
+        });
+        EXPECT_FALSE(m.blewUp);
+        EXPECT_NEAR(scene.world->bodyAngle(scene.bodies[0]), 20.0f * 0.05f * kPi, 0.05f);
+        EXPECT_LT(worst, 9.5f);  // the walls' inner faces are 9.5 m from the centre
+        EXPECT_GT(scene.world->lastStepStats().touchingCount, 200);
+    }
+}
+
+class EverySceneAndSolver
+    : public testing::TestWithParam<std::tuple<std::string, PositionSolver, ContactCorrection>> {};
 
 TEST_P(EverySceneAndSolver, RunsAndReportsFiniteMetrics) {
-    Scene scene = build(std::get<0>(GetParam()), std::get<1>(GetParam()));
+    SceneOptions options;
+    options.solver = std::get<1>(GetParam());
+    options.contactCorrection = std::get<2>(GetParam());
+    Scene scene = buildScene(*findScene(std::get<0>(GetParam())), options);
     RunSettings settings;
     settings.steps = 120;
     RunMetrics m = runScene(scene, settings);
@@ -95,12 +166,21 @@ TEST_P(EverySceneAndSolver, RunsAndReportsFiniteMetrics) {
     EXPECT_GT(m.microsecondsPerStep, 0.0);
 }
 
+namespace {
+std::vector<std::string> sceneNames() {
+    std::vector<std::string> names;
+    for (const SceneInfo& info : allScenes()) names.push_back(info.name);
+    return names;
+}
+}  // namespace
+
 INSTANTIATE_TEST_SUITE_P(
     Scenes, EverySceneAndSolver,
-    testing::Combine(testing::Values("pendulum", "bridge", "chain"),
+    testing::Combine(testing::ValuesIn(sceneNames()),
                      testing::Values(PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
-                                     PositionSolver::ModifiedNGS, PositionSolver::FullNGS)),
+                                     PositionSolver::ModifiedNGS, PositionSolver::FullNGS),
+                     testing::Values(ContactCorrection::NGS, ContactCorrection::Baumgarte)),
     [](const auto& info) {
-        return std::string(std::get<0>(info.param)) + "_" +
-               positionSolverName(std::get<1>(info.param));
+        return std::get<0>(info.param) + "_" + positionSolverName(std::get<1>(info.param)) +
+               (std::get<2>(info.param) == ContactCorrection::NGS ? "_ngs" : "_baumgarte");
     });

@@ -346,6 +346,29 @@ TEST(Validation, WorldDef) {
     def = WorldDef{};
     def.defaultPositionSolver = static_cast<PositionSolver>(5);
     EXPECT_THROW(World{def}, Error);
+    def = WorldDef{};
+    def.contactCorrection = static_cast<ContactCorrection>(2);
+    EXPECT_THROW(World{def}, Error);
+    def = WorldDef{};
+    def.contactBiasFactor = 1.5f;
+    EXPECT_THROW(World{def}, Error);
+    def = WorldDef{};
+    def.restitutionThreshold = -1.0f;
+    EXPECT_THROW(World{def}, Error);
+    Fixture f;
+    expectRejected(f.world,
+                   [&] { f.world.setContactCorrection(static_cast<ContactCorrection>(9)); },
+                   {"setContactCorrection", "9"});
+}
+
+TEST(Validation, ShapeCallsCheckTheirIds) {
+    Fixture f;
+    ShapeId doomed = f.world.createShape(f.other, ShapeDef{}, Circle{{0.5f, 0}, 0.1f});
+    f.world.destroyShape(doomed);
+    expectRejected(f.world, [&] { f.world.setShapeFilter(doomed, Filter{}); },
+                   {"setShapeFilter", "stale"});
+    expectRejected(f.world, [&] { f.world.shapeFilter(ShapeId{}); }, {"null"});
+    expectRejected(f.world, [&] { f.world.isBodyAwake(BodyId{}); }, {"isBodyAwake", "null"});
 }
 
 TEST(Lifetime, DestroyingAJointUnlinksOnlyThatJoint) {
