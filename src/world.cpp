@@ -136,6 +136,9 @@ std::uint64_t World::stateHash() const {
         h.add(static_cast<std::int32_t>(j.solver));
         h.add(j.biasFactor());
         h.add(j.impulse);
+        h.add(j.motorImpulse);
+        h.add(j.lowerImpulse);
+        h.add(j.upperImpulse);
         h.add(j.bodyA());
         h.add(j.bodyB());
     });

@@ -26,6 +26,20 @@ inline void checkContactCorrection(const char* call, const char* field,
     }
 }
 
+inline void checkLimit(const char* call, const std::string& field, const JointLimit& limit) {
+    requireFinite(call, (field + ".lower").c_str(), limit.lower);
+    requireFinite(call, (field + ".upper").c_str(), limit.upper);
+    if (limit.lower > limit.upper) {
+        fail(call, field + ".lower must be <= " + field + ".upper (got " +
+                       formatFloat(limit.lower) + " > " + formatFloat(limit.upper) + ")");
+    }
+}
+
+inline void checkMotor(const char* call, const std::string& field, const JointMotor& motor) {
+    requireFinite(call, (field + ".speed").c_str(), motor.speed);
+    requireNonNegative(call, (field + ".maxTorque").c_str(), motor.maxTorque);
+}
+
 inline void checkBiasFactor(const char* call, const char* field, float bias) {
     requireInRange(call, field, bias, 0.0f, 1.0f);
 }

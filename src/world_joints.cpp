@@ -28,6 +28,8 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
     checkSolver(call, "def.positionSolver", solver);
     if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
+    checkLimit(call, "def.limit", def.limit);
+    checkMotor(call, "def.motor", def.motor);
 
     RevoluteJoint joint;
     joint.edges[0].body = a;
@@ -46,6 +48,12 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     joint.solver = solver;
     joint.hasBiasOverride = def.biasFactor.has_value();
     joint.biasOverride = def.biasFactor.value_or(0.0f);
+    joint.enableLimit = def.limit.enabled;
+    joint.lowerAngle = def.limit.lower;
+    joint.upperAngle = def.limit.upper;
+    joint.enableMotor = def.motor.enabled;
+    joint.motorSpeed = def.motor.speed;
+    joint.maxMotorTorque = def.motor.maxTorque;
     joint.collideConnected = def.collideConnected;
     joint.userData = def.userData;
     std::int32_t index = w.joints.insert(joint);
@@ -93,6 +101,54 @@ float World::jointSeparation(JointId id) const {
 Vec2 World::jointReactionForce(JointId id) const {
     const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointReactionForce", id)];
     return j.impulseInvDt * j.impulse;
+}
+
+float World::jointAngle(JointId id) const {
+    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointAngle", id)];
+    return impl_->bodies[j.bodyB()].angle - impl_->bodies[j.bodyA()].angle - j.referenceAngle;
+}
+float World::jointSpeed(JointId id) const {
+    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointSpeed", id)];
+    return impl_->bodies[j.bodyB()].angularVelocity - impl_->bodies[j.bodyA()].angularVelocity;
+}
+float World::jointReactionTorque(JointId id) const {
+    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointReactionTorque", id)];
+    return j.impulseInvDt * (j.motorImpulse + j.lowerImpulse - j.upperImpulse);
+}
+float World::jointMotorTorque(JointId id) const {
+    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointMotorTorque", id)];
+    return j.impulseInvDt * j.motorImpulse;
+}
+
+JointLimit World::jointLimit(JointId id) const {
+    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointLimit", id)];
+    return {j.enableLimit, j.lowerAngle, j.upperAngle};
+}
+void World::setJointLimit(JointId id, const JointLimit& limit) {
+    const char* call = "World::setJointLimit";
+    RevoluteJoint& j = impl_->joints[impl_->jointIndex(call, id)];
+    checkLimit(call, "limit", limit);
+    j.enableLimit = limit.enabled;
+    j.lowerAngle = limit.lower;
+    j.upperAngle = limit.upper;
+    j.lowerImpulse = 0.0f;
+    j.upperImpulse = 0.0f;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+JointMotor World::jointMotor(JointId id) const {
+    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointMotor", id)];
+    return {j.enableMotor, j.motorSpeed, j.maxMotorTorque};
+}
+void World::setJointMotor(JointId id, const JointMotor& motor) {
+    const char* call = "World::setJointMotor";
+    RevoluteJoint& j = impl_->joints[impl_->jointIndex(call, id)];
+    checkMotor(call, "motor", motor);
+    j.enableMotor = motor.enabled;
+    j.motorSpeed = motor.speed;
+    j.maxMotorTorque = motor.maxTorque;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
 }
 
 PositionSolver World::jointPositionSolver(JointId id) const {

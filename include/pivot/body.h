@@ -28,7 +28,7 @@ struct BodyDef {
     bool fixedRotation = false;  ///< infinite rotational inertia: the body never turns
     /// May sleep once at rest (WorldDef::enableSleep switches sleeping for the whole world).
     bool allowSleep = true;
-    bool isAwake = true;  ///< false creates the body asleep until something wakes it
+    bool isAwake = true;         ///< false creates the body asleep until something wakes it
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
 };
 

@@ -43,6 +43,22 @@ std::optional<PositionSolver> parsePositionSolver(std::string_view name);
 /// PseudoVelocity, 1.0 for the NGS pair.
 float defaultBiasFactor(PositionSolver solver);
 
+/// Bounds on the joint angle (angleB - angleA - referenceAngle), rad, lower <= upper. The limit
+/// is corrected by the joint's PositionSolver like the pin; it allows kAngularSlop.
+struct JointLimit {
+    bool enabled = false;
+    float lower = 0.0f;
+    float upper = 0.0f;
+};
+
+/// Drives the joint speed (angular velocity of B relative to A) towards `speed` with at most
+/// `maxTorque`. Acts in the velocity phase only, the same for every PositionSolver.
+struct JointMotor {
+    bool enabled = false;
+    float speed = 0.0f;      ///< rad/s
+    float maxTorque = 0.0f;  ///< N m, >= 0
+};
+
 /// Everything needed to create a revolute joint.
 struct RevoluteJointDef {
     BodyId bodyA;
@@ -58,6 +74,8 @@ struct RevoluteJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
+    JointLimit limit;
+    JointMotor motor;
     /// Whether the two bodies' shapes may collide with each other.
     bool collideConnected = false;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it

@@ -180,9 +180,25 @@ public:
     Vec2 jointAnchorB(JointId id) const;  ///< m, the pin on body B in world coordinates
     /// m, |anchorB - anchorA|: how far the joint has come apart.
     float jointSeparation(JointId id) const;
+    /// rad, angleB - angleA - referenceAngle.
+    float jointAngle(JointId id) const;
+    /// rad/s, angular velocity of B relative to A.
+    float jointSpeed(JointId id) const;
     /// N, the force the joint applied to body B in the last step that solved it (a sleeping
     /// joint keeps reporting the force it held when it fell asleep).
     Vec2 jointReactionForce(JointId id) const;
+    /// N m, the torque about the pin the joint applied to body B in that step (motor plus
+    /// limits).
+    float jointReactionTorque(JointId id) const;
+    /// N m, the motor's share of it.
+    float jointMotorTorque(JointId id) const;
+
+    JointLimit jointLimit(JointId id) const;
+    /// Changing the limit wakes the joint's bodies and restarts the limit's impulses.
+    void setJointLimit(JointId id, const JointLimit& limit);
+    JointMotor jointMotor(JointId id) const;
+    /// Wakes the joint's bodies.
+    void setJointMotor(JointId id, const JointMotor& motor);
 
     PositionSolver jointPositionSolver(JointId id) const;
     /// Takes effect from the next step and wakes the joint's bodies. A bias factor left to its

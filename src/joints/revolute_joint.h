@@ -1,5 +1,5 @@
 // Revolute joint storage: what persists between steps. The per-step solver state lives in
-// PointConstraint (point_constraint.h), built afresh for each island each step.
+// RevoluteConstraint (revolute_constraint.h), built afresh for each island each step.
 #pragma once
 
 #include <cstdint>
@@ -12,7 +12,7 @@ namespace pivot {
 
 struct RevoluteJoint {
     BodyEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
-    Vec2 localAnchorA;   // origin-relative, in body A's frame
+    Vec2 localAnchorA;  // origin-relative, in body A's frame
     Vec2 localAnchorB;
     float referenceAngle = 0.0f;
     PositionSolver solver = PositionSolver::FullNGS;
@@ -20,7 +20,18 @@ struct RevoluteJoint {
     float biasOverride = 0.0f;
     bool collideConnected = false;
     std::uint64_t userData = 0;
-    Vec2 impulse;  // accumulated point impulse of the last step solved, N s (warm starting)
+    bool enableLimit = false;
+    float lowerAngle = 0.0f;  // rad
+    float upperAngle = 0.0f;
+    bool enableMotor = false;
+    float motorSpeed = 0.0f;      // rad/s
+    float maxMotorTorque = 0.0f;  // N m
+
+    // Accumulated impulses of the last step solved (warm starting, reactions).
+    Vec2 impulse;               // pin, N s
+    float motorImpulse = 0.0f;  // N m s
+    float lowerImpulse = 0.0f;
+    float upperImpulse = 0.0f;
     float impulseInvDt = 0.0f;  // 1/dt of that step: impulse * impulseInvDt is the force
 
     std::int32_t bodyA() const { return edges[0].body; }

@@ -38,39 +38,62 @@ void integrateVelocities(Island& island, SlotPool<Body>& bodies, const StepConte
 // Build each joint's solver constraint in its strategy's group and apply the warm start.
 void prepareJoints(Island& island, const SlotPool<Body>& bodies, SlotPool<RevoluteJoint>& joints,
                    const StepContext& step) {
-    for (PointConstraints& group : island.groups) group.clear();
+    for (RevoluteConstraints& group : island.groups) group.clear();
 
     for (std::int32_t jointIndex : island.joints) {
         const RevoluteJoint& joint = joints[jointIndex];
         const Body& a = bodies[joint.bodyA()];
         const Body& b = bodies[joint.bodyB()];
-        PointConstraint pc;
-        pc.indexA = a.islandIndex;
-        pc.indexB = b.islandIndex;
-        pc.jointIndex = jointIndex;
-        pc.mA = a.invMass;
-        pc.mB = b.invMass;
-        pc.iA = a.invInertia;
-        pc.iB = b.invInertia;
-        pc.localRA = joint.localAnchorA - a.localCenter;
-        pc.localRB = joint.localAnchorB - b.localCenter;
-        pc.biasFactor = joint.biasFactor();
-        preparePoint(pc, island.positions.data());
+        RevoluteConstraint c;
+        c.jointIndex = jointIndex;
+        c.biasFactor = joint.biasFactor();
+        c.bodies.indexA = a.islandIndex;
+        c.bodies.indexB = b.islandIndex;
+        c.bodies.mA = a.invMass;
+        c.bodies.mB = b.invMass;
+        c.bodies.iA = a.invInertia;
+        c.bodies.iB = b.invInertia;
+        c.point.localRA = joint.localAnchorA - a.localCenter;
+        c.point.localRB = joint.localAnchorB - b.localCenter;
+        AnglePart& angle = c.angle;
+        angle.referenceAngle = joint.referenceAngle;
+        angle.limitEnabled = joint.enableLimit;
+        angle.lower = joint.lowerAngle;
+        angle.upper = joint.upperAngle;
+        angle.motorEnabled = joint.enableMotor;
+        angle.motorSpeed = joint.motorSpeed;
+        angle.maxMotorImpulse = step.dt * joint.maxMotorTorque;
+        angle.motorImpulse = joint.motorImpulse;
+        angle.lowerImpulse = joint.lowerImpulse;
+        angle.upperImpulse = joint.upperImpulse;
+        preparePoint(c.bodies, c.point, island.positions.data());
+        prepareAngle(c.bodies, angle, island.positions.data(), step.invDt);
         if (step.warmStarting) {
             // Impulses scale with the step: keep the force they stand for when dt changes.
-            pc.impulse = step.dtRatio * joint.impulse;
-            applyPointImpulse(pc, island.velocities.data(), pc.impulse);
+            c.point.impulse = step.dtRatio * joint.impulse;
+            angle.motorImpulse *= step.dtRatio;
+            angle.lowerImpulse *= step.dtRatio;
+            angle.upperImpulse *= step.dtRatio;
+            warmStart(c, island.velocities.data());
+        } else {
+            angle.motorImpulse = 0.0f;
+            angle.lowerImpulse = 0.0f;
+            angle.upperImpulse = 0.0f;
         }
-        island.groups[static_cast<int>(joint.solver)].push_back(pc);
+        island.groups[static_cast<int>(joint.solver)].push_back(c);
     }
     prepareVelocityBias(island.groups, island.positions.data(), step.invDt);
 }
 
 void storeImpulses(const Island& island, SlotPool<RevoluteJoint>& joints, float invDt) {
-    for (const PointConstraints& group : island.groups) {
-        for (const PointConstraint& pc : group) {
-            joints[pc.jointIndex].impulse = pc.impulse;
-            joints[pc.jointIndex].impulseInvDt = invDt;
+    for (const RevoluteConstraints& group : island.groups) {
+        for (const RevoluteConstraint& c : group) {
+            RevoluteJoint& joint = joints[c.jointIndex];
+            joint.impulse = c.point.impulse;
+            joint.motorImpulse = c.angle.motorImpulse;
+            joint.lowerImpulse = c.angle.lowerImpulse;
+            joint.upperImpulse = c.angle.upperImpulse;
+            joint.impulseInvDt = invDt;
         }
     }
 }

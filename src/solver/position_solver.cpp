@@ -8,40 +8,54 @@ namespace pivot {
 
 namespace {
 
-PointConstraints& groupOf(ConstraintGroups& groups, PositionSolver solver) {
+RevoluteConstraints& groupOf(ConstraintGroups& groups, PositionSolver solver) {
     return groups[static_cast<int>(solver)];
 }
 
-// Baumgarte: the joint's error at the start of the step, fed back as a velocity.
-void prepareBaumgarteBias(PointConstraints& group, const SolverPosition* positions, float invDt) {
-    for (PointConstraint& pc : group) {
-        const SolverPosition& A = positions[pc.indexA];
-        const SolverPosition& B = positions[pc.indexB];
-        Vec2 C = B.c + pc.rB - A.c - pc.rA;  // rA, rB were set for this pose by preparePoint
-        pc.bias = (pc.biasFactor * invDt) * C;
+// Baumgarte: the joint's errors at the start of the step, fed back as velocities.
+void prepareBaumgarteBias(RevoluteConstraints& group, const SolverPosition* positions,
+                          float invDt) {
+    for (RevoluteConstraint& c : group) {
+        const SolverPosition& A = positions[c.bodies.indexA];
+        const SolverPosition& B = positions[c.bodies.indexB];
+        Vec2 C = B.c + c.point.rB - A.c - c.point.rA;  // rA, rB were set for this pose
+        c.point.bias = (c.biasFactor * invDt) * C;
+        prepareLimitBaumgarteBias(c.angle, c.biasFactor, invDt);
     }
 }
 
 template <bool withBias>
-void solveVelocityGroup(PointConstraints& group, SolverVelocity* velocities) {
-    for (PointConstraint& pc : group) {
-        pc.impulse += solvePointVelocity(pc, velocities, withBias ? pc.bias : Vec2{});
+void solveVelocityGroup(RevoluteConstraints& group, SolverVelocity* velocities) {
+    for (RevoluteConstraint& c : group) {
+        solveRevoluteVelocity(c, velocities, withBias ? c.point.bias : Vec2{});
     }
 }
 
-// PseudoVelocity: the velocity solve again, on velocities that only move positions.
-void solvePseudoVelocityPass(PointConstraints& group, SolverPosition* positions,
+// PseudoVelocity: the velocity solve again, on velocities that only move positions. The
+// velocity phase's impulses are stored by now, so its accumulators and bias fields are free to
+// hold the pass's own (which start at zero: no warm start).
+void solvePseudoVelocityPass(RevoluteConstraints& group, SolverPosition* positions,
                              std::vector<SolverVelocity>& pseudo, int iterations, float h) {
     if (group.empty()) return;
     std::fill(pseudo.begin(), pseudo.end(), SolverVelocity{});
 
     const float invH = 1.0f / h;
-    for (PointConstraint& pc : group) {
-        Vec2 C = preparePoint(pc, positions);
-        pc.bias = (pc.biasFactor * invH) * C;
+    for (RevoluteConstraint& c : group) {
+        Vec2 C = preparePoint(c.bodies, c.point, positions);
+        c.point.bias = (c.biasFactor * invH) * C;
+        AnglePart& a = c.angle;
+        a.angle = jointAngle(a, positions, c.bodies);
+        a.lowerImpulse = 0.0f;
+        a.upperImpulse = 0.0f;
+        a.lowerTerm = std::max(a.angle - a.lower, 0.0f) * invH;
+        a.upperTerm = std::max(a.upper - a.angle, 0.0f) * invH;
+        prepareLimitBaumgarteBias(a, c.biasFactor, invH);
     }
     for (int it = 0; it < iterations; ++it) {
-        for (const PointConstraint& pc : group) solvePointVelocity(pc, pseudo.data(), pc.bias);
+        for (RevoluteConstraint& c : group) {
+            solveAngleVelocity<false>(c.bodies, c.angle, pseudo.data());
+            solvePointVelocity(c.bodies, c.point, pseudo.data(), c.point.bias);
+        }
     }
     // Bodies no pseudo-velocity joint touches have zero pseudo velocity: adding it is a no-op.
     for (std::size_t i = 0; i < pseudo.size(); ++i) {
@@ -50,16 +64,16 @@ void solvePseudoVelocityPass(PointConstraints& group, SolverPosition* positions,
     }
 }
 
-// NGS: one sweep of position-level solves. Returns the largest error before correction.
+// NGS: one sweep of position-level solves. Returns whether every joint was within slop.
 template <bool rebuildMass>
-float solveNgsSweep(const PointConstraints& group, SolverPosition* positions) {
-    float maxError = 0.0f;
-    for (const PointConstraint& pc : group) {
-        float error = solvePointPosition<rebuildMass>(pc, positions);
-        // Written so a NaN error wins and can never pass for "within slop".
-        if (!(error <= maxError)) maxError = error;
+bool solveNgsSweep(const RevoluteConstraints& group, SolverPosition* positions) {
+    bool withinSlop = true;
+    for (const RevoluteConstraint& c : group) {
+        // Evaluated for every joint: each solve moves the bodies, whatever the others report.
+        bool ok = solveRevolutePosition<rebuildMass>(c, positions);
+        withinSlop = withinSlop && ok;
     }
-    return maxError;
+    return withinSlop;
 }
 
 }  // namespace
@@ -82,8 +96,8 @@ PositionPhaseResult solvePositionPhase(ConstraintGroups& groups, const ContactSo
     solvePseudoVelocityPass(groupOf(groups, PositionSolver::PseudoVelocity), positions, pseudo,
                             iterations, h);
 
-    PointConstraints& modified = groupOf(groups, PositionSolver::ModifiedNGS);
-    PointConstraints& full = groupOf(groups, PositionSolver::FullNGS);
+    RevoluteConstraints& modified = groupOf(groups, PositionSolver::ModifiedNGS);
+    RevoluteConstraints& full = groupOf(groups, PositionSolver::FullNGS);
     PositionPhaseResult result;
     if (modified.empty() && full.empty() && !contacts.hasPositionConstraints()) {
         result.solved = true;
@@ -91,17 +105,16 @@ PositionPhaseResult solvePositionPhase(ConstraintGroups& groups, const ContactSo
     }
 
     // ModifiedNGS keeps the effective mass of the pose the position phase starts from.
-    for (PointConstraint& pc : modified) preparePoint(pc, positions);
+    for (RevoluteConstraint& c : modified) preparePoint(c.bodies, c.point, positions);
 
     while (result.sweeps < iterations) {
         ++result.sweeps;
         // Contacts first: a joint then has the last word on a body both move, and a joint's
         // error is the one users look at (as in Box2D 2.4.1's position loop).
         float minSeparation = contacts.solvePositions(positions);
-        float error = solveNgsSweep<false>(modified, positions);
-        float fullError = solveNgsSweep<true>(full, positions);
-        if (!(fullError <= error)) error = fullError;
-        if (ContactSolver::withinTolerance(minSeparation) && error <= kLinearSlop) {
+        bool modifiedOk = solveNgsSweep<false>(modified, positions);
+        bool fullOk = solveNgsSweep<true>(full, positions);
+        if (ContactSolver::withinTolerance(minSeparation) && modifiedOk && fullOk) {
             result.solved = true;
             break;
         }

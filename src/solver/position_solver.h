@@ -8,18 +8,19 @@
 #include <array>
 #include <vector>
 
-#include "joints/point_constraint.h"
+#include "joints/revolute_constraint.h"
 #include "pivot/joint.h"
 #include "solver/contact_solver.h"
 #include "solver/solver_types.h"
 
 namespace pivot {
 
-using PointConstraints = std::vector<PointConstraint>;
-using ConstraintGroups = std::array<PointConstraints, kPositionSolverCount>;
+using RevoluteConstraints = std::vector<RevoluteConstraint>;
+using ConstraintGroups = std::array<RevoluteConstraints, kPositionSolverCount>;
 
-/// Velocity phase set-up: the velocity bias of the strategies that have one (Baumgarte:
-/// biasFactor / h * C with C measured at the start of the step). Call after preparePoint.
+/// Velocity phase set-up, after every joint is prepared: the velocity bias of the strategies
+/// that have one (Baumgarte: beta / h of the pin's error and of an overshot limit, measured at
+/// the start of the step).
 void prepareVelocityBias(ConstraintGroups& groups, const SolverPosition* positions, float invDt);
 
 /// One velocity iteration over every group, accumulating impulses.
@@ -30,12 +31,13 @@ struct PositionPhaseResult {
     bool solved = false;  ///< every NGS joint and contact ended within tolerance
 };
 
-/// The position phase, after position integration:
+/// The position phase, after position integration and after the velocity phase's impulses were
+/// stored (the PseudoVelocity pass reuses their fields):
 ///   1. PseudoVelocity: one pass of `iterations` sweeps on pseudo velocities (scratch `pseudo`,
 ///      one entry per island body), then positions += h * pseudo velocity;
 ///   2. NGS: up to `iterations` sweeps, each over the NGS contacts, then the ModifiedNGS and
-///      FullNGS joints, stopping once every joint error is within kLinearSlop and no contact
-///      is deeper than ContactSolver::withinTolerance allows.
+///      FullNGS joints, stopping once every joint is within slop (linear and angular) and no
+///      contact is deeper than ContactSolver::withinTolerance allows.
 /// An island with nothing for NGS to check counts as solved.
 PositionPhaseResult solvePositionPhase(ConstraintGroups& groups, const ContactSolver& contacts,
                                        SolverPosition* positions,

@@ -1,0 +1,101 @@
+// The point part of the revolute joint: anchor A pinned to anchor B.
+//
+//   C    = (cB + rB) - (cA + rA)                      position error, m (2 rows)
+//   Cdot = vB + wB x rB - vA - wA x rA                velocity error, m/s
+//   J    = [ -I  -skew(rA)  I  skew(rB) ]             with skew(r) w = w x r = (-w r.y, w r.x)
+//   K    = J M^-1 J^T                                 effective mass (inverse), 2x2
+//        = (mA + mB) I + iA [ rA.y^2  -rA.x rA.y ]  + iB [ rB.y^2  -rB.x rB.y ]
+//                           [ -rA.x rA.y  rA.x^2 ]       [ -rB.x rB.y  rB.x^2 ]
+// where m and i are inverse mass and inverse rotational inertia. An impulse P acts on B and -P
+// on A at the anchor: vB += mB P, wB += iB rB x P, and the opposite on A.
+//
+// The functions here do not know which PositionSolver calls them: the strategies in
+// solver/position_solver.cpp differ only in when they recompute C, r and K.
+#pragma once
+
+#include "joints/constraint_bodies.h"
+#include "pivot/math.h"
+#include "solver/solver_types.h"
+
+namespace pivot {
+
+struct PointPart {
+    Vec2 localRA;  // anchor relative to the centre of mass, in body A's frame
+    Vec2 localRB;
+    Vec2 rA;  // world radius vectors when last prepared
+    Vec2 rB;
+    Mat22 K;       // effective mass matrix when last prepared
+    Vec2 impulse;  // accumulated impulse (velocity phase), N s
+    Vec2 bias;     // velocity bias, m/s (Baumgarte, and the PseudoVelocity pass)
+};
+
+// K is evaluated in two float orders: the same matrix, rounded differently. The velocity phase
+// and the position phase each use the order Box2D 2.4.1's revolute joint uses in that phase, so
+// FullNGS reproduces that reference joint bit for bit wherever the inputs agree (see
+// docs/reference-agreement.md). Any other choice costs nothing but that exactness.
+inline Mat22 pointEffectiveMass(const ConstraintBodies& b, Vec2 rA, Vec2 rB) {
+    Mat22 K;
+    K.cx.x = b.mA + b.mB + rA.y * rA.y * b.iA + rB.y * rB.y * b.iB;
+    K.cy.x = -rA.y * rA.x * b.iA - rB.y * rB.x * b.iB;
+    K.cx.y = K.cy.x;
+    K.cy.y = b.mA + b.mB + rA.x * rA.x * b.iA + rB.x * rB.x * b.iB;
+    return K;
+}
+
+inline Mat22 pointEffectiveMassForPositions(const ConstraintBodies& b, Vec2 rA, Vec2 rB) {
+    Mat22 K;
+    K.cx.x = b.mA + b.mB + b.iA * rA.y * rA.y + b.iB * rB.y * rB.y;
+    K.cx.y = -b.iA * rA.x * rA.y - b.iB * rB.x * rB.y;
+    K.cy.x = K.cx.y;
+    K.cy.y = b.mA + b.mB + b.iA * rA.x * rA.x + b.iB * rB.x * rB.x;
+    return K;
+}
+
+/// Radius vectors and effective mass from the current angles; returns the current error C.
+inline Vec2 preparePoint(const ConstraintBodies& b, PointPart& p, const SolverPosition* positions) {
+    const SolverPosition& A = positions[b.indexA];
+    const SolverPosition& B = positions[b.indexB];
+    p.rA = rotate(Rot(A.a), p.localRA);
+    p.rB = rotate(Rot(B.a), p.localRB);
+    p.K = pointEffectiveMass(b, p.rA, p.rB);
+    return B.c + p.rB - A.c - p.rA;
+}
+
+/// One Gauss-Seidel solve of K P = -(Cdot + bias) on the given velocities. Returns the
+/// impulse applied.
+inline Vec2 solvePointVelocity(const ConstraintBodies& b, const PointPart& p,
+                               SolverVelocity* velocities, Vec2 bias) {
+    SolverVelocity& A = velocities[b.indexA];
+    SolverVelocity& B = velocities[b.indexB];
+    Vec2 cdot = B.v + cross(B.w, p.rB) - A.v - cross(A.w, p.rA);
+    Vec2 P = p.K.solve(-(cdot + bias));
+    A.v -= b.mA * P;
+    A.w -= b.iA * cross(p.rA, P);
+    B.v += b.mB * P;
+    B.w += b.iB * cross(p.rB, P);
+    return P;
+}
+
+/// One nonlinear Gauss-Seidel solve on positions: re-measure C and the radius vectors at the
+/// current pose, then move both bodies by the impulse -beta K^-1 C. With rebuildMass K is
+/// recomputed from the new radius vectors (FullNGS), otherwise p.K is used as frozen
+/// (ModifiedNGS). Returns |C| before the correction.
+template <bool rebuildMass>
+inline float solvePointPosition(const ConstraintBodies& b, const PointPart& p,
+                                SolverPosition* positions, float beta) {
+    SolverPosition& A = positions[b.indexA];
+    SolverPosition& B = positions[b.indexB];
+    Vec2 rA = rotate(Rot(A.a), p.localRA);
+    Vec2 rB = rotate(Rot(B.a), p.localRB);
+    Vec2 C = B.c + rB - A.c - rA;
+    float error = length(C);
+    Mat22 K = rebuildMass ? pointEffectiveMassForPositions(b, rA, rB) : p.K;
+    Vec2 P = -beta * K.solve(C);
+    A.c -= b.mA * P;
+    A.a -= b.iA * cross(rA, P);
+    B.c += b.mB * P;
+    B.a += b.iB * cross(rB, P);
+    return error;
+}
+
+}  // namespace pivot
