@@ -20,10 +20,10 @@ void updateBodyMass(Body& body, const SlotPool<Shape>& shapes) {
     for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
         const Shape& shape = shapes[s];
         if (shape.density == 0.0f) continue;
-        MassData md = computeShapeMass(shape);
-        body.mass += md.mass;
-        weightedCenter += md.mass * md.center;
-        inertiaAboutOrigin += md.rotationalInertia + md.mass * dot(md.center, md.center);
+        OriginMass m = shapeMassAboutOrigin(shape);
+        body.mass += m.mass;
+        weightedCenter += m.mass * m.center;
+        inertiaAboutOrigin += m.inertia;
     }
 
     if (body.mass > 0.0f) {

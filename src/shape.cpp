@@ -113,45 +113,85 @@ std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out) {
     return {};
 }
 
-MassData computeMass(const Circle& circle, float density) {
+// Mass properties are evaluated in the same float order as Box2D 2.4.1, so that bodies built
+// from the same shapes get bit-identical masses, centres and inertias in both engines (the
+// reference comparison of docs/reference-agreement.md depends on it). Internally a shape's
+// second moment is kept about its frame's origin, which is what a body sums.
+OriginMass circleMassAboutOrigin(const Circle& circle, float density) {
+    OriginMass m;
+    m.mass = density * kPi * circle.radius * circle.radius;
+    m.center = circle.center;
+    m.inertia = m.mass * (0.5f * circle.radius * circle.radius + dot(circle.center, circle.center));
+    m.centroidInertia = m.mass * (0.5f * circle.radius * circle.radius);
+    return m;
+}
+
+OriginMass polygonMassAboutOrigin(const Vec2* vertices, int count, float density) {
+    // A fan of triangles (apex, v[i], v[i+1]) from the first vertex, which keeps coordinates
+    // and so round-off small. For edge vectors e1, e2 from the apex, a triangle has area
+    // D / 2 with D = cross(e1, e2), centroid (e1 + e2) / 3, and second moment about the apex
+    // D / 12 * (e1.x^2 + e1.x e2.x + e2.x^2 + the same in y). The fan closes back on the apex,
+    // so its first and last triangles are empty; they are summed anyway, as the reference does.
+    const Vec2 apex = vertices[0];
+    const float third = 1.0f / 3.0f;
+    Vec2 firstMoment;
+    float area = 0.0f;
+    float secondMoment = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        Vec2 e1 = vertices[i] - apex;
+        Vec2 e2 = (i + 1 < count ? vertices[i + 1] : vertices[0]) - apex;
+        float D = cross(e1, e2);
+        float triangleArea = 0.5f * D;
+        area += triangleArea;
+        firstMoment += triangleArea * third * (e1 + e2);
+        float xx = e1.x * e1.x + e2.x * e1.x + e2.x * e2.x;
+        float yy = e1.y * e1.y + e2.y * e1.y + e2.y * e2.y;
+        secondMoment += (0.25f * third * D) * (xx + yy);
+    }
+    OriginMass m;
+    if (area == 0.0f) {
+        m.center = apex;  // degenerate: no area, no mass
+        return m;
+    }
+    m.mass = density * area;
+    Vec2 centroidFromApex = firstMoment;
+    centroidFromApex *= 1.0f / area;
+    m.center = centroidFromApex + apex;
+    // Parallel-axis theorem twice: from the apex to the centroid, then to the frame's origin.
+    m.inertia = density * secondMoment;
+    m.inertia += m.mass * (dot(m.center, m.center) - dot(centroidFromApex, centroidFromApex));
+    m.centroidInertia = density * secondMoment - m.mass * dot(centroidFromApex, centroidFromApex);
+    return m;
+}
+
+OriginMass shapeMassAboutOrigin(const Shape& shape) {
+    if (shape.type == ShapeType::Circle) return circleMassAboutOrigin(shape.circle, shape.density);
+    return polygonMassAboutOrigin(shape.polygon.vertices.data(), shape.polygon.count,
+                                  shape.density);
+}
+
+namespace {
+MassData aboutCentroid(const OriginMass& m) {
     MassData md;
-    float rr = circle.radius * circle.radius;
-    md.mass = density * kPi * rr;
-    md.center = circle.center;
-    md.rotationalInertia = md.mass * 0.5f * rr;
+    md.mass = m.mass;
+    md.center = m.center;
+    md.rotationalInertia = m.centroidInertia;
     return md;
+}
+}  // namespace
+
+MassData computeMass(const Circle& circle, float density) {
+    return aboutCentroid(circleMassAboutOrigin(circle, density));
 }
 
 MassData computeMass(const Polygon& polygon, float density) {
-    // Split into triangles fanning from vertex 0 (small numbers, small round-off). For a
-    // triangle (0, e1, e2) of area A = cross(e1, e2) / 2 the centroid is (e1 + e2) / 3 and the
-    // second moment about vertex 0 is A/6 * (|e1|^2 + e1.e2 + |e2|^2).
-    const Vec2 origin = polygon.vertices[0];
-    float area = 0.0f;
-    Vec2 firstMoment;
-    float secondMoment = 0.0f;  // about origin, per unit density
-    for (int i = 1; i + 1 < polygon.count; ++i) {
-        Vec2 e1 = polygon.vertices[i] - origin;
-        Vec2 e2 = polygon.vertices[i + 1] - origin;
-        float triangleArea = 0.5f * cross(e1, e2);
-        area += triangleArea;
-        firstMoment += (triangleArea / 3.0f) * (e1 + e2);
-        secondMoment += (triangleArea / 6.0f) * (dot(e1, e1) + dot(e1, e2) + dot(e2, e2));
-    }
-    MassData md;
-    if (area == 0.0f) {
-        md.center = origin;  // degenerate: no area, no mass
-        return md;
-    }
-    Vec2 centroidFromOrigin = (1.0f / area) * firstMoment;
-    md.center = origin + centroidFromOrigin;
-    // Parallel-axis theorem: move the second moment from vertex 0 to the centroid. A clockwise
-    // polygon gives area and moments of the opposite sign; the ratio above is unaffected.
-    float sign = area > 0.0f ? 1.0f : -1.0f;
-    md.mass = sign * density * area;
-    md.rotationalInertia =
-        sign * density * (secondMoment - area * dot(centroidFromOrigin, centroidFromOrigin));
-    return md;
+    // Integrate counter-clockwise whatever the winding, so area and mass come out positive.
+    std::array<Vec2, kMaxPolygonVertices> ccw{};
+    const int n = polygon.count;
+    bool clockwise = signedArea(polygon) < 0.0f;
+    for (int i = 0; i < n; ++i)
+        ccw[i] = clockwise ? polygon.vertices[n - 1 - i] : polygon.vertices[i];
+    return aboutCentroid(polygonMassAboutOrigin(ccw.data(), n, density));
 }
 
 AABB computeShapeBox(const Shape& shape, const Transform& xf) {
@@ -169,14 +209,6 @@ AABB computeShapeBox(const Shape& shape, const Transform& xf) {
     }
     Vec2 r{kPolygonRadius, kPolygonRadius};
     return {lower - r, upper + r};
-}
-
-MassData computeShapeMass(const Shape& shape) {
-    if (shape.type == ShapeType::Circle) return computeMass(shape.circle, shape.density);
-    Polygon p;
-    p.count = shape.polygon.count;
-    for (int i = 0; i < p.count; ++i) p.vertices[i] = shape.polygon.vertices[i];
-    return computeMass(p, shape.density);
 }
 
 }  // namespace pivot

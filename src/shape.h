@@ -40,7 +40,16 @@ struct Shape {
 /// polygon in canonical form in `out`.
 std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out);
 
-MassData computeShapeMass(const Shape& shape);
+/// A shape's mass, centroid, and second moment about its frame's origin (what a body sums)
+/// and about its centroid (what computeMass reports, computed directly rather than by
+/// subtracting two large numbers).
+struct OriginMass {
+    float mass = 0.0f;
+    Vec2 center;
+    float inertia = 0.0f;
+    float centroidInertia = 0.0f;
+};
+OriginMass shapeMassAboutOrigin(const Shape& shape);
 
 /// The radius a shape collides with: a circle's own, or the polygon skin kPolygonRadius.
 inline float collisionRadius(const Shape& shape) {

@@ -63,11 +63,17 @@ const char* contactCorrectionName(ContactCorrection correction) {
 std::string usage() {
     std::ostringstream out;
     out << "usage: pivot-testbed [options]\n"
+           "       pivot-testbed reference [--csv FILE]\n"
            "\n"
            "Runs pivot2d's test scenes headless and prints, for each run, how far the joints\n"
            "came apart, the energy drift, whether the run blew up, and the cost per step.\n"
            "With no options: every scene with every position solver and both contact\n"
            "corrections, in one table.\n"
+           "\n"
+           "reference: builds each reference scene in pivot2d and in Box2D 2.4.1 and prints\n"
+           "how closely FullNGS follows Box2D's revolute joint, then every position solver\n"
+           "beside Box2D (continuous collision off, and on) over 600 steps (needs a build\n"
+           "with Box2D: Debian's libbox2d-dev).\n"
            "\n"
            "options:\n"
            "  --scene NAME      run only this scene: "
@@ -102,7 +108,12 @@ std::string usage() {
 
 CliOptions parseCli(const std::vector<std::string>& args) {
     CliOptions options;
-    for (std::size_t i = 0; i < args.size(); ++i) {
+    std::size_t first = 0;
+    if (!args.empty() && args[0] == "reference") {
+        options.command = Command::Reference;
+        first = 1;
+    }
+    for (std::size_t i = first; i < args.size(); ++i) {
         const std::string& arg = args[i];
         auto value = [&]() -> const std::string& {
             if (i + 1 >= args.size()) throw CliError(arg + " needs a value");

@@ -10,7 +10,10 @@
 
 namespace pivot::testbed {
 
+enum class Command { Table, Reference };
+
 struct CliOptions {
+    Command command = Command::Table;
     std::optional<std::string> scene;          ///< unset: every scene
     std::optional<PositionSolver> solver;      ///< unset: every solver
     std::optional<float> bias;                 ///< unset: each solver's default

@@ -6,6 +6,9 @@
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
 #include "table.h"
+#if PIVOT_TESTBED_HAS_BOX2D
+#include "reference_command.h"
+#endif
 
 using namespace pivot;
 
@@ -55,6 +58,23 @@ int main(int argc, char** argv) {
         if (options.help) {
             std::cout << testbed::usage();
             return 0;
+        }
+        if (options.command == testbed::Command::Reference) {
+#if PIVOT_TESTBED_HAS_BOX2D
+            std::ofstream csv;
+            if (options.csvPath) {
+                csv.open(*options.csvPath);
+                if (!csv) {
+                    std::cerr << "pivot-testbed: cannot write " << *options.csvPath << "\n";
+                    return 1;
+                }
+            }
+            return testbed::runReferenceCommand(std::cout, options.csvPath ? &csv : nullptr);
+#else
+            std::cerr << "pivot-testbed: this build has no Box2D 2.4.1; install Debian's "
+                         "libbox2d-dev and build again to use 'reference'\n";
+            return 1;
+#endif
         }
         if (options.list) {
             for (const scenes::SceneInfo& info : scenes::allScenes()) {

@@ -8,10 +8,13 @@
 namespace pivot::scenes {
 
 void buildPendulum(Scene& scene, const SceneOptions& options) {
+    buildSpinningPendulum(scene, options, 100.0f);
+}
+
+void buildSpinningPendulum(Scene& scene, const SceneOptions& options, float spin) {
     World& world = *scene.world;
     const Vec2 pivot{0.0f, 10.0f};
     const float stickLength = 5.0f;
-    const float spin = 100.0f;  // rad/s about the pivot
 
     BodyId ground = world.createBody(BodyDef{});
 
@@ -27,6 +30,48 @@ void buildPendulum(Scene& scene, const SceneOptions& options) {
 
     scene.bodies.push_back(ball);
     scene.joints.push_back(world.createJoint(options.jointAt(ground, ball, pivot)));
+}
+
+}  // namespace pivot::scenes
+
+// The pendulum with an angle limit: the ball starts level with the pivot, at rest, and swings
+// down into the joint's lower limit at -60 degrees, where it stops and rests against it.
+namespace pivot::scenes {
+
+void buildLimitedPendulum(Scene& scene, const SceneOptions& options) {
+    World& world = *scene.world;
+    const Vec2 pivot{0.0f, 10.0f};
+    BodyId ground = world.createBody(BodyDef{});
+    BodyDef ballDef;
+    ballDef.type = BodyType::Dynamic;
+    ballDef.position = pivot + Vec2{5.0f, 0.0f};
+    BodyId ball = world.createBody(ballDef);
+    world.createShape(ball, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.5f});
+    RevoluteJointDef jd = options.jointAt(ground, ball, pivot);
+    jd.limit = {true, -kPi / 3.0f, kPi / 3.0f};
+    scene.bodies.push_back(ball);
+    scene.joints.push_back(world.createJoint(jd));
+}
+
+// Two 1 m balls on massless 2.5 m sticks, one hanging from the other, released level from rest:
+// the classic chaotic double pendulum.
+void buildDoublePendulum(Scene& scene, const SceneOptions& options) {
+    World& world = *scene.world;
+    const Vec2 pivot{0.0f, 10.0f};
+    BodyId ground = world.createBody(BodyDef{});
+    BodyId previous = ground;
+    Vec2 anchor = pivot;
+    for (int i = 1; i <= 2; ++i) {
+        BodyDef def;
+        def.type = BodyType::Dynamic;
+        def.position = pivot + Vec2{2.5f * static_cast<float>(i), 0.0f};
+        BodyId ball = world.createBody(def);
+        world.createShape(ball, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.5f});
+        scene.joints.push_back(world.createJoint(options.jointAt(previous, ball, anchor)));
+        scene.bodies.push_back(ball);
+        previous = ball;
+        anchor = def.position;
+    }
 }
 
 }  // namespace pivot::scenes

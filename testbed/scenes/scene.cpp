@@ -13,6 +13,11 @@ const std::vector<SceneInfo>& allScenes() {
     static const std::vector<SceneInfo> scenes = {
         {"pendulum", "1 m ball on a massless 5 m stick, spun at 100 rad/s about the pivot",
          buildPendulum},
+        {"pendulum_limit", "the pendulum released level, swinging into a -60 degree limit",
+         buildLimitedPendulum},
+        {"double_pendulum", "two 1 m balls on 2.5 m sticks, released level (chaotic)",
+         buildDoublePendulum},
+        {"motor_wheel", "a motor turning an eccentric wheel against gravity", buildMotorWheel},
         {"bridge", "30 planks 1.0 x 0.25 m jointed end to end, both ends pinned", buildBridge},
         {"chain", "30 links 1 m apart pinned at one end, released horizontally", buildChain},
         {"bridge_heavy", "the bridge; after 2 s a box of 4x its mass falls on its middle from 5 m",

@@ -54,6 +54,11 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options);
 
 // The individual scenes (defined in their own files).
 void buildPendulum(Scene& scene, const SceneOptions& options);
+/// The pendulum spun at `spin` rad/s about its pivot (buildPendulum uses 100).
+void buildSpinningPendulum(Scene& scene, const SceneOptions& options, float spin);
+void buildLimitedPendulum(Scene& scene, const SceneOptions& options);
+void buildDoublePendulum(Scene& scene, const SceneOptions& options);
+void buildMotorWheel(Scene& scene, const SceneOptions& options);
 void buildBridge(Scene& scene, const SceneOptions& options);
 void buildChain(Scene& scene, const SceneOptions& options);
 void buildBridgeHeavy(Scene& scene, const SceneOptions& options);

@@ -1,0 +1,186 @@
+#include "reference/box2d_scenes.h"
+
+namespace pivot::reference {
+
+namespace {
+
+Box2dScene emptyScene(bool continuous) {
+    Box2dScene scene;
+    scene.world = std::make_unique<b2World>(b2Vec2(0.0f, -10.0f));
+    scene.world->SetContinuousPhysics(continuous);
+    return scene;
+}
+
+b2Body* staticBody(b2World& world) {
+    b2BodyDef def;
+    return world.CreateBody(&def);
+}
+
+// As testbed/scenes/ground.h: a slab whose top face is y = 0.
+b2Body* ground(b2World& world) {
+    b2Body* body = staticBody(world);
+    b2PolygonShape slab;
+    slab.SetAsBox(40.0f, 0.5f, b2Vec2(0.0f, -0.5f), 0.0f);
+    body->CreateFixture(&slab, 0.0f);
+    return body;
+}
+
+b2Body* ball(b2World& world, b2Vec2 position, float radius, float density) {
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position = position;
+    b2Body* body = world.CreateBody(&def);
+    b2CircleShape circle;
+    circle.m_radius = radius;
+    body->CreateFixture(&circle, density);
+    return body;
+}
+
+b2RevoluteJoint* pin(Box2dScene& scene, b2Body* a, b2Body* b, b2Vec2 anchor) {
+    b2RevoluteJointDef jd;
+    jd.Initialize(a, b, anchor);
+    auto* joint = static_cast<b2RevoluteJoint*>(scene.world->CreateJoint(&jd));
+    scene.joints.push_back(joint);
+    return joint;
+}
+
+}  // namespace
+
+Box2dScene box2dPendulum(float spin, bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    const b2Vec2 pivot(0.0f, 10.0f);
+    b2Body* anchor = staticBody(*scene.world);
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position = pivot + b2Vec2(0.0f, -5.0f);
+    def.angularVelocity = spin;
+    def.linearVelocity = b2Cross(spin, def.position - pivot);
+    b2Body* body = scene.world->CreateBody(&def);
+    b2CircleShape circle;
+    circle.m_radius = 0.5f;
+    body->CreateFixture(&circle, 1.0f);
+    pin(scene, anchor, body, pivot);
+    scene.bodies.push_back(body);
+    return scene;
+}
+
+Box2dScene box2dLimitedPendulum(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    const b2Vec2 pivot(0.0f, 10.0f);
+    b2Body* anchor = staticBody(*scene.world);
+    b2Body* body = ball(*scene.world, pivot + b2Vec2(5.0f, 0.0f), 0.5f, 1.0f);
+    b2RevoluteJointDef jd;
+    jd.Initialize(anchor, body, pivot);
+    jd.enableLimit = true;
+    jd.lowerAngle = -b2_pi / 3.0f;
+    jd.upperAngle = b2_pi / 3.0f;
+    scene.joints.push_back(scene.world->CreateJoint(&jd));
+    scene.bodies.push_back(body);
+    return scene;
+}
+
+Box2dScene box2dDoublePendulum(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    const b2Vec2 pivot(0.0f, 10.0f);
+    b2Body* previous = staticBody(*scene.world);
+    b2Vec2 anchor = pivot;
+    for (int i = 1; i <= 2; ++i) {
+        b2Vec2 position = pivot + b2Vec2(2.5f * static_cast<float>(i), 0.0f);
+        b2Body* body = ball(*scene.world, position, 0.5f, 1.0f);
+        pin(scene, previous, body, anchor);
+        scene.bodies.push_back(body);
+        previous = body;
+        anchor = position;
+    }
+    return scene;
+}
+
+Box2dScene box2dMotorWheel(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    const b2Vec2 center(0.0f, 5.0f);
+    b2Body* anchor = staticBody(*scene.world);
+    b2Body* wheel = ball(*scene.world, center, 1.0f, 1.0f);
+    b2CircleShape weight;
+    weight.m_radius = 0.2f;
+    weight.m_p.Set(0.7f, 0.0f);
+    wheel->CreateFixture(&weight, 20.0f);
+    b2RevoluteJointDef jd;
+    jd.Initialize(anchor, wheel, center);
+    jd.enableMotor = true;
+    jd.motorSpeed = 2.0f;
+    jd.maxMotorTorque = 30.0f;
+    scene.joints.push_back(scene.world->CreateJoint(&jd));
+    scene.bodies.push_back(wheel);
+    return scene;
+}
+
+Box2dScene box2dBridge(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    b2Body* groundBody = ground(*scene.world);
+    b2PolygonShape plank;
+    plank.SetAsBox(0.5f, 0.125f);
+    b2FixtureDef fixture;
+    fixture.shape = &plank;
+    fixture.density = 20.0f;
+    fixture.friction = 0.2f;
+    b2Body* previous = groundBody;
+    for (int i = 0; i < 30; ++i) {
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(-14.5f + 1.0f * static_cast<float>(i), 5.0f);
+        b2Body* body = scene.world->CreateBody(&def);
+        body->CreateFixture(&fixture);
+        pin(scene, previous, body, b2Vec2(-15.0f + 1.0f * static_cast<float>(i), 5.0f));
+        scene.bodies.push_back(body);
+        previous = body;
+    }
+    pin(scene, previous, groundBody, b2Vec2(-15.0f + 30.0f, 5.0f));
+    return scene;
+}
+
+Box2dScene box2dBridgeHeavy(bool continuous) {
+    Box2dScene scene = box2dBridge(continuous);
+    scene.beforeStep = [](Box2dScene& s, int step) {
+        if (step != 120) return;  // 2 s at 60 Hz
+        float bridgeMass = 0.0f;
+        for (b2Body* plank : s.bodies) bridgeMass += plank->GetMass();
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(0.0f, 10.0f);
+        b2Body* box = s.world->CreateBody(&def);
+        b2PolygonShape shape;
+        shape.SetAsBox(0.5f, 0.5f);
+        b2FixtureDef fixture;
+        fixture.shape = &shape;
+        fixture.density = 4.0f * bridgeMass;
+        fixture.friction = 0.6f;
+        box->CreateFixture(&fixture);
+        s.bodies.push_back(box);
+    };
+    return scene;
+}
+
+Box2dScene box2dChain(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    b2Body* previous = ground(*scene.world);
+    b2PolygonShape box;
+    box.SetAsBox(0.6f, 0.125f);
+    b2FixtureDef fixture;
+    fixture.shape = &box;
+    fixture.density = 20.0f;
+    fixture.friction = 0.2f;
+    const float y = 25.0f;
+    for (int i = 0; i < 30; ++i) {
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(0.5f + static_cast<float>(i), y);
+        b2Body* link = scene.world->CreateBody(&def);
+        link->CreateFixture(&fixture);
+        pin(scene, previous, link, b2Vec2(static_cast<float>(i), y));
+        scene.bodies.push_back(link);
+        previous = link;
+    }
+    return scene;
+}
+
+}  // namespace pivot::reference

@@ -1,0 +1,148 @@
+#include "reference/reference_cases.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace pivot::reference {
+
+const std::vector<ReferenceCase>& referenceCases() {
+    using scenes::Scene;
+    using scenes::SceneOptions;
+    static const std::vector<ReferenceCase> cases = {
+        {"pendulum_1", false,
+         [](Scene& s, const SceneOptions& o) { scenes::buildSpinningPendulum(s, o, 1.0f); },
+         [](bool continuous) { return box2dPendulum(1.0f, continuous); }},
+        {"pendulum_10", false,
+         [](Scene& s, const SceneOptions& o) { scenes::buildSpinningPendulum(s, o, 10.0f); },
+         [](bool continuous) { return box2dPendulum(10.0f, continuous); }},
+        {"pendulum_100", false,
+         [](Scene& s, const SceneOptions& o) { scenes::buildSpinningPendulum(s, o, 100.0f); },
+         [](bool continuous) { return box2dPendulum(100.0f, continuous); }},
+        {"pendulum_limit", false, scenes::buildLimitedPendulum, box2dLimitedPendulum},
+        {"motor_wheel", false, scenes::buildMotorWheel, box2dMotorWheel},
+        {"double_pendulum", true, scenes::buildDoublePendulum, box2dDoublePendulum},
+        {"bridge", true, scenes::buildBridge, box2dBridge},
+        {"chain", true, scenes::buildChain, box2dChain},
+        {"bridge_heavy", true, scenes::buildBridgeHeavy, box2dBridgeHeavy},
+    };
+    return cases;
+}
+
+int comparedSteps(const ReferenceCase& c) {
+    return c.chaotic ? 30 : 600;
+}
+
+void PrintTo(const ReferenceCase& c, std::ostream* out) {
+    *out << c.name;
+}
+
+TrajectoryDifference compareTrajectories(const ReferenceCase& c,
+                                         const scenes::SceneOptions& options, int steps) {
+    const float dt = 1.0f / 60.0f;
+    scenes::Scene ours = buildPivotCase(c, options);
+    Box2dScene theirs = c.buildBox2d(false);
+    TrajectoryDifference d;
+    for (int s = 0; s < steps; ++s) {
+        if (ours.beforeStep) ours.beforeStep(ours, s);
+        if (theirs.beforeStep) theirs.beforeStep(theirs, s);
+        ours.world->step(dt, 8, 3);
+        theirs.world->Step(dt, 8, 3);
+        ++d.steps;
+        if (ours.bodies.size() != theirs.bodies.size()) {
+            d.bodyCountsMatch = false;
+            break;
+        }
+        for (std::size_t i = 0; i < ours.bodies.size(); ++i) {
+            Vec2 p = ours.world->bodyWorldCenter(ours.bodies[i]);
+            b2Vec2 q = theirs.bodies[i]->GetWorldCenter();
+            d.position = std::max(d.position, std::hypot(double(p.x) - q.x, double(p.y) - q.y));
+            d.angle = std::max(d.angle, std::fabs(double(ours.world->bodyAngle(ours.bodies[i])) -
+                                                  theirs.bodies[i]->GetAngle()));
+        }
+    }
+    return d;
+}
+
+scenes::Scene buildPivotCase(const ReferenceCase& c, const scenes::SceneOptions& options) {
+    scenes::Scene scene;
+    scene.name = c.name;
+    WorldDef def;
+    def.gravity = options.gravity;
+    def.defaultPositionSolver = options.solver;
+    def.contactCorrection = options.contactCorrection;
+    scene.world = std::make_unique<World>(def);
+    c.buildPivot(scene, options);
+    return scene;
+}
+
+double box2dEnergy(const Box2dScene& scene) {
+    const b2Vec2 g = scene.world->GetGravity();
+    double energy = 0.0;
+    for (const b2Body* body : scene.bodies) {
+        double m = body->GetMass();
+        // GetInertia is about the body origin; the energy needs it about the centre of mass.
+        double inertia =
+            body->GetInertia() - m * b2Dot(body->GetLocalCenter(), body->GetLocalCenter());
+        b2Vec2 v = body->GetLinearVelocity();
+        double w = body->GetAngularVelocity();
+        b2Vec2 c = body->GetWorldCenter();
+        energy += 0.5 * m * (double(v.x) * v.x + double(v.y) * v.y) + 0.5 * inertia * w * w -
+                  m * (double(g.x) * c.x + double(g.y) * c.y);
+    }
+    return energy;
+}
+
+scenes::RunMetrics runBox2d(Box2dScene& scene, const scenes::RunSettings& settings,
+                            const std::function<void(int)>& afterStep) {
+    using Clock = std::chrono::steady_clock;
+    const float dt = 1.0f / settings.hz;
+    scenes::RunMetrics m;
+    m.energyStart = box2dEnergy(scene);
+    double sumSquares = 0.0;
+    long samples = 0;
+    Clock::duration stepTime{};
+    for (int i = 0; i < settings.steps; ++i) {
+        if (scene.beforeStep) {
+            double before = box2dEnergy(scene);
+            scene.beforeStep(scene, i);
+            m.energyStart += box2dEnergy(scene) - before;
+        }
+        Clock::time_point start = Clock::now();
+        scene.world->Step(dt, settings.velocityIterations, settings.positionIterations);
+        stepTime += Clock::now() - start;
+        ++m.steps;
+
+        double worst = 0.0;
+        for (const b2Joint* joint : scene.joints) {
+            double s = (joint->GetAnchorB() - joint->GetAnchorA()).Length();
+            if (!(s <= worst)) worst = s;
+            sumSquares += s * s;
+            ++samples;
+        }
+        if (!(worst <= m.maxSeparation)) m.maxSeparation = worst;
+        m.finalSeparation = worst;
+        if (afterStep) afterStep(i);
+        bool blownUp = false;
+        for (const b2Body* body : scene.bodies) {
+            b2Vec2 p = body->GetPosition();
+            b2Vec2 v = body->GetLinearVelocity();
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(v.x) ||
+                !std::isfinite(v.y) || v.Length() > scenes::kRunawaySpeed) {
+                blownUp = true;
+            }
+        }
+        if (blownUp) {
+            m.blewUp = true;
+            break;
+        }
+    }
+    m.energyEnd = box2dEnergy(scene);
+    m.rmsSeparation = samples > 0 ? std::sqrt(sumSquares / double(samples)) : 0.0;
+    m.microsecondsPerStep =
+        m.steps > 0 ? std::chrono::duration<double, std::micro>(stepTime).count() / double(m.steps)
+                    : 0.0;
+    return m;
+}
+
+}  // namespace pivot::reference
