@@ -271,6 +271,29 @@ TEST(Validation, JointDefFields) {
                    [&] { f.world.setJointPositionSolver(f.joint, static_cast<PositionSolver>(4)); },
                    {"solver", "4"});
     expectRejected(f.world, [&] { f.world.setJointBiasFactor(f.joint, -0.1f); }, {"biasFactor"});
+    bad = def;
+    bad.limit = {true, 0.5f, -0.5f};
+    expectRejected(f.world, [&] { f.world.createJoint(bad); },
+                   {"def.limit.lower", "<=", "def.limit.upper", "0.5", "-0.5"});
+    bad = def;
+    bad.limit = {true, kNaN, 1.0f};
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.limit.lower", "nan"});
+    bad = def;
+    bad.motor = {true, kInf, 1.0f};
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.motor.speed", "inf"});
+    bad = def;
+    bad.motor = {true, 1.0f, -3.0f};
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.motor.maxTorque", ">= 0"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setJointLimit(f.joint, {true, 1.0f, 0.0f});
+                   },
+                   {"setJointLimit", "limit.lower"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setJointMotor(f.joint, {true, 0.0f, kNaN});
+                   },
+                   {"setJointMotor", "motor.maxTorque"});
 }
 
 TEST(Validation, StaleIds) {
