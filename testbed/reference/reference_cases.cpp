@@ -53,13 +53,17 @@ TrajectoryDifference compareTrajectories(const ReferenceCase& c,
             d.bodyCountsMatch = false;
             break;
         }
+        bool identical = true;
         for (std::size_t i = 0; i < ours.bodies.size(); ++i) {
             Vec2 p = ours.world->bodyWorldCenter(ours.bodies[i]);
             b2Vec2 q = theirs.bodies[i]->GetWorldCenter();
+            float a = ours.world->bodyAngle(ours.bodies[i]);
+            float b = theirs.bodies[i]->GetAngle();
+            identical = identical && p.x == q.x && p.y == q.y && a == b;
             d.position = std::max(d.position, std::hypot(double(p.x) - q.x, double(p.y) - q.y));
-            d.angle = std::max(d.angle, std::fabs(double(ours.world->bodyAngle(ours.bodies[i])) -
-                                                  theirs.bodies[i]->GetAngle()));
+            d.angle = std::max(d.angle, std::fabs(double(a) - b));
         }
+        if (identical && d.identicalSteps == s) ++d.identicalSteps;
     }
     return d;
 }
