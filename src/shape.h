@@ -10,8 +10,6 @@
 
 namespace pivot {
 
-enum class ShapeType : std::uint8_t { Circle, Polygon };
-
 /// A checked convex polygon: counter-clockwise, with outward unit edge normals
 /// (normals[i] belongs to the edge from vertices[i] to vertices[i + 1]).
 struct ConvexPolygon {

@@ -232,4 +232,20 @@ void World::applyAngularImpulse(BodyId id, float impulse) {
     wakeUp(b);
 }
 
+std::vector<BodyId> World::bodyIds() const {
+    std::vector<BodyId> ids;
+    impl_->bodies.forEach(
+        [&](std::int32_t index, const Body&) { ids.push_back(impl_->bodyId(index)); });
+    return ids;
+}
+
+std::vector<ShapeId> World::bodyShapes(BodyId id) const {
+    const Body& body = impl_->bodies[impl_->bodyIndex("World::bodyShapes", id)];
+    std::vector<ShapeId> ids;
+    for (std::int32_t s = body.shapeList; s != -1; s = impl_->shapes[s].next) {
+        ids.push_back(impl_->shapeId(s));
+    }
+    return ids;
+}
+
 }  // namespace pivot

@@ -178,4 +178,11 @@ void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     wakeUp(impl_->bodies[j.bodyB()]);
 }
 
+std::vector<JointId> World::jointIds() const {
+    std::vector<JointId> ids;
+    impl_->joints.forEach(
+        [&](std::int32_t index, const RevoluteJoint&) { ids.push_back(impl_->jointId(index)); });
+    return ids;
+}
+
 }  // namespace pivot

@@ -107,6 +107,27 @@ BodyId World::shapeBody(ShapeId id) const {
     return impl_->bodyId(impl_->shapes[impl_->shapeIndex("World::shapeBody", id)].body);
 }
 
+ShapeType World::shapeType(ShapeId id) const {
+    return impl_->shapes[impl_->shapeIndex("World::shapeType", id)].type;
+}
+
+Circle World::shapeCircle(ShapeId id) const {
+    const char* call = "World::shapeCircle";
+    const Shape& shape = impl_->shapes[impl_->shapeIndex(call, id)];
+    if (shape.type != ShapeType::Circle) fail(call, "shape is a polygon, not a circle");
+    return shape.circle;
+}
+
+Polygon World::shapePolygon(ShapeId id) const {
+    const char* call = "World::shapePolygon";
+    const Shape& shape = impl_->shapes[impl_->shapeIndex(call, id)];
+    if (shape.type != ShapeType::Polygon) fail(call, "shape is a circle, not a polygon");
+    Polygon polygon;
+    polygon.count = shape.polygon.count;
+    for (int i = 0; i < polygon.count; ++i) polygon.vertices[i] = shape.polygon.vertices[i];
+    return polygon;
+}
+
 Filter World::shapeFilter(ShapeId id) const {
     return impl_->shapes[impl_->shapeIndex("World::shapeFilter", id)].filter;
 }

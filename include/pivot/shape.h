@@ -12,6 +12,8 @@
 
 namespace pivot {
 
+enum class ShapeType : std::uint8_t { Circle, Polygon };
+
 /// A solid disc.
 struct Circle {
     Vec2 center;          ///< m, in the body frame

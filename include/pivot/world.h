@@ -114,6 +114,10 @@ public:
     void destroyBody(BodyId id);
     bool isValid(BodyId id) const;
     int bodyCount() const;
+    /// Every body, in creation-slot order.
+    std::vector<BodyId> bodyIds() const;
+    /// The body's shapes, newest first.
+    std::vector<ShapeId> bodyShapes(BodyId id) const;
 
     BodyType bodyType(BodyId id) const;
     Vec2 bodyPosition(BodyId id) const;  ///< m, world position of the body origin
@@ -158,6 +162,11 @@ public:
     int shapeCount() const;
     BodyId shapeBody(ShapeId id) const;
     Filter shapeFilter(ShapeId id) const;
+    ShapeType shapeType(ShapeId id) const;
+    /// The shape's geometry in its body's frame. Asking a polygon for its circle (or the other
+    /// way round) throws pivot::Error. Polygons come back counter-clockwise.
+    Circle shapeCircle(ShapeId id) const;
+    Polygon shapePolygon(ShapeId id) const;
     /// Takes effect at the next step: existing contacts are re-filtered, new pairs found.
     void setShapeFilter(ShapeId id, const Filter& filter);
 
@@ -173,6 +182,8 @@ public:
     void destroyJoint(JointId id);
     bool isValid(JointId id) const;
     int jointCount() const;
+    /// Every joint, in creation-slot order.
+    std::vector<JointId> jointIds() const;
 
     BodyId jointBodyA(JointId id) const;
     BodyId jointBodyB(JointId id) const;

@@ -123,3 +123,29 @@ TEST(Mass, FixedRotationHasNoRotationalInertia) {
     EXPECT_EQ(world.bodyRotationalInertia(body), 0.0f);
     EXPECT_NEAR(world.bodyMass(body), 4.0f, 1e-6f);
 }
+
+TEST(Geometry, ShapesReadBackInTheirBodyFrame) {
+    World world;
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    BodyId body = world.createBody(def);
+    ShapeId disc = world.createShape(body, ShapeDef{}, Circle{{1.0f, 2.0f}, 0.25f});
+    // Given clockwise, stored and returned counter-clockwise.
+    ShapeId tri =
+        world.createShape(body, ShapeDef{}, Polygon::fromPoints({{0, 0}, {0, 1}, {1, 0}}));
+    EXPECT_EQ(world.shapeType(disc), ShapeType::Circle);
+    EXPECT_EQ(world.shapeCircle(disc).radius, 0.25f);
+    EXPECT_EQ(world.shapeCircle(disc).center, (Vec2{1.0f, 2.0f}));
+    Polygon p = world.shapePolygon(tri);
+    ASSERT_EQ(p.count, 3);  // the clockwise input, reversed
+    EXPECT_EQ(p.vertices[0], (Vec2{1, 0}));
+    EXPECT_EQ(p.vertices[1], (Vec2{0, 1}));
+    EXPECT_EQ(p.vertices[2], (Vec2{0, 0}));
+    EXPECT_THROW(world.shapeCircle(tri), Error);
+    EXPECT_THROW(world.shapePolygon(disc), Error);
+    std::vector<ShapeId> shapes = world.bodyShapes(body);
+    ASSERT_EQ(shapes.size(), 2u);
+    EXPECT_EQ(shapes[0], tri);  // newest first
+    EXPECT_EQ(world.bodyIds().size(), 1u);
+    EXPECT_TRUE(world.jointIds().empty());
+}
