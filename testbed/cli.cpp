@@ -92,6 +92,9 @@ std::string usage() {
            "  --vel-iters N     velocity iterations per step (default 8)\n"
            "  --pos-iters N     position iterations per step (default 3)\n"
            "  --csv FILE        also write the table to FILE as CSV\n"
+           "  --html FILE       write a self-contained page replaying the runs in a browser\n"
+           "                    (the --scene, or pendulum_drag, chain_drag, bridge_heavy and\n"
+           "                    ragdoll), one canvas per position solver, then exit\n"
            "  --list            list the scenes with a line on each, and exit\n"
            "  --help            show this text\n"
            "\n"
@@ -162,6 +165,8 @@ CliOptions parseCli(const std::vector<std::string>& args) {
                 static_cast<int>(parseInteger(arg, value(), 0, kMaxIterations));
         } else if (arg == "--csv") {
             options.csvPath = value();
+        } else if (arg == "--html") {
+            options.htmlPath = value();
         } else {
             throw CliError("unknown option '" + arg + "' (see --help)");
         }

@@ -23,6 +23,7 @@ struct CliOptions {
     int velocityIterations = kDefaultVelocityIterations;
     int positionIterations = kDefaultPositionIterations;
     std::optional<std::string> csvPath;
+    std::optional<std::string> htmlPath;  ///< write the browser replay here
     bool help = false;
     bool list = false;
 };

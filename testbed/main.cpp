@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli.h"
+#include "replay/html_replay.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
 #include "table.h"
@@ -75,6 +76,23 @@ int main(int argc, char** argv) {
                          "libbox2d-dev and build again to use 'reference'\n";
             return 1;
 #endif
+        }
+        if (options.htmlPath) {
+            std::vector<std::string> names;
+            if (options.scene) {
+                names.push_back(*options.scene);
+            } else {
+                for (const char* n : {"pendulum_drag", "chain_drag", "bridge_heavy", "ragdoll"}) {
+                    if (scenes::findScene(n)) names.push_back(n);
+                }
+            }
+            std::string problem = replay::writeReplayFile(*options.htmlPath, names);
+            if (!problem.empty()) {
+                std::cerr << "pivot-testbed: " << problem << "\n";
+                return 1;
+            }
+            std::cout << "wrote " << *options.htmlPath << "\n";
+            return 0;
         }
         if (options.list) {
             for (const scenes::SceneInfo& info : scenes::allScenes()) {

@@ -1,0 +1,2 @@
+// Placeholder: implementation pending.
+#include "replay/recording.h"

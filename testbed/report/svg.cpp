@@ -1,0 +1,2 @@
+// Placeholder: implementation pending.
+#include "report/svg.h"
