@@ -36,6 +36,7 @@ struct Body {
     std::int32_t shapeList = -1;    // head of the body's shape list
     std::int32_t jointList = -1;    // head of the body's joint edge list (see body_edge.h)
     std::int32_t contactList = -1;  // head of the body's contact edge list
+    std::int32_t mouseList = -1;    // head of the body's mouse joints (MouseJoint::next)
     std::int32_t shapeCount = 0;
     std::int32_t islandIndex = -1;  // solver index within the island being solved
 

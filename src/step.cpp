@@ -32,7 +32,7 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
 
     stats = StepStats{};
     solvedBodies.clear();
-    SolverStorage storage{bodies, shapes, joints, contacts};
+    SolverStorage storage{bodies, shapes, joints, contacts, mouseJoints};
     islandBuilder.forEachIsland(storage, island, [&](Island& current) {
         IslandReport report = solveIsland(current, storage, context);
         ++stats.islandCount;

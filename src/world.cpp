@@ -38,6 +38,9 @@ std::int32_t World::Impl::shapeIndex(const char* call, ShapeId id) const {
 std::int32_t World::Impl::jointIndex(const char* call, JointId id) const {
     return checkHandle(call, "joint", id, joints, this->id);
 }
+std::int32_t World::Impl::mouseJointIndex(const char* call, MouseJointId id) const {
+    return checkHandle(call, "mouse joint", id, mouseJoints, this->id);
+}
 
 void World::Impl::wakeAll() {
     bodies.forEach([](std::int32_t, Body& b) { wakeUp(b); });
@@ -141,6 +144,12 @@ std::uint64_t World::stateHash() const {
         h.add(j.upperImpulse);
         h.add(j.bodyA());
         h.add(j.bodyB());
+    });
+    impl_->mouseJoints.forEach([&](std::int32_t index, const MouseJoint& m) {
+        h.add(index);
+        h.add(m.body);
+        h.add(m.target);
+        h.add(m.impulse);
     });
     impl_->contacts.forEach([&](std::int32_t index, const Contact& c) {
         h.add(index);

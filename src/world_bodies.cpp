@@ -63,6 +63,7 @@ void World::destroyBody(BodyId id) {
         w.destroyContact(edgeOwner(body.contactList));
     }
     while (body.shapeList != -1) w.removeShape(body.shapeList);
+    while (body.mouseList != -1) w.removeMouseJoint(body.mouseList);
     w.bodies.erase(index);
 }
 

@@ -10,6 +10,7 @@
 #include "body.h"
 #include "collision/broad_phase.h"
 #include "contact.h"
+#include "joints/mouse_joint.h"
 #include "joints/revolute_joint.h"
 #include "pair_map.h"
 #include "pivot/world.h"
@@ -37,6 +38,7 @@ struct World::Impl {
     SlotPool<Shape> shapes;
     SlotPool<RevoluteJoint> joints;
     SlotPool<Contact> contacts;
+    SlotPool<MouseJoint> mouseJoints;
     BroadPhase broadPhase;
     PairMap contactPairs;    // shape pair -> contact index
     bool newShapes = false;  // pairs to find before the next step's contact update
@@ -56,13 +58,18 @@ struct World::Impl {
     std::int32_t bodyIndex(const char* call, BodyId id) const;
     std::int32_t shapeIndex(const char* call, ShapeId id) const;
     std::int32_t jointIndex(const char* call, JointId id) const;
+    std::int32_t mouseJointIndex(const char* call, MouseJointId id) const;
 
     BodyId bodyId(std::int32_t index) const { return {index, bodies.generation(index), id}; }
     ShapeId shapeId(std::int32_t index) const { return {index, shapes.generation(index), id}; }
     JointId jointId(std::int32_t index) const { return {index, joints.generation(index), id}; }
+    MouseJointId mouseJointId(std::int32_t index) const {
+        return {index, mouseJoints.generation(index), id};
+    }
 
     void removeJoint(std::int32_t jointIndex);
     void removeShape(std::int32_t shapeIndex);
+    void removeMouseJoint(std::int32_t mouseIndex);
     void wakeAll();
 
     // Contact bookkeeping (contact_manager.cpp).

@@ -25,10 +25,12 @@ struct Handle {
 struct BodyTag {};
 struct ShapeTag {};
 struct JointTag {};
+struct MouseJointTag {};
 }  // namespace detail
 
 using BodyId = detail::Handle<detail::BodyTag>;
 using ShapeId = detail::Handle<detail::ShapeTag>;
 using JointId = detail::Handle<detail::JointTag>;
+using MouseJointId = detail::Handle<detail::MouseJointTag>;
 
 }  // namespace pivot

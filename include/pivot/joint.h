@@ -90,4 +90,16 @@ struct RevoluteJointDef {
     }
 };
 
+/// A mouse joint pulls one point of a body towards a target that the caller moves, like a
+/// spring with a damper: the way testbeds let a user drag bodies. It is soft (a spring of the
+/// given frequency and damping ratio for the body's mass, its force capped at maxForce) and has
+/// no position correction.
+struct MouseJointDef {
+    BodyId body;                ///< a dynamic body
+    Vec2 target;                ///< m, world; the body point under it at creation is the one pulled
+    float maxForce = 1000.0f;   ///< N, > 0
+    float hertz = 5.0f;         ///< spring frequency, > 0
+    float dampingRatio = 0.7f;  ///< >= 0; 1 is critical damping
+};
+
 }  // namespace pivot

@@ -219,6 +219,14 @@ public:
     /// A value in [0, 1], or nullopt for the solver's default.
     void setJointBiasFactor(JointId id, std::optional<float> biasFactor);
 
+    // --- mouse joints -------------------------------------------------------------------------
+    MouseJointId createMouseJoint(const MouseJointDef& def);
+    void destroyMouseJoint(MouseJointId id);
+    bool isValid(MouseJointId id) const;
+    /// Moves the target (m, world) and wakes the body.
+    void setMouseTarget(MouseJointId id, Vec2 target);
+    Vec2 mouseTarget(MouseJointId id) const;
+
     // --- inspection -------------------------------------------------------------------------
     /// A 64-bit hash of the exact bits of every body's pose, velocity, pending force and mass,
     /// every shape's owner and density, and every joint's bodies, solver, bias and impulse:

@@ -12,6 +12,7 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, Island& i
     island.bodies.clear();
     island.contacts.clear();
     island.joints.clear();
+    island.mouseJoints.clear();
     stack_.clear();
     stack_.push_back(seed);
     bodyVisited_[seed] = 1;
@@ -24,6 +25,9 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, Island& i
         island.bodies.push_back(bodyIndex);
         if (body.type == BodyType::Static) continue;  // does not connect islands
         body.awake = true;  // keeps its sleep timer: it may still be at rest
+        for (std::int32_t m = body.mouseList; m != -1; m = storage.mouseJoints[m].next) {
+            island.mouseJoints.push_back(m);
+        }
 
         for (std::int32_t key = body.contactList; key != -1;) {
             std::int32_t contactIndex = edgeOwner(key);

@@ -98,6 +98,23 @@ void storeImpulses(const Island& island, SlotPool<RevoluteJoint>& joints, float 
     }
 }
 
+void prepareMouseJoints(Island& island, const SlotPool<Body>& bodies,
+                        const SlotPool<MouseJoint>& mouseJoints, const StepContext& step) {
+    island.mouseConstraints.clear();
+    for (std::int32_t m : island.mouseJoints) {
+        const MouseJoint& joint = mouseJoints[m];
+        const Body& body = bodies[joint.body];
+        MouseConstraint c;
+        c.index = body.islandIndex;
+        c.jointIndex = m;
+        c.mB = body.invMass;
+        c.iB = body.invInertia;
+        prepareMouse(c, joint, body.mass, body.localCenter, island.positions.data(),
+                     island.velocities.data(), step.dt, step.dtRatio, step.warmStarting);
+        island.mouseConstraints.push_back(c);
+    }
+}
+
 // Move every body by its velocity, limiting the move per step (kMaxTranslation,
 // kMaxRotation). The limit scales the velocity itself so the next step starts from it.
 void integratePositions(Island& island, const StepContext& step, IslandReport& report) {
@@ -173,12 +190,21 @@ IslandReport solveIsland(Island& island, SolverStorage& storage, const StepConte
     island.contactSolver.prepare(island.contacts, storage.contacts, bodies, storage.shapes, step,
                                  island.positions.data(), island.velocities.data());
     prepareJoints(island, bodies, storage.joints, step);
+    prepareMouseJoints(island, bodies, storage.mouseJoints, step);
     for (int it = 0; it < step.velocityIterations; ++it) {
+        // A mouse joint is the user's hand: solved first, so the rigid joints and contacts have
+        // the last word on what the drag may do to them.
+        for (MouseConstraint& c : island.mouseConstraints) {
+            solveMouseVelocity(c, island.velocities.data());
+        }
         solveVelocitySweep(island.groups, island.velocities.data());
         island.contactSolver.solveVelocities(island.velocities.data());
     }
     storeImpulses(island, storage.joints, step.invDt);
     island.contactSolver.storeImpulses(storage.contacts);
+    for (const MouseConstraint& c : island.mouseConstraints) {
+        storage.mouseJoints[c.jointIndex].impulse = c.impulse;
+    }
     integratePositions(island, step, report);
     island.pseudoVelocities.resize(island.bodies.size());
     PositionPhaseResult phase =

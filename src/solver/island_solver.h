@@ -8,6 +8,7 @@
 
 #include "body.h"
 #include "contact.h"
+#include "joints/mouse_joint.h"
 #include "joints/revolute_joint.h"
 #include "shape.h"
 #include "slot_pool.h"
@@ -23,6 +24,7 @@ struct SolverStorage {
     const SlotPool<Shape>& shapes;
     SlotPool<RevoluteJoint>& joints;
     SlotPool<Contact>& contacts;
+    SlotPool<MouseJoint>& mouseJoints;
 };
 
 /// One island's members and the solver's arrays for it. Kept by the world and reused for
@@ -31,10 +33,12 @@ struct Island {
     std::vector<std::int32_t> bodies;    // body pool indices; the position is the solver index
     std::vector<std::int32_t> contacts;  // touching contacts, in the order they were reached
     std::vector<std::int32_t> joints;    // joint pool indices, in the order they were reached
+    std::vector<std::int32_t> mouseJoints;
     std::vector<SolverVelocity> velocities;
     std::vector<SolverPosition> positions;
     std::vector<SolverVelocity> pseudoVelocities;
     ConstraintGroups groups;
+    std::vector<MouseConstraint> mouseConstraints;
     ContactSolver contactSolver;
 };
 

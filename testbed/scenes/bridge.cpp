@@ -37,13 +37,16 @@ void buildBridge(Scene& scene, const SceneOptions& options) {
     }
     Vec2 anchor{-15.0f + 1.0f * static_cast<float>(kPlanks), y};
     scene.joints.push_back(world.createJoint(options.jointAt(previous, ground, anchor)));
+    scene.restFromStep = stepAt(options, 5.0f);  // sagged and settled by then
 }
 
 // The seed note's "heavy cube dropped on the bridge": after 2 s a 1 m box of four times the
 // bridge's mass (4 x 30 planks x 5 kg = 600 kg) is released 5 m above the deck's middle.
 void buildBridgeHeavy(Scene& scene, const SceneOptions& options) {
     buildBridge(scene, options);
-    const int dropStep = static_cast<int>(2.0f * options.hz + 0.5f);
+    const int dropStep = stepAt(options, 2.0f);
+    scene.disturbanceEndStep = stepAt(options, 3.0f);  // the box has landed (it falls 5 m)
+    scene.restFromStep = stepAt(options, 8.0f);
     scene.beforeStep = [dropStep](Scene& s, int step) {
         if (step != dropStep) return;
         float bridgeMass = 0.0f;

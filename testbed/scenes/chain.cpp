@@ -32,6 +32,7 @@ void buildChain(Scene& scene, const SceneOptions& options) {
         scene.bodies.push_back(body);
         previous = body;
     }
+    scene.disturbanceEndStep = 0;  // the release is the disturbance
 }
 
 }  // namespace pivot::scenes

@@ -7,7 +7,8 @@
 
 namespace pivot::scenes {
 
-void buildPyramid(Scene& scene, const SceneOptions&) {
+void buildPyramid(Scene& scene, const SceneOptions& options) {
+    scene.restFromStep = stepAt(options, 1.0f);
     World& world = *scene.world;
     constexpr int kRows = 20;
     const float restGap = 2.0f * kPolygonRadius - kLinearSlop;

@@ -25,6 +25,15 @@ const std::vector<SceneInfo>& allScenes() {
         {"pyramid", "1 m boxes stacked 20 rows high on the ground", buildPyramid},
         {"tumbler", "a box pinned at its centre and turned slowly, tumbling 200 small boxes",
          buildTumbler},
+        {"pendulum_drag",
+         "the pendulum's ball dragged round a 3 m circle, up to 4 rev/s, released at 3 s",
+         buildPendulumDrag},
+        {"chain_drag", "the chain's free end yanked and whirled at 1-4 s, then released",
+         buildChainDrag},
+        {"ragdoll", "a 10-body ragdoll with limited joints thrown at a wall and the ground",
+         buildRagdoll},
+        {"ragdoll_motorized", "the ragdoll with a holding motor in every joint",
+         buildMotorizedRagdoll},
     };
     return scenes;
 }

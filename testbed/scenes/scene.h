@@ -35,6 +35,12 @@ struct Scene {
     /// Called before each step with the step's index (0 first), for scenes where something
     /// happens during the run (a body dropped in, a drive torque). May add bodies and joints.
     std::function<void(Scene&, int)> beforeStep;
+    /// The step after which the scene's disturbance is over (a drag released, a box landed):
+    /// the joints' recovery is timed from it. -1: the scene has no disturbance.
+    int disturbanceEndStep = -1;
+    /// The step from which the scene should be at rest: body speeds after it count as jitter.
+    /// -1: the scene is never meant to be at rest.
+    int restFromStep = -1;
 };
 
 using SceneBuilder = void (*)(Scene& scene, const SceneOptions& options);
@@ -64,5 +70,14 @@ void buildChain(Scene& scene, const SceneOptions& options);
 void buildBridgeHeavy(Scene& scene, const SceneOptions& options);
 void buildPyramid(Scene& scene, const SceneOptions& options);
 void buildTumbler(Scene& scene, const SceneOptions& options);
+void buildPendulumDrag(Scene& scene, const SceneOptions& options);
+void buildChainDrag(Scene& scene, const SceneOptions& options);
+void buildRagdoll(Scene& scene, const SceneOptions& options);
+void buildMotorizedRagdoll(Scene& scene, const SceneOptions& options);
+
+/// The step index of time t (s) at the scene's rate.
+inline int stepAt(const SceneOptions& options, float seconds) {
+    return static_cast<int>(seconds * options.hz + 0.5f);
+}
 
 }  // namespace pivot::scenes

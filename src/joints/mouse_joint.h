@@ -1,0 +1,88 @@
+// The mouse joint: a soft point constraint pulling a body point p towards a target t.
+//
+//   C = p - t = cB + rB - t,   Cdot = vB + wB x rB,   J = [I  skew(rB)]
+// As a spring of angular frequency w = 2 pi hertz and damping ratio z on the body's mass m:
+// stiffness k = m w^2, damping d = 2 m z w. Implicit integration of the spring over the step
+// turns the hard constraint K P = -Cdot into the soft one
+//   (K + gamma I) P = -(Cdot + beta/h... ) written here as  P = -M (Cdot + bias + gamma P_acc)
+// with gamma = 1 / (h (d + h k)) (a compliance: how much the constraint may give per unit
+// impulse) and bias = h k gamma C (the fraction of the error the spring removes this step).
+// The accumulated impulse is capped at h * maxForce. There is no position phase: the spring is
+// the correction.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "pivot/constants.h"
+#include "pivot/math.h"
+#include "solver/solver_types.h"
+
+namespace pivot {
+
+struct MouseJoint {
+    std::int32_t body = -1;
+    std::int32_t next = -1;  // the body's next mouse joint
+    Vec2 localAnchor;        // the pulled point, origin-relative in the body's frame
+    Vec2 target;
+    float maxForce = 0.0f;
+    float hertz = 0.0f;
+    float dampingRatio = 0.0f;
+    Vec2 impulse;  // accumulated, for warm starting
+};
+
+struct MouseConstraint {
+    std::int32_t index = 0;  // solver index of the body
+    std::int32_t jointIndex = 0;
+    float mB = 0.0f;
+    float iB = 0.0f;
+    Vec2 rB;
+    Mat22 mass;  // (K + gamma I)^-1
+    Vec2 bias;
+    float gamma = 0.0f;
+    float maxImpulse = 0.0f;
+    Vec2 impulse;
+};
+
+/// Start of the step: the soft constraint at the current pose, and the warm start.
+inline void prepareMouse(MouseConstraint& c, const MouseJoint& joint, float mass, Vec2 localCenter,
+                         const SolverPosition* positions, SolverVelocity* velocities, float dt,
+                         float dtRatio, bool warmStarting) {
+    const SolverPosition& p = positions[c.index];
+    const float omega = 2.0f * kPi * joint.hertz;
+    const float damping = 2.0f * mass * joint.dampingRatio * omega;
+    const float stiffness = mass * omega * omega;
+    c.gamma = dt * (damping + dt * stiffness);
+    c.gamma = c.gamma != 0.0f ? 1.0f / c.gamma : 0.0f;
+    const float beta = dt * stiffness * c.gamma;
+
+    c.rB = rotate(Rot(p.a), joint.localAnchor - localCenter);
+    Mat22 K;
+    K.cx.x = c.mB + c.iB * c.rB.y * c.rB.y + c.gamma;
+    K.cx.y = -c.iB * c.rB.x * c.rB.y;
+    K.cy.x = K.cx.y;
+    K.cy.y = c.mB + c.iB * c.rB.x * c.rB.x + c.gamma;
+    c.mass = K.inverse();
+    c.bias = beta * (p.c + c.rB - joint.target);
+    c.maxImpulse = dt * joint.maxForce;
+
+    c.impulse = warmStarting ? dtRatio * joint.impulse : Vec2{};
+    SolverVelocity& v = velocities[c.index];
+    v.v += c.mB * c.impulse;
+    v.w += c.iB * cross(c.rB, c.impulse);
+}
+
+inline void solveMouseVelocity(MouseConstraint& c, SolverVelocity* velocities) {
+    SolverVelocity& v = velocities[c.index];
+    Vec2 cdot = v.v + cross(v.w, c.rB);
+    Vec2 P = c.mass * (-(cdot + c.bias + c.gamma * c.impulse));
+    Vec2 old = c.impulse;
+    c.impulse += P;
+    float length2 = dot(c.impulse, c.impulse);
+    if (length2 > c.maxImpulse * c.maxImpulse) c.impulse *= c.maxImpulse / std::sqrt(length2);
+    P = c.impulse - old;
+    v.v += c.mB * P;
+    v.w += c.iB * cross(c.rB, P);
+}
+
+}  // namespace pivot

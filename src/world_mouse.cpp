@@ -1,0 +1,67 @@
+// The World facade, part six: mouse joints.
+#include "world_checks.h"
+#include "world_impl.h"
+
+namespace pivot {
+
+void World::Impl::removeMouseJoint(std::int32_t index) {
+    Body& body = bodies[mouseJoints[index].body];
+    // Singly linked: find the link that points at this joint.
+    std::int32_t* link = &body.mouseList;
+    while (*link != index) link = &mouseJoints[*link].next;
+    *link = mouseJoints[index].next;
+    mouseJoints.erase(index);
+    wakeUp(body);
+}
+
+MouseJointId World::createMouseJoint(const MouseJointDef& def) {
+    const char* call = "World::createMouseJoint";
+    Impl& w = *impl_;
+    std::int32_t bodyIndex = checkHandle(call, "def.body", def.body, w.bodies, w.id);
+    Body& body = w.bodies[bodyIndex];
+    if (body.type != BodyType::Dynamic) fail(call, "def.body must be dynamic to be dragged");
+    requireFinite(call, "def.target", def.target);
+    requireFinite(call, "def.maxForce", def.maxForce);
+    if (def.maxForce <= 0.0f) {
+        fail(call, "def.maxForce must be > 0 (got " + formatFloat(def.maxForce) + ")");
+    }
+    requireFinite(call, "def.hertz", def.hertz);
+    if (def.hertz <= 0.0f) fail(call, "def.hertz must be > 0 (got " + formatFloat(def.hertz) + ")");
+    requireNonNegative(call, "def.dampingRatio", def.dampingRatio);
+
+    MouseJoint joint;
+    joint.body = bodyIndex;
+    joint.localAnchor = inverseTransformPoint(body.xf, def.target);
+    joint.target = def.target;
+    joint.maxForce = def.maxForce;
+    joint.hertz = def.hertz;
+    joint.dampingRatio = def.dampingRatio;
+    joint.next = body.mouseList;
+    std::int32_t index = w.mouseJoints.insert(joint);
+    w.bodies[bodyIndex].mouseList = index;
+    wakeUp(w.bodies[bodyIndex]);
+    return w.mouseJointId(index);
+}
+
+void World::destroyMouseJoint(MouseJointId id) {
+    impl_->removeMouseJoint(impl_->mouseJointIndex("World::destroyMouseJoint", id));
+}
+
+bool World::isValid(MouseJointId id) const {
+    return id.world == impl_->id && impl_->mouseJoints.isAlive(id.index) &&
+           impl_->mouseJoints.generation(id.index) == id.generation;
+}
+
+void World::setMouseTarget(MouseJointId id, Vec2 target) {
+    const char* call = "World::setMouseTarget";
+    MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
+    requireFinite(call, "target", target);
+    joint.target = target;
+    wakeUp(impl_->bodies[joint.body]);
+}
+
+Vec2 World::mouseTarget(MouseJointId id) const {
+    return impl_->mouseJoints[impl_->mouseJointIndex("World::mouseTarget", id)].target;
+}
+
+}  // namespace pivot
