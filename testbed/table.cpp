@@ -16,25 +16,34 @@ std::string format(const char* spec, double value) {
     return buffer;
 }
 
+// "-" when a metric does not apply to the scene, "never" when a recovery did not happen.
+std::string optional(const char* spec, double value) {
+    if (value == scenes::RunMetrics::kNotApplicable) return "-";
+    if (value == scenes::RunMetrics::kNever) return "never";
+    return format(spec, value);
+}
+
 }  // namespace
 
 void printTable(std::ostream& out, const std::vector<TableRow>& rows) {
     char line[256];
     std::snprintf(line, sizeof line,
-                  "%-12s %-16s %-9s %5s %10s %10s %10s %12s %9s %9s %9s %8s %9s\n", "scene",
-                  "solver", "contact", "bias", "max sep", "rms sep", "final sep", "drift J",
-                  "blew up", "t clamps", "r clamps", "ngs its", "us/step");
+                  "%-17s %-15s %-9s %4s %9s %9s %9s %10s %9s %8s %9s %7s %6s %6s %5s %8s\n",
+                  "scene", "solver", "contact", "bias", "max sep", "rms sep", "final sep",
+                  "drift J", "limit rad", "recover", "jitter", "blew up", "t clmp", "r clmp", "ngs",
+                  "us/step");
     out << line;
     for (const TableRow& r : rows) {
         const scenes::RunMetrics& m = r.metrics;
-        std::snprintf(line, sizeof line,
-                      "%-12s %-16s %-9s %5.2f %10.3e %10.3e %10.3e %12.4g %9s %9ld %9ld %8.2f "
-                      "%9.1f\n",
-                      r.scene.c_str(), r.solver.c_str(), r.contact.c_str(),
-                      static_cast<double>(r.bias), m.maxSeparation, m.rmsSeparation,
-                      m.finalSeparation, m.energyDrift(), blowUpText(m).c_str(),
-                      m.translationClamps, m.rotationClamps, m.meanPositionIterations,
-                      m.microsecondsPerStep);
+        std::snprintf(
+            line, sizeof line,
+            "%-17s %-15s %-9s %4.2f %9.2e %9.2e %9.2e %10.4g %9.2e %8s %9s %7s %6ld "
+            "%6ld %5.2f %8.1f\n",
+            r.scene.c_str(), r.solver.c_str(), r.contact.c_str(), static_cast<double>(r.bias),
+            m.maxSeparation, m.rmsSeparation, m.finalSeparation, m.energyDrift(),
+            m.maxLimitViolation, optional("%.2fs", m.recoverySeconds).c_str(),
+            optional("%.2e", m.jitter).c_str(), blowUpText(m).c_str(), m.translationClamps,
+            m.rotationClamps, m.meanPositionIterations, m.microsecondsPerStep);
         out << line;
     }
 }

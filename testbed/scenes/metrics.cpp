@@ -1,5 +1,6 @@
 #include "metrics.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -33,6 +34,18 @@ SeparationSample sampleSeparation(const Scene& scene) {
     return sample;
 }
 
+double limitViolation(const Scene& scene) {
+    const World& world = *scene.world;
+    double worst = 0.0;
+    for (JointId id : scene.joints) {
+        JointLimit limit = world.jointLimit(id);
+        if (!limit.enabled) continue;
+        double angle = world.jointAngle(id);
+        worst = std::max({worst, double(limit.lower) - angle, angle - double(limit.upper)});
+    }
+    return worst;
+}
+
 bool isBlownUp(const Scene& scene) {
     const World& world = *scene.world;
     for (BodyId id : scene.bodies) {
@@ -58,6 +71,9 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
     long samples = 0;
     long positionIterations = 0;
     Clock::duration stepTime{};
+    int lastStepApart = -1;  // the last step after which some joint was beyond the slop
+    double restSpeedSquares = 0.0;
+    long restSamples = 0;
 
     for (int i = 0; i < settings.steps; ++i) {
         if (scene.beforeStep) {
@@ -82,6 +98,14 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
         sumSquares += s.sumSquares;
         samples += s.count;
         m.finalSeparation = s.max;
+        if (!(s.max <= kLinearSlop)) lastStepApart = i;
+        m.maxLimitViolation = std::max(m.maxLimitViolation, limitViolation(scene));
+        if (scene.restFromStep >= 0 && i >= scene.restFromStep) {
+            for (BodyId id : scene.bodies) {
+                restSpeedSquares += lengthSquared(world.bodyLinearVelocity(id));
+                ++restSamples;
+            }
+        }
         if (afterStep) afterStep(i);
         if (isBlownUp(scene)) {
             m.blewUp = true;
@@ -89,6 +113,15 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
         }
     }
     m.energyEnd = mechanicalEnergy(scene);
+    if (scene.disturbanceEndStep >= 0) {
+        if (m.blewUp || lastStepApart == m.steps - 1) {
+            m.recoverySeconds = RunMetrics::kNever;
+        } else {
+            int recovered = std::max(lastStepApart + 1, scene.disturbanceEndStep);
+            m.recoverySeconds = double(recovered - scene.disturbanceEndStep) / settings.hz;
+        }
+    }
+    if (restSamples > 0) m.jitter = std::sqrt(restSpeedSquares / double(restSamples));
     m.rmsSeparation = samples > 0 ? std::sqrt(sumSquares / double(samples)) : 0.0;
     m.meanPositionIterations = m.steps > 0 ? double(positionIterations) / m.steps : 0.0;
     m.microsecondsPerStep =

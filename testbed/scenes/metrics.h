@@ -45,9 +45,24 @@ struct RunMetrics {
     long rotationClamps = 0;            ///< body-steps limited by kMaxRotation
     double meanPositionIterations = 0;  ///< NGS sweeps per step actually run
     double microsecondsPerStep = 0;     ///< mean wall time of World::step alone
+    /// rad, the furthest any limited joint went beyond its limits.
+    double maxLimitViolation = 0;
+    /// s from the end of the scene's disturbance until every joint is back within kLinearSlop
+    /// for the rest of the run: kNever if it is not back at the end, kNotApplicable if the
+    /// scene has no disturbance.
+    double recoverySeconds = kNotApplicable;
+    /// m/s, RMS speed of the scene's bodies once it should be at rest (kNotApplicable if it
+    /// never should be).
+    double jitter = kNotApplicable;
+
+    static constexpr double kNever = -1.0;
+    static constexpr double kNotApplicable = -2.0;
 
     double energyDrift() const { return energyEnd - energyStart; }
 };
+
+/// rad, how far the scene's limited joints are beyond their limits now (0 within).
+double limitViolation(const Scene& scene);
 
 /// Steps the scene, measuring after every step. `afterStep(stepIndex)`, when given, runs after
 /// each step's measurements (for time series).
