@@ -64,6 +64,7 @@ std::string usage() {
     std::ostringstream out;
     out << "usage: pivot-testbed [options]\n"
            "       pivot-testbed reference [--csv FILE]\n"
+           "       pivot-testbed report [--docs DIR] [--steps N]\n"
            "\n"
            "Runs pivot2d's test scenes headless and prints, for each run, how far the joints\n"
            "came apart, the energy drift, whether the run blew up, and the cost per step.\n"
@@ -74,6 +75,11 @@ std::string usage() {
            "how closely FullNGS follows Box2D's revolute joint, then every position solver\n"
            "beside Box2D (continuous collision off, and on) over 600 steps (needs a build\n"
            "with Box2D: Debian's libbox2d-dev).\n"
+           "\n"
+           "report: runs every scene with every position solver, a bias sweep for baumgarte\n"
+           "and pseudo_velocity and a position-iteration sweep, and writes DIR/results.md with\n"
+           "SVG plots in DIR/results/, and the measured observations of the seed note into\n"
+           "DIR/position-correction.md (DIR defaults to docs: run it from the repository root).\n"
            "\n"
            "options:\n"
            "  --scene NAME      run only this scene: "
@@ -114,6 +120,9 @@ CliOptions parseCli(const std::vector<std::string>& args) {
     std::size_t first = 0;
     if (!args.empty() && args[0] == "reference") {
         options.command = Command::Reference;
+        first = 1;
+    } else if (!args.empty() && args[0] == "report") {
+        options.command = Command::Report;
         first = 1;
     }
     for (std::size_t i = first; i < args.size(); ++i) {
@@ -165,6 +174,8 @@ CliOptions parseCli(const std::vector<std::string>& args) {
                 static_cast<int>(parseInteger(arg, value(), 0, kMaxIterations));
         } else if (arg == "--csv") {
             options.csvPath = value();
+        } else if (arg == "--docs") {
+            options.docsDir = value();
         } else if (arg == "--html") {
             options.htmlPath = value();
         } else {

@@ -10,7 +10,7 @@
 
 namespace pivot::testbed {
 
-enum class Command { Table, Reference };
+enum class Command { Table, Reference, Report };
 
 struct CliOptions {
     Command command = Command::Table;
@@ -24,6 +24,7 @@ struct CliOptions {
     int positionIterations = kDefaultPositionIterations;
     std::optional<std::string> csvPath;
     std::optional<std::string> htmlPath;  ///< write the browser replay here
+    std::string docsDir = "docs";         ///< report: where results.md goes
     bool help = false;
     bool list = false;
 };

@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "replay/html_replay.h"
+#include "report/report.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
 #include "table.h"
@@ -58,6 +59,17 @@ int main(int argc, char** argv) {
         testbed::CliOptions options = testbed::parseCli({argv + 1, argv + argc});
         if (options.help) {
             std::cout << testbed::usage();
+            return 0;
+        }
+        if (options.command == testbed::Command::Report) {
+            report::ReportSettings settings;
+            settings.docsDir = options.docsDir;
+            settings.steps = options.steps;
+            std::string problem = report::generateReport(settings, std::cout);
+            if (!problem.empty()) {
+                std::cerr << "pivot-testbed: " << problem << "\n";
+                return 1;
+            }
             return 0;
         }
         if (options.command == testbed::Command::Reference) {

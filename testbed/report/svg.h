@@ -12,7 +12,7 @@
 namespace pivot::report {
 
 struct Series {
-    std::string name;                              ///< legend text
+    std::string name;                               ///< legend text
     std::vector<std::pair<double, double>> points;  ///< (x, y); non-finite y breaks the line
 };
 

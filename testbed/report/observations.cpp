@@ -1,0 +1,365 @@
+#include "report/observations.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace pivot::report {
+
+namespace {
+
+constexpr PositionSolver kB = PositionSolver::Baumgarte;
+constexpr PositionSolver kPV = PositionSolver::PseudoVelocity;
+constexpr PositionSolver kMNGS = PositionSolver::ModifiedNGS;
+constexpr PositionSolver kFNGS = PositionSolver::FullNGS;
+
+const RunRecord& get(const RunMatrix& m, const std::string& scene, PositionSolver solver,
+                     float bias = -1.0f, int iterations = kDefaultPositionIterations) {
+    const RunRecord* r = m.find(scene, solver, bias, iterations);
+    if (!r)
+        throw std::logic_error("report: no run of " + scene + " with " +
+                               positionSolverName(solver));
+    return *r;
+}
+
+std::string num(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3g", v);
+    return buffer;
+}
+
+std::string metres(double v) {
+    return num(v) + " m";
+}
+
+std::string recovery(double seconds) {
+    if (seconds == scenes::RunMetrics::kNever) return "never";
+    if (seconds == scenes::RunMetrics::kNotApplicable) return "n/a";
+    return num(seconds) + " s";
+}
+
+std::string verdict(bool confirmed) {
+    return confirmed ? "confirmed" : "not confirmed";
+}
+
+// Mean of the largest per-joint separations over the first and the last `count` joints.
+std::pair<double, double> rootAndEnd(const RunRecord& r, std::size_t count) {
+    const std::vector<float>& j = r.jointMaxSeparation;
+    count = std::min(count, j.size() / 2);
+    double root = 0.0, end = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        root += j[i];
+        end += j[j.size() - 1 - i];
+    }
+    return {root / double(count), end / double(count)};
+}
+
+// The middle plank's height over the run, from a dedicated FullNGS bridge run.
+struct Sag {
+    double mean = 0.0, low = 1e9, high = -1e9;
+};
+Sag bridgeSag(int steps) {
+    scenes::Scene scene = scenes::buildScene(*scenes::findScene("bridge"), {});
+    Sag sag;
+    for (int i = 0; i < steps; ++i) {
+        scene.world->step(1.0f / 60.0f);
+        double y = scene.world->bodyWorldCenter(scene.bodies[scene.bodies.size() / 2]).y;
+        sag.mean += y;
+        sag.low = std::min(sag.low, y);
+        sag.high = std::max(sag.high, y);
+    }
+    sag.mean /= steps;
+    return sag;
+}
+
+}  // namespace
+
+std::vector<Observation> evaluateObservations(const RunMatrix& m) {
+    std::vector<Observation> out;
+
+    {
+        const char* costScenes[] = {"bridge", "chain", "bridge_heavy", "ragdoll"};
+        double cost[kPositionSolverCount] = {};
+        for (const char* scene : costScenes) {
+            for (int s = 0; s < kPositionSolverCount; ++s) {
+                cost[s] +=
+                    get(m, scene, static_cast<PositionSolver>(s)).metrics.microsecondsPerStep;
+            }
+        }
+        bool cheapest = std::min_element(cost, cost + kPositionSolverCount) == cost;
+        out.push_back({"Baumgarte", "this is the cheapest algorithm",
+                       "microseconds per step summed over bridge, chain, bridge_heavy and "
+                       "ragdoll (default biases, 8/3 iterations); confirmed if Baumgarte's sum "
+                       "is the lowest",
+                       "Baumgarte " + num(cost[0]) + " us, PseudoVelocity " + num(cost[1]) +
+                           " us, ModifiedNGS " + num(cost[2]) + " us, FullNGS " + num(cost[3]) +
+                           " us",
+                       verdict(cheapest)});
+    }
+    {
+        const RunRecord& b = get(m, "bridge", kB);
+        const RunRecord& f = get(m, "bridge", kFNGS);
+        bool confirmed = b.metrics.maxSeparation > f.metrics.maxSeparation &&
+                         (b.metrics.energyDrift() > 0.0 || b.metrics.jitter > f.metrics.jitter);
+        out.push_back({"Baumgarte", "it has some stability problems, especially with the bridge",
+                       "bridge: largest joint separation, energy change and jitter (RMS speed "
+                       "after 5 s) beside FullNGS; confirmed if Baumgarte separates more and "
+                       "gains energy or jitters more",
+                       "max separation " + metres(b.metrics.maxSeparation) + " (FullNGS " +
+                           metres(f.metrics.maxSeparation) + "), energy change " +
+                           num(b.metrics.energyDrift()) + " J (FullNGS " +
+                           num(f.metrics.energyDrift()) + " J), jitter " + num(b.metrics.jitter) +
+                           " m/s (FullNGS " + num(f.metrics.jitter) + " m/s)",
+                       verdict(confirmed)});
+    }
+    {
+        const RunRecord& b = get(m, "chain", kB);
+        const RunRecord& f = get(m, "chain", kFNGS);
+        auto [root, end] = rootAndEnd(b, 5);
+        bool confirmed = b.metrics.maxSeparation > 2.0 * f.metrics.maxSeparation && root > end;
+        out.push_back({"Baumgarte",
+                       "the chain links separate easily close to the root and they jitter as "
+                       "they struggle to pull together",
+                       "chain: largest separation beside FullNGS, the mean of the five joints "
+                       "nearest the root against the five at the free end, and recovery; "
+                       "confirmed if Baumgarte separates over twice as much as FullNGS and most "
+                       "near the root",
+                       "max separation " + metres(b.metrics.maxSeparation) + " (FullNGS " +
+                           metres(f.metrics.maxSeparation) + "); root joints " + metres(root) +
+                           ", free-end joints " + metres(end) +
+                           "; back within slop: " + recovery(b.metrics.recoverySeconds),
+                       verdict(confirmed)});
+    }
+    {
+        const RunRecord& b = get(m, "pendulum_limit", kB);
+        const RunRecord& f = get(m, "pendulum_limit", kFNGS);
+        bool confirmed = b.metrics.energyDrift() > 0.0 && f.metrics.energyDrift() <= 0.0;
+        out.push_back({"Baumgarte",
+                       "the position correction artificially affects the momentum, thus leading "
+                       "to instabilities and false bounce",
+                       "pendulum_limit (a pendulum swung into an angle limit): energy change "
+                       "over 10 s; confirmed if Baumgarte gains energy where FullNGS does not",
+                       "Baumgarte " + num(b.metrics.energyDrift()) + " J, FullNGS " +
+                           num(f.metrics.energyDrift()) + " J; overshoot past the limit " +
+                           num(b.metrics.maxLimitViolation) + " rad (FullNGS " +
+                           num(f.metrics.maxLimitViolation) + " rad)",
+                       verdict(confirmed)});
+    }
+    {
+        const RunRecord& low = get(m, "bridge", kB, 0.1f);
+        const RunRecord& mid = get(m, "bridge", kB, 0.2f);
+        const RunRecord& high = get(m, "bridge", kB, 1.0f);
+        bool lessStable = high.metrics.maxSeparation > mid.metrics.maxSeparation;
+        bool spongier = low.metrics.rmsSeparation > mid.metrics.rmsSeparation;
+        out.push_back({"Baumgarte",
+                       "a larger bias factor makes the bridge less stable, a smaller factor "
+                       "makes joints and contacts more spongy",
+                       "bridge with Baumgarte at bias 0.1, 0.2 and 1.0: largest separation "
+                       "(stability) and RMS separation (sponginess); confirmed if 1.0 separates "
+                       "more than 0.2 and 0.1 is spongier than 0.2 (contacts have their own "
+                       "bias in pivot2d and are not part of this test)",
+                       "max separation " + metres(low.metrics.maxSeparation) + " / " +
+                           metres(mid.metrics.maxSeparation) + " / " +
+                           metres(high.metrics.maxSeparation) + ", RMS " +
+                           metres(low.metrics.rmsSeparation) + " / " +
+                           metres(mid.metrics.rmsSeparation) + " / " +
+                           metres(high.metrics.rmsSeparation) + " (bias 0.1 / 0.2 / 1.0)",
+                       lessStable && spongier ? "confirmed"
+                       : lessStable ? "partly: less stable at 1.0, but not spongier at 0.1"
+                       : spongier   ? "partly: spongier at 0.1, but not less stable at 1.0"
+                                    : "not confirmed"});
+    }
+    {
+        const RunRecord& p = get(m, "bridge", kPV);
+        const RunRecord& b = get(m, "bridge", kB);
+        bool confirmed = p.metrics.maxSeparation < b.metrics.maxSeparation &&
+                         p.metrics.energyDrift() <= 0.0 && !p.metrics.blewUp;
+        out.push_back({"PseudoVelocity",
+                       "this is more stable than the Baumgarte method. The bridge is stable",
+                       "bridge: largest separation and energy change beside Baumgarte; "
+                       "confirmed if PseudoVelocity separates less and gains no energy",
+                       "max separation " + metres(p.metrics.maxSeparation) + " (Baumgarte " +
+                           metres(b.metrics.maxSeparation) + "), energy change " +
+                           num(p.metrics.energyDrift()) + " J (Baumgarte " +
+                           num(b.metrics.energyDrift()) + " J)",
+                       verdict(confirmed)});
+    }
+    {
+        const RunRecord& p = get(m, "pendulum_drag", kPV);
+        const RunRecord& f = get(m, "pendulum_drag", kFNGS);
+        bool confirmed = p.metrics.maxSeparation > 0.1;
+        out.push_back({"PseudoVelocity",
+                       "joints still separate with large angular velocities. Drag the simple "
+                       "pendulum in a circle quickly and the joint will separate",
+                       "pendulum_drag (the ball dragged round a 3 m circle up to 4 rev/s): "
+                       "largest separation; confirmed if above 10 cm",
+                       "PseudoVelocity " + metres(p.metrics.maxSeparation) + ", FullNGS " +
+                           metres(f.metrics.maxSeparation),
+                       verdict(confirmed)});
+    }
+    {
+        const RunRecord& chain = get(m, "chain", kPV);
+        const RunRecord& drag = get(m, "chain_drag", kPV);
+        const RunRecord& fchain = get(m, "chain", kFNGS);
+        const RunRecord& fdrag = get(m, "chain_drag", kFNGS);
+        bool never = chain.metrics.recoverySeconds == scenes::RunMetrics::kNever &&
+                     drag.metrics.recoverySeconds == scenes::RunMetrics::kNever;
+        out.push_back({"PseudoVelocity", "the chain separates easily and does not recover",
+                       "chain (released) and chain_drag (whirled, released at 4 s): largest "
+                       "separation and time to get back within the linear slop; confirmed if "
+                       "it never gets back in either",
+                       "chain: " + metres(chain.metrics.maxSeparation) + ", back within slop " +
+                           recovery(chain.metrics.recoverySeconds) + " (FullNGS " +
+                           metres(fchain.metrics.maxSeparation) + ", " +
+                           recovery(fchain.metrics.recoverySeconds) +
+                           "); chain_drag: " + metres(drag.metrics.maxSeparation) + ", " +
+                           recovery(drag.metrics.recoverySeconds) + " (FullNGS " +
+                           metres(fdrag.metrics.maxSeparation) + ", " +
+                           recovery(fdrag.metrics.recoverySeconds) + ")",
+                       verdict(never)});
+    }
+    {
+        const RunRecord& low = get(m, "bridge_heavy", kPV, 0.2f);
+        const RunRecord& half = get(m, "bridge_heavy", kPV, 0.5f);
+        const RunRecord& high = get(m, "bridge_heavy", kPV, 1.0f);
+        bool confirmed =
+            high.metrics.maxSeparation > 2.0 * low.metrics.maxSeparation || high.metrics.blewUp;
+        out.push_back({"PseudoVelocity",
+                       "a larger value lead to the bridge collapsing when a heavy cube drops on "
+                       "it",
+                       "bridge_heavy (a box of 4x the bridge's mass dropped from 5 m) with "
+                       "PseudoVelocity at bias 0.2, 0.5 and 1.0: largest separation; confirmed "
+                       "if 1.0 tears the joints over twice as far as 0.2 or blows up",
+                       "max separation " + metres(low.metrics.maxSeparation) + " / " +
+                           metres(half.metrics.maxSeparation) + " / " +
+                           metres(high.metrics.maxSeparation) + " (bias 0.2 / 0.5 / 1.0)" +
+                           (high.metrics.blewUp ? ", blew up at 1.0" : ""),
+                       verdict(confirmed)});
+    }
+    {
+        std::string result;
+        int holds = 0;
+        for (const char* scene : {"bridge", "chain"}) {
+            double mn = get(m, scene, kMNGS).metrics.maxSeparation;
+            double others = std::min(get(m, scene, kB).metrics.maxSeparation,
+                                     get(m, scene, kPV).metrics.maxSeparation);
+            if (mn < 0.5 * others) ++holds;
+            result += std::string(result.empty() ? "" : "; ") + scene + ": ModifiedNGS " +
+                      metres(mn) + ", the better of Baumgarte and PseudoVelocity " + metres(others);
+        }
+        out.push_back({"ModifiedNGS", "the bridge and chain are much more stable",
+                       "largest separation on the bridge and the chain beside the better of "
+                       "Baumgarte and PseudoVelocity; confirmed for a scene if less than half",
+                       result,
+                       holds == 2   ? "confirmed"
+                       : holds == 1 ? "partly: much more stable on one of the two scenes only"
+                                    : "not confirmed"});
+    }
+    {
+        const RunRecord& mn = get(m, "pendulum", kMNGS);
+        const RunRecord& f = get(m, "pendulum", kFNGS);
+        const RunRecord& drag = get(m, "pendulum_drag", kMNGS);
+        bool unstable = mn.metrics.blewUp || mn.metrics.maxSeparation > 0.1;
+        std::string v = !unstable           ? "not confirmed"
+                        : mn.metrics.blewUp ? "confirmed"
+                                            : "partly: the joint flies apart, but recovers "
+                                              "instead of blowing up";
+        out.push_back({"ModifiedNGS",
+                       "the simple pendulum goes unstable at high angular velocities",
+                       "pendulum at 100 rad/s: largest and final separation and blow-up "
+                       "(non-finite or faster than 1e4 m/s); confirmed if it blows up",
+                       "max separation " + metres(mn.metrics.maxSeparation) + " (FullNGS " +
+                           metres(f.metrics.maxSeparation) + "), final " +
+                           metres(mn.metrics.finalSeparation) +
+                           ", blew up: " + (mn.metrics.blewUp ? "yes" : "no") +
+                           "; pendulum_drag: " + metres(drag.metrics.maxSeparation),
+                       v});
+    }
+    {
+        int blowUps = 0, best = 0, total = 0;
+        std::string worstScene;
+        double worst = 0.0;
+        for (const scenes::SceneInfo& info : scenes::allScenes()) {
+            const RunRecord& f = get(m, info.name, kFNGS);
+            if (f.metrics.blewUp) ++blowUps;
+            double others = 1e30;
+            for (PositionSolver s : {kB, kPV, kMNGS}) {
+                others = std::min(others, get(m, info.name, s).metrics.maxSeparation);
+            }
+            ++total;
+            if (f.metrics.maxSeparation <= 1.1 * others) ++best;
+            if (f.metrics.maxSeparation > worst) {
+                worst = f.metrics.maxSeparation;
+                worstScene = info.name;
+            }
+        }
+        bool confirmed = blowUps == 0 && 2 * best > total;
+        out.push_back({"FullNGS", "stable in all tests. The joints display good stiffness",
+                       "every scene: blow-ups, and in how many scenes FullNGS's largest "
+                       "separation is the smallest of the four (within 10%); confirmed if it "
+                       "never blows up and is the stiffest in most scenes",
+                       std::to_string(blowUps) + " blow-ups; stiffest in " + std::to_string(best) +
+                           " of " + std::to_string(total) + " scenes; its largest separation " +
+                           metres(worst) + " (" + worstScene + ")",
+                       verdict(confirmed)});
+    }
+    {
+        Sag sag = bridgeSag(m.steps);
+        const RunRecord& f = get(m, "bridge", kFNGS);
+        out.push_back({"FullNGS", "the bridge still sags, but this is better than infinite forces",
+                       "bridge (deck at 5 m, no slack): the middle plank's height over 10 s; "
+                       "confirmed if it hangs below the deck while no joint tears (separation "
+                       "under 10 cm)",
+                       "middle plank at " + metres(sag.mean) + " on average, between " +
+                           metres(sag.low) + " and " + metres(sag.high) +
+                           " (the bridge keeps bouncing; Box2D 2.4.1's joint does the same, "
+                           "bit for bit); largest separation " +
+                           metres(f.metrics.maxSeparation),
+                       verdict(sag.mean < 5.0 && f.metrics.maxSeparation < 0.1)});
+    }
+    {
+        std::string result;
+        bool robust = true;
+        for (const std::string& scene : iterationSweepScenes()) {
+            const RunRecord& one = get(m, scene, kFNGS, -1.0f, 1);
+            const RunRecord& three = get(m, scene, kFNGS);
+            robust = robust && !one.metrics.blewUp &&
+                     one.metrics.maxSeparation <= 2.0 * three.metrics.maxSeparation;
+            result += std::string(result.empty() ? "" : "; ") + scene + ": max separation " +
+                      metres(one.metrics.maxSeparation) + " with 1 iteration, " +
+                      metres(three.metrics.maxSeparation) + " with 3; " +
+                      num(one.metrics.microsecondsPerStep) + " against " +
+                      num(three.metrics.microsecondsPerStep) + " us per step";
+        }
+        out.push_back({"Recommendation",
+                       "the number of NGS iterations can be reduced for better performance "
+                       "without harming robustness much",
+                       "FullNGS with 1 position iteration instead of 3 on chain, bridge_heavy "
+                       "and ragdoll; confirmed if it never blows up and never separates more "
+                       "than twice as far",
+                       result, verdict(robust)});
+    }
+    {
+        std::string result;
+        bool best = true;
+        for (const char* scene : {"ragdoll", "ragdoll_motorized"}) {
+            double f = get(m, scene, kFNGS).metrics.maxSeparation;
+            double b = get(m, scene, kB).metrics.maxSeparation;
+            double p = get(m, scene, kPV).metrics.maxSeparation;
+            best = best && f < b && f < p;
+            result += std::string(result.empty() ? "" : "; ") + scene + ": FullNGS " + metres(f) +
+                      ", Baumgarte " + metres(b) + ", PseudoVelocity " + metres(p);
+        }
+        out.push_back({"Recommendation",
+                       "Full NGS might be a good choice for ragdolls, especially motorized "
+                       "ragdolls where joint separation can be problematic",
+                       "ragdoll and ragdoll_motorized (thrown at a wall): largest separation; "
+                       "confirmed if FullNGS separates less than Baumgarte and PseudoVelocity in "
+                       "both",
+                       result, verdict(best)});
+    }
+    return out;
+}
+
+}  // namespace pivot::report

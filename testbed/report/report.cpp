@@ -1,0 +1,268 @@
+#include "report/report.h"
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "report/observations.h"
+#include "report/run_matrix.h"
+#include "report/svg.h"
+
+namespace pivot::report {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string num(const char* spec, double v) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, spec, v);
+    return buffer;
+}
+
+std::string optional(const char* spec, double v) {
+    if (v == scenes::RunMetrics::kNotApplicable) return "-";
+    if (v == scenes::RunMetrics::kNever) return "never";
+    return num(spec, v);
+}
+
+std::string machine() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    while (std::getline(cpuinfo, line)) {
+        if (line.rfind("model name", 0) == 0) {
+            model = line.substr(line.find(':') + 2);
+            break;
+        }
+    }
+    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
+}
+
+std::string today() {
+    std::time_t now = std::time(nullptr);
+    char buffer[32];
+    std::strftime(buffer, sizeof buffer, "%Y-%m-%d", std::gmtime(&now));
+    return buffer;
+}
+
+bool writeFile(const fs::path& path, const std::string& text, std::string& problem) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) problem = "cannot write " + path.string();
+    return static_cast<bool>(out);
+}
+
+std::string runRow(const RunRecord& r) {
+    const scenes::RunMetrics& m = r.metrics;
+    std::ostringstream row;
+    row << "| " << positionSolverName(r.solver) << " | " << num("%.2f", r.bias) << " | "
+        << num("%.2e", m.maxSeparation) << " | " << num("%.2e", m.rmsSeparation) << " | "
+        << num("%.2e", m.finalSeparation) << " | " << optional("%.2f s", m.recoverySeconds) << " | "
+        << optional("%.2e", m.jitter) << " | " << num("%.3f", m.maxLimitViolation) << " | "
+        << num("%.4g", m.energyDrift()) << " | " << (m.blewUp ? "**yes**" : "no") << " | "
+        << num("%.2f", m.meanPositionIterations) << " | " << num("%.1f", m.microsecondsPerStep)
+        << " |\n";
+    return row.str();
+}
+
+std::string separationPlot(const RunMatrix& matrix, const std::string& scene) {
+    LinePlot plot;
+    plot.title = scene + ": largest joint separation";
+    plot.xLabel = "time (s)";
+    plot.yLabel = "separation (m)";
+    plot.logY = true;
+    for (int s = 0; s < kPositionSolverCount; ++s) {
+        const RunRecord* r = matrix.find(scene, static_cast<PositionSolver>(s));
+        if (!r) continue;
+        Series series;
+        series.name = positionSolverName(r->solver);
+        for (std::size_t i = 0; i < r->maxSeparation.size(); ++i) {
+            series.points.push_back({double(i + 1) / matrix.hz, r->maxSeparation[i]});
+        }
+        plot.series.push_back(series);
+    }
+    return renderLinePlot(plot);
+}
+
+// A view of the moving parts: the static ground is 80 m wide and would shrink everything.
+std::pair<Vec2, Vec2> dynamicView(const std::vector<SnapshotFrame>& frames) {
+    Vec2 lower{1e9f, 1e9f}, upper{-1e9f, -1e9f};
+    auto grow = [&](Vec2 p, float r) {
+        lower = {std::min(lower.x, p.x - r), std::min(lower.y, p.y - r)};
+        upper = {std::max(upper.x, p.x + r), std::max(upper.y, p.y + r)};
+    };
+    for (const SnapshotFrame& f : frames) {
+        for (const auto& c : f.circles) {
+            if (!c.isStatic) grow(c.center, c.radius);
+        }
+        for (const auto& p : f.polygons) {
+            if (p.isStatic) continue;
+            for (Vec2 v : p.vertices) grow(v, 0.0f);
+        }
+        for (const auto& j : f.joints) grow(j.first, 0.0f);
+    }
+    if (lower.x > upper.x) return {};
+    lower = {std::min(lower.x, -1.0f), std::min(lower.y, -1.0f)};  // keep the ground line in view
+    return {lower - Vec2{1.0f, 1.0f}, upper + Vec2{1.0f, 1.0f}};
+}
+
+std::string costPlot(const RunMatrix& matrix, const std::string& scene) {
+    ScatterPlot plot;
+    plot.title = scene + ": cost against error (one point per solver and position iterations)";
+    plot.xLabel = "microseconds per step";
+    plot.yLabel = "RMS joint separation (m)";
+    plot.logY = true;
+    for (int s = 0; s < kPositionSolverCount; ++s) {
+        auto solver = static_cast<PositionSolver>(s);
+        for (int iterations : sweptIterations()) {
+            const RunRecord* r = matrix.find(scene, solver, -1.0f, iterations);
+            if (!r) continue;
+            plot.points.push_back({r->metrics.microsecondsPerStep, r->metrics.rmsSeparation,
+                                   positionSolverName(solver), std::to_string(iterations)});
+        }
+    }
+    return renderScatterPlot(plot);
+}
+
+std::string observationsMarkdown(const std::vector<Observation>& observations) {
+    std::ostringstream md;
+    for (const Observation& o : observations) {
+        md << "### " << o.algorithm << ": \"" << o.claim << "\"\n\n"
+           << "- Measured: " << o.test << ".\n"
+           << "- Result: " << o.result << ".\n"
+           << "- Verdict: **" << o.verdict << "**.\n\n";
+    }
+    return md.str();
+}
+
+std::string replaceBlock(const std::string& text, const std::string& block, bool& found) {
+    std::size_t begin = text.find(kObservationsBegin);
+    std::size_t end = text.find(kObservationsEnd);
+    found = begin != std::string::npos && end != std::string::npos && begin < end;
+    if (!found) return text;
+    begin += std::string(kObservationsBegin).size();
+    return text.substr(0, begin) + "\n\n" + block + text.substr(end);
+}
+
+}  // namespace
+
+std::string generateReport(const ReportSettings& settings, std::ostream& log) {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
+    const fs::path docs(settings.docsDir);
+    const fs::path figures = docs / "results";
+    std::error_code ec;
+    fs::create_directories(figures, ec);
+    if (ec) return "cannot create " + figures.string() + ": " + ec.message();
+
+    RunMatrix matrix = runMatrix(
+        settings.steps, [&](const std::string& scene) { log << "running " << scene << "\n"; });
+    std::vector<Observation> observations = evaluateObservations(matrix);
+
+    std::string problem;
+    std::ostringstream md;
+    md << "# Results\n\n"
+       << "Generated by `pivot-testbed report` (run it from the repository root to regenerate "
+          "this page, its figures in `docs/results/` and the observations in "
+          "`docs/position-correction.md`). Every scene runs "
+       << settings.steps << " steps at 60 Hz with 8 velocity and 3 position iterations and "
+       << "the NGS contact correction. Microseconds per step depend on the machine: this run: "
+       << machine() << ", " << today() << ".\n\n"
+       << "Columns: *max*, *RMS* and *final sep* are the joint separation |anchorB - anchorA| "
+          "(largest over joints; max and RMS over the run, final after the last step); "
+          "*recovery* is the time from the end of the scene's disturbance until every joint is "
+          "back within the linear slop (5 mm) for good (`never` when it is not back by the "
+          "end, `-` when the scene has no disturbance); *jitter* is the RMS speed of the "
+          "bodies once the scene should be at rest (`-` when it never should be); *limit* is "
+          "the furthest a limited joint went past its limit (rad); *drift* is the change of "
+          "kinetic plus potential energy (J; bodies a scene adds count from the moment they "
+          "appear; the tumbler is driven); *blew up* is a non-finite state or a body faster "
+          "than 1e4 m/s; *NGS its* the position iterations actually run per step.\n\n";
+
+    md << "## The seed note's observations\n\n"
+       << "Each observation of `shared/seed/position-correction.txt`, the measurement that "
+          "tests it and the verdict (the rules are in `docs/position-correction.md`).\n\n"
+       << "| algorithm | the note says | measured | verdict |\n| --- | --- | --- | --- |\n";
+    for (const Observation& o : observations) {
+        md << "| " << o.algorithm << " | \"" << o.claim << "\" | " << o.result << " | " << o.verdict
+           << " |\n";
+    }
+    md << "\n## Scenes\n\n";
+
+    for (const scenes::SceneInfo& info : scenes::allScenes()) {
+        const std::string name = info.name;
+        md << "### " << name << "\n\n"
+           << info.description << ".\n\n"
+           << "| solver | bias | max sep (m) | RMS sep (m) | final sep (m) | recovery | jitter "
+              "(m/s) | limit (rad) | drift (J) | blew up | NGS its | us/step |\n"
+           << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: "
+              "|\n";
+        for (const RunRecord& r : matrix.runs) {
+            if (r.scene == name && r.positionIterations == kDefaultPositionIterations) {
+                md << runRow(r);
+            }
+        }
+        const std::string plotFile = name + "-separation.svg";
+        const std::string stripFile = name + "-snapshots.svg";
+        if (!writeFile(figures / plotFile, separationPlot(matrix, name), problem)) return problem;
+        const RunRecord* full = matrix.find(name, PositionSolver::FullNGS);
+        if (full && !full->snapshots.empty()) {
+            std::string strip = renderSnapshotStrip(name + " with FullNGS", full->snapshots,
+                                                    dynamicView(full->snapshots));
+            if (!writeFile(figures / stripFile, strip, problem)) return problem;
+        }
+        md << "\n![" << name << ": separation against time](results/" << plotFile << ")\n\n"
+           << "![" << name << ": snapshots with FullNGS](results/" << stripFile << ")\n\n";
+    }
+
+    md << "## Cost against error\n\n"
+       << "Each point is one run: a position solver at 1, 2, 3, 5 or 10 position iterations "
+          "(the label), its cost in microseconds per step against its RMS joint separation.\n\n";
+    for (const std::string& scene : iterationSweepScenes()) {
+        const std::string file = "cost-" + scene + ".svg";
+        if (!writeFile(figures / file, costPlot(matrix, scene), problem)) return problem;
+        md << "![" << scene << ": cost against error](results/" << file << ")\n\n";
+        md << "| solver | iterations | RMS sep (m) | max sep (m) | us/step |\n"
+           << "| --- | ---: | ---: | ---: | ---: |\n";
+        for (int s = 0; s < kPositionSolverCount; ++s) {
+            for (int iterations : sweptIterations()) {
+                const RunRecord* r =
+                    matrix.find(scene, static_cast<PositionSolver>(s), -1.0f, iterations);
+                if (!r) continue;
+                md << "| " << positionSolverName(r->solver) << " | " << iterations << " | "
+                   << num("%.2e", r->metrics.rmsSeparation) << " | "
+                   << num("%.2e", r->metrics.maxSeparation) << " | "
+                   << num("%.1f", r->metrics.microsecondsPerStep) << " |\n";
+            }
+        }
+        md << "\n";
+    }
+
+    double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    md << "This page took " << num("%.0f", seconds) << " s to generate (" << matrix.runs.size()
+       << " runs).\n";
+    if (!writeFile(docs / "results.md", md.str(), problem)) return problem;
+
+    if (settings.updatePositionCorrection) {
+        const fs::path pc = docs / "position-correction.md";
+        std::ifstream in(pc, std::ios::binary);
+        std::stringstream text;
+        text << in.rdbuf();
+        bool found = false;
+        std::string updated = replaceBlock(text.str(), observationsMarkdown(observations), found);
+        if (!found) {
+            return pc.string() + " has no observations block (" + kObservationsBegin + " ... " +
+                   kObservationsEnd + ")";
+        }
+        if (!writeFile(pc, updated, problem)) return problem;
+    }
+    log << "wrote " << (docs / "results.md").string() << " and " << figures.string() << "/ in "
+        << num("%.0f", seconds) << " s\n";
+    return {};
+}
+
+}  // namespace pivot::report

@@ -1,0 +1,51 @@
+// The runs behind the generated report: every scene with every position solver, the bias sweep
+// for the velocity-level solvers, and the position-iteration sweep behind the cost-against-
+// error plots. Each run keeps its metrics and the time series the plots need.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "report/svg.h"
+#include "scenes/metrics.h"
+#include "scenes/scene.h"
+
+namespace pivot::report {
+
+struct RunRecord {
+    std::string scene;
+    PositionSolver solver = PositionSolver::FullNGS;
+    float bias = 0.0f;
+    int positionIterations = kDefaultPositionIterations;
+    scenes::RunMetrics metrics;
+    std::vector<float> maxSeparation;       ///< per step, m
+    std::vector<float> jointMaxSeparation;  ///< per joint (in scene order), over the run, m
+    std::vector<SnapshotFrame> snapshots;   ///< only for the FullNGS main runs
+};
+
+struct RunMatrix {
+    std::vector<RunRecord> runs;
+    int steps = 0;
+    float hz = 60.0f;
+
+    /// The run with these settings, or nullptr. bias < 0 means the solver's default.
+    const RunRecord* find(const std::string& scene, PositionSolver solver, float bias = -1.0f,
+                          int positionIterations = kDefaultPositionIterations) const;
+};
+
+/// Scenes of the position-iteration sweep (the cost-against-error plots).
+const std::vector<std::string>& iterationSweepScenes();
+/// Biases of the sweep for Baumgarte and PseudoVelocity.
+const std::vector<float>& sweptBiases();
+/// Position iterations of the cost-against-error sweep.
+const std::vector<int>& sweptIterations();
+
+/// Runs the whole matrix (NGS contact correction, 8 velocity iterations). `progress` is told
+/// each scene as it starts.
+RunMatrix runMatrix(int steps, const std::function<void(const std::string&)>& progress);
+
+/// The world drawn now, for a snapshot strip.
+SnapshotFrame captureFrame(const World& world, const std::string& caption);
+
+}  // namespace pivot::report

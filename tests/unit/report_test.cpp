@@ -1,0 +1,109 @@
+// The report generator runs, and what it writes is well formed: every SVG parses, every
+// Markdown table row has its header's columns, every figure it links exists, no number is
+// "nan" or "inf", and the observations block of position-correction.md is filled in.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "report/report.h"
+#include "report/svg.h"
+
+using namespace pivot;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+int countColumns(const std::string& row) {
+    int bars = 0;
+    for (char c : row) bars += c == '|';
+    return bars - 1;
+}
+
+}  // namespace
+
+TEST(Report, GeneratesWellFormedMarkdownAndSvg) {
+    const fs::path dir = fs::temp_directory_path() / "pivot-report-test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    {
+        std::ofstream pc(dir / "position-correction.md");
+        pc << "# prose before\n\n"
+           << report::kObservationsBegin << "\nstale\n"
+           << report::kObservationsEnd << "\n\nprose after\n";
+    }
+    report::ReportSettings settings;
+    settings.docsDir = dir.string();
+    settings.steps = 60;
+    std::ostringstream log;
+    ASSERT_EQ(report::generateReport(settings, log), "") << log.str();
+
+    const std::string md = readFile(dir / "results.md");
+    ASSERT_FALSE(md.empty());
+    EXPECT_NE(md.find("## The seed note's observations"), std::string::npos);
+    EXPECT_EQ(md.find("nan"), std::string::npos);
+    EXPECT_EQ(md.find("inf |"), std::string::npos);
+
+    // Tables: every row has as many cells as the header above it.
+    std::istringstream lines(md);
+    std::string line;
+    int header = -1, rows = 0, images = 0;
+    while (std::getline(lines, line)) {
+        if (line.rfind("|", 0) == 0) {
+            if (header < 0) header = countColumns(line);
+            EXPECT_EQ(countColumns(line), header) << line;
+            ++rows;
+        } else {
+            header = -1;
+        }
+        std::size_t link = line.find("](results/");
+        if (link != std::string::npos) {
+            std::string file = line.substr(link + 2, line.find(')', link) - link - 2);
+            EXPECT_TRUE(fs::exists(dir / file)) << file;
+            ++images;
+        }
+    }
+    EXPECT_GT(rows, 100);
+    EXPECT_GT(images, 20);
+
+    int svgs = 0;
+    for (const auto& entry : fs::directory_iterator(dir / "results")) {
+        std::string svg = readFile(entry.path());
+        std::string problem;
+        EXPECT_TRUE(report::isWellFormedXml(svg, &problem)) << entry.path() << ": " << problem;
+        EXPECT_EQ(svg.find("nan"), std::string::npos) << entry.path();
+        EXPECT_EQ(svg.find("inf"), std::string::npos) << entry.path();
+        ++svgs;
+    }
+    EXPECT_GT(svgs, 20);
+
+    const std::string pc = readFile(dir / "position-correction.md");
+    EXPECT_EQ(pc.find("stale"), std::string::npos);
+    EXPECT_NE(pc.find("prose before"), std::string::npos);
+    EXPECT_NE(pc.find("prose after"), std::string::npos);
+    EXPECT_NE(pc.find("### Baumgarte"), std::string::npos);
+    EXPECT_NE(pc.find("- Verdict: **"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(Report, RefusesADocumentWithoutTheObservationsBlock) {
+    const fs::path dir = fs::temp_directory_path() / "pivot-report-test-noblock";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    { std::ofstream(dir / "position-correction.md") << "no markers here\n"; }
+    report::ReportSettings settings;
+    settings.docsDir = dir.string();
+    settings.steps = 30;
+    std::ostringstream log;
+    EXPECT_NE(report::generateReport(settings, log).find("observations block"), std::string::npos);
+    EXPECT_EQ(readFile(dir / "position-correction.md"), "no markers here\n");
+    fs::remove_all(dir);
+}
