@@ -155,6 +155,21 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
     const Clock::time_point start = Clock::now();
     const fs::path docs(settings.docsDir);
     const fs::path figures = docs / "results";
+    const fs::path pc = docs / "position-correction.md";
+    std::string pcText;
+    if (settings.updatePositionCorrection) {
+        // Checked before the runs, so a wrong directory fails at once and writes nothing.
+        std::ifstream in(pc, std::ios::binary);
+        std::stringstream text;
+        text << in.rdbuf();
+        pcText = text.str();
+        bool found = false;
+        replaceBlock(pcText, "", found);
+        if (!found) {
+            return pc.string() + " has no observations block (" + kObservationsBegin + " ... " +
+                   kObservationsEnd + ")";
+        }
+    }
     std::error_code ec;
     fs::create_directories(figures, ec);
     if (ec) return "cannot create " + figures.string() + ": " + ec.message();
@@ -248,16 +263,8 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
     if (!writeFile(docs / "results.md", md.str(), problem)) return problem;
 
     if (settings.updatePositionCorrection) {
-        const fs::path pc = docs / "position-correction.md";
-        std::ifstream in(pc, std::ios::binary);
-        std::stringstream text;
-        text << in.rdbuf();
         bool found = false;
-        std::string updated = replaceBlock(text.str(), observationsMarkdown(observations), found);
-        if (!found) {
-            return pc.string() + " has no observations block (" + kObservationsBegin + " ... " +
-                   kObservationsEnd + ")";
-        }
+        std::string updated = replaceBlock(pcText, observationsMarkdown(observations), found);
         if (!writeFile(pc, updated, problem)) return problem;
     }
     log << "wrote " << (docs / "results.md").string() << " and " << figures.string() << "/ in "

@@ -105,5 +105,6 @@ TEST(Report, RefusesADocumentWithoutTheObservationsBlock) {
     std::ostringstream log;
     EXPECT_NE(report::generateReport(settings, log).find("observations block"), std::string::npos);
     EXPECT_EQ(readFile(dir / "position-correction.md"), "no markers here\n");
+    EXPECT_FALSE(fs::exists(dir / "results.md"));  // refused before writing anything
     fs::remove_all(dir);
 }
