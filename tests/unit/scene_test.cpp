@@ -149,6 +149,57 @@ TEST(Scenes, TumblerTurnsAndKeepsItsBoxesInside) {
     }
 }
 
+TEST(Scenes, PendulumDragSpinsTheBallUpToAbout4RevolutionsPerSecond) {
+    for (PositionSolver solver : {PositionSolver::PseudoVelocity, PositionSolver::FullNGS}) {
+        SceneOptions options;
+        options.solver = solver;
+        Scene scene = buildScene(*findScene("pendulum_drag"), options);
+        float fastest = 0.0f;
+        RunMetrics m = runScene(scene, RunSettings{}, [&](int) {
+            fastest = std::max(fastest, std::fabs(scene.world->jointSpeed(scene.joints[0])));
+        });
+        EXPECT_GT(fastest / (2.0f * kPi), 3.5f) << positionSolverName(solver);
+        EXPECT_EQ(scene.disturbanceEndStep, 180);
+        if (solver == PositionSolver::FullNGS) {
+            EXPECT_LT(m.maxSeparation, 1e-3);  // FullNGS holds through it
+            EXPECT_EQ(m.recoverySeconds, 0.0);
+        } else {
+            EXPECT_GT(m.maxSeparation, 0.1);  // violent enough to tear a velocity-level joint
+        }
+    }
+}
+
+TEST(Scenes, ChainDragGrabsTheFreeEndAndLetsGo) {
+    Scene scene = buildScene(*findScene("chain_drag"), SceneOptions{});
+    RunSettings settings;
+    settings.steps = 300;  // 5 s: grabbed at 1 s, released at 4 s
+    Vec2 endAt2s;
+    runScene(scene, settings, [&](int step) {
+        if (step == 119) endAt2s = scene.world->bodyPosition(scene.bodies.back());
+    });
+    // While whirled, the free end is near the 5 m circle about (12, 15).
+    EXPECT_NEAR(distance(endAt2s, {12.0f, 15.0f}), 5.0f, 3.0f);
+}
+
+TEST(Scenes, RagdollHitsTheWallAndComesToRestWithinItsLimits) {
+    for (const char* name : {"ragdoll", "ragdoll_motorized"}) {
+        Scene scene = buildScene(*findScene(name), SceneOptions{});
+        ASSERT_EQ(scene.bodies.size(), 10u);
+        ASSERT_EQ(scene.joints.size(), 9u);
+        float furthest = -1e9f;
+        RunMetrics m = runScene(scene, RunSettings{}, [&](int) {
+            for (BodyId b : scene.bodies) {
+                furthest = std::max(furthest, scene.world->bodyPosition(b).x);
+            }
+        });
+        EXPECT_GT(furthest, 7.5f) << name;  // reached the wall's face at x = 8.5
+        EXPECT_LT(scene.world->bodyPosition(scene.bodies[0]).y, 1.0f) << name;  // lying down
+        EXPECT_FALSE(m.blewUp) << name;
+        EXPECT_LT(limitViolation(scene), 2.0f * kAngularSlop) << name;  // settled within limits
+        EXPECT_LT(m.finalSeparation, kLinearSlop) << name;
+    }
+}
+
 class EverySceneAndSolver
     : public testing::TestWithParam<std::tuple<std::string, PositionSolver, ContactCorrection>> {};
 
