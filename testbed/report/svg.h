@@ -24,7 +24,9 @@ struct LinePlot {
     std::vector<Series> series;
 };
 
-/// Axes with ticks and labels, one coloured polyline per series, and a legend.
+/// Axes with ticks and labels, one coloured polyline per series, and a legend. Each run of
+/// finite points is one polyline (a lone point also gets a dot). Sizes below 160 x 120 px are
+/// enlarged to that.
 std::string renderLinePlot(const LinePlot& plot, int width = 720, int height = 360);
 
 struct ScatterPoint {
@@ -43,6 +45,8 @@ struct ScatterPlot {
     std::vector<ScatterPoint> points;
 };
 
+/// Points as dots coloured by group (legend of the named groups), labels beside them. Points
+/// with a non-finite coordinate are left out; on a log axis values <= 0 sit on its lower edge.
 std::string renderScatterPlot(const ScatterPlot& plot, int width = 720, int height = 400);
 
 /// A scene drawn at one moment, in world coordinates (metres, y up).
@@ -65,16 +69,20 @@ struct SnapshotFrame {
 
 /// The frames side by side, all at one common scale fitted to the union of their contents
 /// (optionally limited to `view`, lower and upper corners, when view.second > view.first).
+/// Joints are two dots, with a red line between them when the anchors are over 1 mm apart.
+/// Shapes with non-finite coordinates are left out.
 std::string renderSnapshotStrip(const std::string& title, const std::vector<SnapshotFrame>& frames,
                                 std::pair<Vec2, Vec2> view = {}, int frameWidth = 240,
                                 int frameHeight = 200);
 
-/// Escapes &, <, >, " and ' for use in XML text and attributes.
+/// Escapes &, <, >, " and ' for use in XML text and attributes. Control characters that XML 1.0
+/// forbids even as references (all below 0x20 but tab, LF and CR) are dropped.
 std::string escapeXml(const std::string& text);
 
 /// A small, strict well-formedness check (balanced and properly nested elements, quoted
 /// attributes, known entities only, one root element): enough for tests to prove the
-/// generated SVG parses.
+/// generated SVG parses. Not supported (reported as problems): DOCTYPE, processing instructions
+/// other than a leading XML declaration. `problem` gets "offset N: what" for the first problem.
 bool isWellFormedXml(const std::string& document, std::string* problem = nullptr);
 
 }  // namespace pivot::report
