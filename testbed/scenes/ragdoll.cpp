@@ -1,7 +1,7 @@
 // A ragdoll, the seed note's suggested use of FullNGS ("especially motorized ragdolls where
 // joint separation can be problematic"): ten bodies (head, torso, upper and lower arms, thighs,
-// shins; density 100) joined by revolute joints with angle limits, thrown at 7 m/s and
-// spinning against a wall and onto the ground. Its parts never collide with each other (a
+// shins; density 100) joined by revolute joints with angle limits, thrown at 8.5 m/s and
+// spinning against a wall (hit in flight, about 0.7 s after the throw) and onto the ground. Its parts never collide with each other (a
 // shared negative filter group). The motorized variant adds to every joint a motor holding
 // speed 0 with up to 20 N m, like muscles keeping a pose.
 #include "ground.h"
@@ -28,7 +28,7 @@ void buildRagdollWith(Scene& scene, const SceneOptions& options, bool motorized)
     BodyId wall = world.createBody(BodyDef{});
     ShapeDef wallShape;
     wallShape.density = 0.0f;
-    world.createShape(wall, wallShape, Polygon::box(0.5f, 5.0f, {9.0f, 5.0f}, 0.0f));
+    world.createShape(wall, wallShape, Polygon::box(0.5f, 5.0f, {5.5f, 5.0f}, 0.0f));
 
     enum {
         kTorso,
@@ -64,7 +64,7 @@ void buildRagdollWith(Scene& scene, const SceneOptions& options, bool motorized)
 
     // Thrown as one rigid body: every part gets the velocity of its point of the whole.
     const Vec2 origin{-2.0f, 2.0f};
-    const Vec2 velocity{7.0f, 2.0f};
+    const Vec2 velocity{8.0f, 3.0f};
     const float spin = -3.0f;
     const Vec2 spinCenter = origin + Vec2{0.0f, 1.0f};
 
