@@ -1,2 +1,132 @@
-// Placeholder: implementation pending.
+// Recording scene runs for the browser replay. Each run steps its own copy of the scene, so the
+// four solvers start from identical worlds and differ only by what their joints do.
 #include "replay/recording.h"
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scenes/metrics.h"
+
+namespace pivot::replay {
+
+namespace {
+
+// The testbed's defaults (scenes::RunSettings), which recording.h promises.
+constexpr float kHz = 60.0f;
+constexpr int kVelocityIterations = kDefaultVelocityIterations;  // 8
+constexpr int kPositionIterations = kDefaultPositionIterations;  // 3
+
+std::vector<Outline> outlinesOf(const World& world, BodyId body) {
+    std::vector<Outline> outlines;
+    for (ShapeId shape : world.bodyShapes(body)) {
+        Outline outline;
+        outline.type = world.shapeType(shape);
+        if (outline.type == ShapeType::Circle) {
+            Circle circle = world.shapeCircle(shape);
+            outline.center = circle.center;
+            outline.radius = circle.radius;
+        } else {
+            Polygon polygon = world.shapePolygon(shape);
+            outline.vertices.assign(polygon.vertices.begin(),
+                                    polygon.vertices.begin() + polygon.count);
+        }
+        outlines.push_back(std::move(outline));
+    }
+    return outlines;
+}
+
+// Follows the bodies of one world from frame to frame. Bodies are matched by slot and then by
+// the whole id, whose generation keeps a reused slot from passing for the body it held before.
+class RunRecorder {
+public:
+    explicit RunRecorder(Run& run) : run_(run) {}
+
+    void recordFrame(const World& world, int frame) {
+        for (BodyId body : world.bodyIds()) {
+            Track& track = trackOf(world, body, frame);
+            Transform t = world.bodyTransform(body);
+            track.poses.push_back(t.p.x);
+            track.poses.push_back(t.p.y);
+            track.poses.push_back(t.q.angle());
+        }
+        std::vector<float> anchors;
+        float maxSeparation = 0.0f;
+        for (JointId joint : world.jointIds()) {
+            Vec2 a = world.jointAnchorA(joint);
+            Vec2 b = world.jointAnchorB(joint);
+            anchors.insert(anchors.end(), {a.x, a.y, b.x, b.y});
+            float separation = world.jointSeparation(joint);
+            if (!(separation <= maxSeparation)) maxSeparation = separation;  // NaN wins
+        }
+        run_.jointAnchors.push_back(std::move(anchors));
+        run_.maxSeparation.push_back(maxSeparation);
+    }
+
+private:
+    Track& trackOf(const World& world, BodyId body, int frame) {
+        auto slot = static_cast<std::size_t>(body.index);
+        if (slot >= bySlot_.size()) bySlot_.resize(slot + 1, kNoTrack);
+        std::size_t& index = bySlot_[slot];
+        if (index != kNoTrack && ids_[index] == body) return run_.tracks[index];
+        index = run_.tracks.size();
+        ids_.push_back(body);
+        Track track;
+        track.outlines = outlinesOf(world, body);
+        track.isStatic = world.bodyType(body) == BodyType::Static;
+        track.firstFrame = frame;
+        run_.tracks.push_back(std::move(track));
+        return run_.tracks.back();
+    }
+
+    static constexpr std::size_t kNoTrack = static_cast<std::size_t>(-1);
+    Run& run_;
+    std::vector<BodyId> ids_;          // parallel to run_.tracks
+    std::vector<std::size_t> bySlot_;  // body slot -> its newest track, or kNoTrack
+};
+
+}  // namespace
+
+Recording recordScene(const scenes::SceneInfo& info, int steps, int stepsPerFrame) {
+    if (steps < 0 || stepsPerFrame < 1) {
+        throw std::invalid_argument("recordScene: steps (" + std::to_string(steps) +
+                                    ") must be >= 0 and stepsPerFrame (" +
+                                    std::to_string(stepsPerFrame) + ") >= 1");
+    }
+    Recording recording;
+    recording.scene = info.name;
+    recording.description = info.description;
+    recording.frameInterval = static_cast<float>(stepsPerFrame) / kHz;
+    recording.frameCount = steps / stepsPerFrame + 1;
+
+    for (int s = 0; s < kPositionSolverCount; ++s) {
+        auto solver = static_cast<PositionSolver>(s);
+        scenes::SceneOptions options;
+        options.solver = solver;
+        options.hz = kHz;
+        scenes::Scene scene = scenes::buildScene(info, options);
+        World& world = *scene.world;
+
+        Run run;
+        run.label = positionSolverName(solver);
+        RunRecorder recorder(run);
+        recorder.recordFrame(world, 0);
+        // A run that blows up stops there and repeats its last state: stepping a world full of
+        // NaNs or runaway speeds shows nothing more and only costs time.
+        bool stopped = false;
+        for (int i = 0; i < steps; ++i) {
+            if (!stopped) {
+                if (scene.beforeStep) scene.beforeStep(scene, i);
+                world.step(1.0f / kHz, kVelocityIterations, kPositionIterations);
+                stopped = scenes::isBlownUp(scene);
+            }
+            if ((i + 1) % stepsPerFrame == 0) recorder.recordFrame(world, (i + 1) / stepsPerFrame);
+        }
+        recording.runs.push_back(std::move(run));
+    }
+    return recording;
+}
+
+}  // namespace pivot::replay
