@@ -14,8 +14,8 @@ namespace pivot::replay {
 /// A shape's outline in its body's frame.
 struct Outline {
     ShapeType type = ShapeType::Circle;
-    Vec2 center;       ///< circle
-    float radius = 0;  ///< circle
+    Vec2 center;                 ///< circle
+    float radius = 0;            ///< circle
     std::vector<Vec2> vertices;  ///< polygon, counter-clockwise
 };
 

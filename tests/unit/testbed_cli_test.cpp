@@ -32,12 +32,18 @@ TEST(TestbedCli, DefaultsRunEverything) {
 }
 
 TEST(TestbedCli, ParsesEveryOption) {
-    CliOptions o =
-        parseCli({"--scene", "chain", "--solver", "pseudo_velocity", "--bias", "0.5", "--steps",
-                  "42", "--hz", "120", "--vel-iters", "4", "--pos-iters", "0", "--csv", "out.csv"});
+    CliOptions o = parseCli({"--scene",     "chain",     "--solver",    "pseudo_velocity",
+                             "--contact",   "baumgarte", "--bias",      "0.5",
+                             "--steps",     "42",        "--hz",        "120",
+                             "--vel-iters", "4",         "--pos-iters", "0",
+                             "--csv",       "out.csv",   "--html",      "run.html",
+                             "--docs",      "elsewhere"});
+    ASSERT_TRUE(o.scene && o.solver && o.contact && o.bias && o.csvPath && o.htmlPath);
     EXPECT_EQ(*o.scene, "chain");
     EXPECT_EQ(*o.solver, PositionSolver::PseudoVelocity);
     EXPECT_EQ(*o.contact, ContactCorrection::Baumgarte);
+    EXPECT_EQ(*o.htmlPath, "run.html");
+    EXPECT_EQ(o.docsDir, "elsewhere");
     EXPECT_EQ(*o.bias, 0.5f);
     EXPECT_EQ(o.steps, 42);
     EXPECT_EQ(o.hz, 120.0f);
@@ -45,6 +51,9 @@ TEST(TestbedCli, ParsesEveryOption) {
     EXPECT_EQ(o.positionIterations, 0);
     EXPECT_EQ(*o.csvPath, "out.csv");
     EXPECT_TRUE(parseCli({"--help"}).help);
+    EXPECT_EQ(parseCli({"reference"}).command, Command::Reference);
+    EXPECT_EQ(parseCli({"report", "--steps", "60"}).command, Command::Report);
+    EXPECT_EQ(parseCli({}).command, Command::Table);
 }
 
 TEST(TestbedCli, UnknownNamesListTheValidOnes) {
@@ -72,8 +81,9 @@ TEST(TestbedCli, BadValuesAreErrors) {
 
 TEST(TestbedCli, HelpExplainsEachOption) {
     std::string text = usage();
-    for (const char* option : {"--scene", "--solver", "--contact", "--list", "--bias", "--steps",
-                               "--hz", "--vel-iters", "--pos-iters", "--csv", "--help"}) {
+    for (const char* option :
+         {"--scene", "--solver", "--contact", "--list", "--bias", "--steps", "--hz", "--vel-iters",
+          "--pos-iters", "--csv", "--html", "--docs", "--help", "reference", "report"}) {
         EXPECT_NE(text.find(option), std::string::npos) << option;
     }
 }
