@@ -1,0 +1,31 @@
+// The benchmark scenes, each built in pivot2d and in Box2D 2.4.1 with identical parameters,
+// sleeping off. The first three follow Box2D v3's public benchmark suite (joint_grid,
+// large_pyramid, many_pyramids), so figures can be set beside published ones.
+#pragma once
+
+#include <box2d/box2d.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pivot/pivot.h"
+
+namespace pivot::bench {
+
+/// Takes step i (running the scene's script for it first, if it has one). Owns its world.
+using Stepper = std::function<void(int)>;
+
+struct BenchScene {
+    std::string name;
+    std::string description;
+    int steps = 0;  ///< steps per timed run
+    std::function<Stepper(PositionSolver)> buildPivot;
+    std::function<Stepper()> buildBox2d;
+};
+
+/// The scenes of the comparison, then the scaling series (chains and pyramids of growing size).
+std::vector<BenchScene> benchScenes();
+
+}  // namespace pivot::bench

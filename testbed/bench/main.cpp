@@ -1,0 +1,222 @@
+// pivot-bench: the same scenes in pivot2d and in Box2D 2.4.1, in one process, on one machine, in
+// one run. For each scene it times whole runs (a warm-up run, then repeats, alternating the
+// engines so drift affects both alike), takes the median milliseconds per step of each engine
+// and prints the ratio box2d / pivot ("speedup"). Then it reports heap bytes per body, joint and
+// contact, counted by a replaced global operator new.
+#include <malloc.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "bench/bench_scenes.h"
+
+// --- heap accounting ------------------------------------------------------------------------
+// Live bytes allocated through operator new (Box2D allocates with malloc and is not counted).
+static std::atomic<long long> gLiveBytes{0};
+
+void* operator new(std::size_t size) {
+    void* p = std::malloc(size == 0 ? 1 : size);
+    if (!p) throw std::bad_alloc();
+    gLiveBytes += static_cast<long long>(malloc_usable_size(p));
+    return p;
+}
+void operator delete(void* p) noexcept {
+    if (!p) return;
+    gLiveBytes -= static_cast<long long>(malloc_usable_size(p));
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    operator delete(p);
+}
+void* operator new[](std::size_t size) {
+    return operator new(size);
+}
+void operator delete[](void* p) noexcept {
+    operator delete(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    operator delete(p);
+}
+
+namespace {
+
+using namespace pivot;
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+    bool quick = false;
+    bool csv = false;
+    int repeats = 3;
+    std::string only;
+};
+
+double millisecondsPerStep(const bench::Stepper& step, int steps) {
+    Clock::time_point start = Clock::now();
+    for (int i = 0; i < steps; ++i) step(i);
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count() / steps;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+struct Result {
+    std::string scene;
+    double fullNgs = 0.0, baumgarte = 0.0, box2d = 0.0;
+};
+
+Result runScene(const bench::BenchScene& scene, const Options& options) {
+    const int steps = options.quick ? std::max(10, scene.steps / 20) : scene.steps;
+    auto timeIt = [&](auto build) {
+        auto stepper = build();  // built outside the timed region
+        return millisecondsPerStep(stepper, steps);
+    };
+    auto full = [&] { return scene.buildPivot(PositionSolver::FullNGS); };
+    auto baum = [&] { return scene.buildPivot(PositionSolver::Baumgarte); };
+    auto box2d = [&] { return scene.buildBox2d(); };
+    if (!options.quick) {  // warm-up: caches, page faults, frequency scaling
+        timeIt(full);
+        timeIt(box2d);
+    }
+    std::vector<double> a, b, c;
+    for (int r = 0; r < options.repeats; ++r) {
+        a.push_back(timeIt(full));
+        b.push_back(timeIt(baum));
+        c.push_back(timeIt(box2d));
+    }
+    return {scene.name, median(a), median(b), median(c)};
+}
+
+long long liveBytes() {
+    return gLiveBytes.load();
+}
+
+// Heap bytes per body (with one circle), per joint and per contact, from worlds built to size.
+void reportMemory(std::ostream& out) {
+    const int n = 10000;
+    long long before = liveBytes();
+    auto world = std::make_unique<World>();
+    std::vector<BodyId> bodies;
+    for (int i = 0; i < n; ++i) {
+        BodyDef def;
+        def.type = BodyType::Dynamic;
+        def.position = {float(i % 100), float(i / 100)};
+        bodies.push_back(world->createBody(def));
+        world->createShape(bodies.back(), ShapeDef{}, Circle{{0, 0}, 0.25f});
+    }
+    long long withBodies = liveBytes();
+    for (int i = 1; i < n; ++i) {
+        world->createJoint(RevoluteJointDef::atWorldAnchor(bodies[i - 1], bodies[i], {0, 0}));
+    }
+    long long withJoints = liveBytes();
+    world.reset();
+    (void)before;
+
+    // Contacts: a settled pyramid, measured across its first step (the step also sizes the
+    // solver's reusable buffers, which are counted here too).
+    bench::BenchScene pyramid;
+    for (const bench::BenchScene& s : bench::benchScenes()) {
+        if (s.name == "pyramid_40") pyramid = s;
+    }
+    auto world2 = std::make_unique<World>();
+    {
+        ShapeDef def;
+        def.friction = 0.6f;
+        BodyId ground = world2->createBody(BodyDef{});
+        ShapeDef g;
+        g.density = 0.0f;
+        world2->createShape(ground, g, Polygon::box(50.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+        const float gap = 2.0f * kPolygonRadius - kLinearSlop;
+        for (int row = 0; row < 40; ++row) {
+            for (int i = 0; i < 40 - row; ++i) {
+                BodyDef bd;
+                bd.type = BodyType::Dynamic;
+                bd.position = {-20.0f + (0.5f * row + i) * (1.0f + gap),
+                               0.5f + gap + row * (1.0f + gap)};
+                world2->createShape(world2->createBody(bd), def, Polygon::box(0.5f, 0.5f));
+            }
+        }
+    }
+    long long beforeStep = liveBytes();
+    world2->step(1.0f / 60.0f);
+    world2->step(1.0f / 60.0f);
+    long long afterStep = liveBytes();
+    int contacts = world2->lastStepStats().contactCount;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "\nheap bytes (counted through operator new):\n"
+                  "  per body with one circle shape: %.0f\n"
+                  "  per revolute joint:             %.0f\n"
+                  "  per contact (pyramid of 40 rows, %d contacts, including the solver's "
+                  "reusable buffers): %.0f\n",
+                  double(withBodies - before) / n, double(withJoints - withBodies) / (n - 1),
+                  contacts, contacts > 0 ? double(afterStep - beforeStep) / contacts : 0.0);
+    out << line;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options options;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "--quick") {
+            options.quick = true;
+            options.repeats = 1;
+        } else if (arg == "--csv") {
+            options.csv = true;
+        } else if (arg == "--repeats" && i + 1 < argc) {
+            options.repeats = std::max(1, std::atoi(argv[++i]));
+        } else if (arg == "--scene" && i + 1 < argc) {
+            options.only = argv[++i];
+        } else {
+            std::cerr << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--scene NAME]\n"
+                         "  Times each scene in pivot2d (FullNGS and Baumgarte joints) and in\n"
+                         "  Box2D 2.4.1, sleeping and continuous collision off, 1/60 s steps\n"
+                         "  with 8 velocity and 3 position iterations, and prints the median\n"
+                         "  milliseconds per step and the ratio box2d / pivot.\n"
+                         "  --quick    a smoke run: a twentieth of the steps, one repeat\n"
+                         "  --csv      print scene,solver,pivot_ms,box2d_ms,speedup lines only\n";
+            return arg == "--help" ? 0 : 2;
+        }
+    }
+
+    std::vector<Result> results;
+    for (const bench::BenchScene& scene : bench::benchScenes()) {
+        if (!options.only.empty() && scene.name != options.only) continue;
+        if (!options.csv) std::cerr << "timing " << scene.name << "...\n";
+        results.push_back(runScene(scene, options));
+    }
+
+    if (options.csv) {
+        std::cout << "scene,solver,pivot_ms,box2d_ms,speedup\n";
+        for (const Result& r : results) {
+            std::printf("%s,full_ngs,%.4f,%.4f,%.3f\n", r.scene.c_str(), r.fullNgs, r.box2d,
+                        r.box2d / r.fullNgs);
+            std::printf("%s,baumgarte,%.4f,%.4f,%.3f\n", r.scene.c_str(), r.baumgarte, r.box2d,
+                        r.box2d / r.baumgarte);
+        }
+        return 0;
+    }
+    std::printf("%s: median ms per step over %d run%s (sleeping and continuous collision off)\n",
+                options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
+                options.repeats == 1 ? "" : "s");
+    std::printf("%-15s %13s %13s %11s %14s %14s\n", "scene", "pivot full_ngs", "pivot baumg.",
+                "box2d 2.4.1", "speedup full", "speedup baumg.");
+    for (const Result& r : results) {
+        std::printf("%-15s %13.3f %13.3f %11.3f %13.2fx %13.2fx\n", r.scene.c_str(), r.fullNgs,
+                    r.baumgarte, r.box2d, r.box2d / r.fullNgs, r.box2d / r.baumgarte);
+    }
+    if (options.only.empty()) reportMemory(std::cout);
+    return 0;
+}
