@@ -46,9 +46,6 @@ struct Body {
     bool allowSleep = true;
     float sleepTime = 0.0f;
 
-    // Pose at the start of the last step, for the broad phase's swept boxes.
-    Vec2 center0;
-    float angle0 = 0.0f;
 };
 
 /// Recompute the origin frame from the centre of mass and angle.

@@ -19,11 +19,11 @@ bool World::Impl::bodiesMayCollide(std::int32_t a, std::int32_t b) const {
 void World::Impl::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     const Shape& a = shapes[shapeA];
     const Shape& b = shapes[shapeB];
-    if (a.body == b.body) return;
+    // Cheapest rejections first: most reported pairs that make no contact are filtered out.
+    if (a.body == b.body || !filtersAllowContact(a.filter, b.filter)) return;
     std::uint64_t key = PairMap::key(shapeA, shapeB);
     if (contactPairs.find(key) != -1) return;
     if (!bodiesMayCollide(a.body, b.body)) return;
-    if (!filtersAllowContact(a.filter, b.filter)) return;
 
     // The narrow phase has polygon-circle but not circle-polygon: put the polygon first.
     if (a.type == ShapeType::Circle && b.type == ShapeType::Polygon) std::swap(shapeA, shapeB);
@@ -53,53 +53,73 @@ void World::Impl::destroyContact(std::int32_t index) {
     contacts.erase(index);
 }
 
+// Two phases, so the narrow phase can run on every worker: first each contact decides its own
+// fate from what it can read (its shapes, bodies and boxes) and updates its own manifold; then,
+// in contact order, the consequences that touch shared state (destruction, waking, events) are
+// applied. A contact's fate never depends on another's consequences within the same step.
 void World::Impl::updateContacts() {
-    for (std::int32_t index = 0; index < contacts.capacity(); ++index) {
-        if (!contacts.isAlive(index)) continue;
-        Contact& contact = contacts[index];
-        const Shape& shapeA = shapes[contact.shapeA];
-        const Shape& shapeB = shapes[contact.shapeB];
-        if (contact.needsFiltering) {
-            if (!bodiesMayCollide(contact.bodyA(), contact.bodyB()) ||
-                !filtersAllowContact(shapeA.filter, shapeB.filter)) {
-                destroyContact(index);
+    enum : std::uint8_t { kKeep, kDestroy, kBegan, kEnded };
+    contactOutcomes.resize(static_cast<std::size_t>(contacts.capacity()));
+    pool.parallelFor(contacts.capacity(), 256, [&](int begin, int end, int) {
+        for (std::int32_t index = begin; index < end; ++index) {
+            std::uint8_t& outcome = contactOutcomes[index];
+            outcome = kKeep;
+            if (!contacts.isAlive(index)) continue;
+            Contact& contact = contacts[index];
+            const Shape& shapeA = shapes[contact.shapeA];
+            const Shape& shapeB = shapes[contact.shapeB];
+            if (contact.needsFiltering) {
+                if (!bodiesMayCollide(contact.bodyA(), contact.bodyB()) ||
+                    !filtersAllowContact(shapeA.filter, shapeB.filter)) {
+                    outcome = kDestroy;
+                    continue;
+                }
+                contact.needsFiltering = false;
+            }
+            const Body& bodyA = bodies[contact.bodyA()];
+            const Body& bodyB = bodies[contact.bodyB()];
+            bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
+            bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
+            if (!activeA && !activeB) continue;  // both asleep (or static): nothing changed
+            if (!broadPhase.testOverlap(shapeA.proxyId, shapeB.proxyId)) {
+                outcome = kDestroy;
                 continue;
             }
-            contact.needsFiltering = false;
+            bool wasTouching = contact.touching;
+            bool touching = updateContact(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
+            if (touching != wasTouching) outcome = touching ? kBegan : kEnded;
         }
-        Body& bodyA = bodies[contact.bodyA()];
-        Body& bodyB = bodies[contact.bodyB()];
-        bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
-        bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
-        if (!activeA && !activeB) continue;  // both asleep (or static): nothing changed
-        if (!broadPhase.testOverlap(shapeA.proxyId, shapeB.proxyId)) {
-            destroyContact(index);
-            continue;
-        }
-        bool wasTouching = contact.touching;
-        bool touching = updateContact(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
-        if (touching != wasTouching) {
-            wakeUp(bodyA);
-            wakeUp(bodyB);
-            std::vector<ContactEvent>& events = touching ? beginEvents : endEvents;
-            events.push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
+    });
+    for (std::int32_t index = 0; index < contacts.capacity(); ++index) {
+        switch (contactOutcomes[index]) {
+            case kKeep: break;
+            case kDestroy: destroyContact(index); break;
+            case kBegan:
+            case kEnded: {
+                const Contact& contact = contacts[index];
+                wakeUp(bodies[contact.bodyA()]);
+                wakeUp(bodies[contact.bodyB()]);
+                std::vector<ContactEvent>& events =
+                    contactOutcomes[index] == kBegan ? beginEvents : endEvents;
+                events.push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
+                break;
+            }
         }
     }
 }
 
 void World::Impl::findNewContacts() {
-    broadPhase.updatePairs([this](std::int32_t a, std::int32_t b) { addPair(a, b); });
+    broadPhase.updatePairs(pool, [this](std::int32_t a, std::int32_t b) { addPair(a, b); });
 }
 
-void World::Impl::synchronizeShapes(std::int32_t bodyIndex) {
+void World::Impl::synchronizeShapes(std::int32_t bodyIndex, bool swept) {
     const Body& body = bodies[bodyIndex];
-    Transform xf0;
-    xf0.q = Rot(body.angle0);
-    xf0.p = body.center0 - rotate(xf0.q, body.localCenter);
     for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
-        const Shape& shape = shapes[s];
-        AABB before = computeShapeBox(shape, xf0);
+        Shape& shape = shapes[s];
+        // The box kept from the last sync is the box at the start of this step's motion.
         AABB after = computeShapeBox(shape, body.xf);
+        AABB before = swept ? shape.box : after;
+        shape.box = after;
         Vec2 displacement =
             0.5f * (after.lower + after.upper) - 0.5f * (before.lower + before.upper);
         broadPhase.moveProxy(shape.proxyId, combine(before, after), displacement);

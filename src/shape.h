@@ -29,6 +29,7 @@ struct Shape {
     Filter filter;
     std::uint64_t userData = 0;
     std::int32_t proxyId = -1;  // broad-phase proxy
+    AABB box;  // the shape's box at its body's current transform (kept by the broad-phase sync)
     // The body's shapes form a doubly linked list through the shape pool.
     std::int32_t prev = -1;
     std::int32_t next = -1;

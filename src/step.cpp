@@ -8,6 +8,11 @@
 
 namespace pivot {
 
+namespace {
+// Below this many island bodies in a step, the islands are solved on the calling thread.
+constexpr std::size_t kParallelBodies = 512;
+}  // namespace
+
 void World::Impl::step(float dt, int velocityIterations, int positionIterations) {
     StepContext context;
     context.dt = dt;
@@ -31,24 +36,34 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     updateContacts();
 
     stats = StepStats{};
-    solvedBodies.clear();
     SolverStorage storage{bodies, shapes, joints, contacts, mouseJoints};
-    islandBuilder.forEachIsland(storage, island, [&](Island& current) {
-        IslandReport report = solveIsland(current, storage, context);
+    islandBuilder.build(storage, islands);
+    const int islandCount = static_cast<int>(islands.ranges.size());
+    reports.resize(static_cast<std::size_t>(islandCount));
+    // Sharing out islands costs a hand-off per step: worth it only with enough bodies to solve.
+    const int islandsPerChunk = islands.bodies.size() < kParallelBodies ? islandCount : 1;
+    pool.parallelFor(islandCount, islandsPerChunk, [&](int begin, int end, int worker) {
+        for (int i = begin; i < end; ++i) {
+            reports[i] = solveIsland(islands, i, workspaces[worker], storage, context);
+        }
+    });
+    for (int i = 0; i < islandCount; ++i) {
+        const IslandReport& report = reports[i];
+        const IslandSet::Range& r = islands.ranges[i];
         ++stats.islandCount;
-        stats.bodyCount += static_cast<int>(current.bodies.size());
-        stats.jointCount += static_cast<int>(current.joints.size());
+        stats.bodyCount += r.bodyEnd - r.bodyBegin;
+        stats.jointCount += r.jointEnd - r.jointBegin;
         stats.translationClamps += report.translationClamps;
         stats.rotationClamps += report.rotationClamps;
         if (report.positionIterations > stats.positionIterations) {
             stats.positionIterations = report.positionIterations;
         }
-        for (std::int32_t b : current.bodies) {
-            if (bodies[b].type != BodyType::Static) solvedBodies.push_back(b);
-        }
-    });
+    }
 
-    for (std::int32_t b : solvedBodies) synchronizeShapes(b);
+    // Every non-static body solved this step moved: sweep its broad-phase boxes.
+    for (std::int32_t b : islands.bodies) {
+        if (bodies[b].type != BodyType::Static) synchronizeShapes(b, true);
+    }
     findNewContacts();
 
     // Forces apply for one step.

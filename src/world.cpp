@@ -27,7 +27,9 @@ World::Impl::Impl(const WorldDef& def)
       contactCorrection(def.contactCorrection),
       contactBiasFactor(def.contactBiasFactor),
       restitutionThreshold(def.restitutionThreshold),
-      enableSleep(def.enableSleep) {}
+      enableSleep(def.enableSleep),
+      pool(def.workerCount),
+      workspaces(static_cast<std::size_t>(def.workerCount)) {}
 
 std::int32_t World::Impl::bodyIndex(const char* call, BodyId id) const {
     return checkHandle(call, "body", id, bodies, this->id);
@@ -53,6 +55,10 @@ World::World(const WorldDef& def) {
     checkContactCorrection(call, "def.contactCorrection", def.contactCorrection);
     requireInRange(call, "def.contactBiasFactor", def.contactBiasFactor, 0.0f, 1.0f);
     requireNonNegative(call, "def.restitutionThreshold", def.restitutionThreshold);
+    if (def.workerCount < 1 || def.workerCount > 64) {
+        fail(call,
+             "def.workerCount must be in [1, 64] (got " + std::to_string(def.workerCount) + ")");
+    }
     impl_ = std::make_unique<Impl>(def);
 }
 

@@ -29,8 +29,6 @@ BodyId World::createBody(const BodyDef& def) {
     body.xf = {def.position, Rot(def.angle)};
     body.center = def.position;
     body.angle = def.angle;
-    body.center0 = body.center;
-    body.angle0 = body.angle;
     body.linearVelocity = def.linearVelocity;
     body.angularVelocity = def.fixedRotation ? 0.0f : def.angularVelocity;
     body.linearDamping = def.linearDamping;
@@ -151,9 +149,7 @@ void World::setBodyTransform(BodyId id, Vec2 position, float angle) {
     b.angle = angle;
     b.center = transformPoint(b.xf, b.localCenter);
     // A teleport is not a motion: the broad-phase boxes jump without a swept extent.
-    b.center0 = b.center;
-    b.angle0 = b.angle;
-    w.synchronizeShapes(index);
+    w.synchronizeShapes(index, false);
     w.newShapes = true;
     wakeUp(b);
 }

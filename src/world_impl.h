@@ -18,6 +18,7 @@
 #include "slot_pool.h"
 #include "solver/island_builder.h"
 #include "solver/island_solver.h"
+#include "task_pool.h"
 #include "validation.h"
 
 namespace pivot {
@@ -48,9 +49,12 @@ struct World::Impl {
 
     float previousInvDt = 0.0f;  // 1/dt of the last step; 0 before the first
     StepStats stats;
+    TaskPool pool;
     IslandBuilder islandBuilder;
-    Island island;
-    std::vector<std::int32_t> solvedBodies;  // bodies that moved this step, for the broad phase
+    IslandSet islands;
+    std::vector<IslandWorkspace> workspaces;    // one per worker
+    std::vector<IslandReport> reports;          // one per island of the current step
+    std::vector<std::uint8_t> contactOutcomes;  // updateContacts' first phase, per contact slot
 
     void step(float dt, int velocityIterations, int positionIterations);
 
@@ -80,8 +84,9 @@ struct World::Impl {
     /// manifolds of contacts with an awake body.
     void updateContacts();
     void findNewContacts();
-    /// Moves a body's broad-phase boxes to cover its motion from (center0, angle0) to now.
-    void synchronizeShapes(std::int32_t bodyIndex);
+    /// Moves a body's broad-phase boxes to its current transform, covering the whole motion
+    /// since the last sync when `swept` (a step), or not (a teleport).
+    void synchronizeShapes(std::int32_t bodyIndex, bool swept);
     /// Whether two bodies may collide at all: one must be dynamic, and no joint between them
     /// may forbid it.
     bool bodiesMayCollide(std::int32_t bodyA, std::int32_t bodyB) const;

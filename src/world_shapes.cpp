@@ -30,8 +30,8 @@ ShapeId attachShape(World::Impl& w, std::int32_t bodyIndex, const ShapeDef& def,
     body.shapeList = index;
     ++body.shapeCount;
     updateBodyMass(body, w.shapes);
-    w.shapes[index].proxyId =
-        w.broadPhase.createProxy(computeShapeBox(w.shapes[index], body.xf), index);
+    w.shapes[index].box = computeShapeBox(w.shapes[index], body.xf);
+    w.shapes[index].proxyId = w.broadPhase.createProxy(w.shapes[index].box, index);
     w.newShapes = true;
     wakeUp(body);
     return w.shapeId(index);

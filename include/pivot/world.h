@@ -43,6 +43,10 @@ struct WorldDef {
     float restitutionThreshold = kRestitutionThreshold;
     /// Let islands that have come to rest sleep (see BodyDef::allowSleep).
     bool enableSleep = true;
+    /// Threads that step the world, the caller's included, in [1, 64]. Independent islands,
+    /// contact updates and broad-phase queries are shared among them; results are bit-for-bit
+    /// the same for every count.
+    int workerCount = 1;
 };
 
 /// A touching contact as seen from outside, measured at the bodies' current poses.

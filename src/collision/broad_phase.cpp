@@ -39,6 +39,15 @@ std::int32_t BroadPhase::userData(std::int32_t proxyId) const {
     return tree_.userData(proxyId);
 }
 
+void BroadPhase::markBuffered(std::uint8_t value) {
+    if (buffered_.size() < static_cast<std::size_t>(tree_.idBound())) {
+        buffered_.resize(static_cast<std::size_t>(tree_.idBound()), 0);
+    }
+    for (const std::int32_t proxy : moveBuffer_) {
+        if (proxy != kNullProxy) buffered_[proxy] = value;
+    }
+}
+
 const DynamicTree& BroadPhase::tree() const {
     return tree_;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "collision/dynamic_tree.h"
+#include "task_pool.h"
 
 namespace pivot {
 
@@ -37,6 +38,10 @@ public:
     /// (by touchProxy, say) wait for the next update; addPair must not destroy proxies.
     template <typename AddPair>
     void updatePairs(AddPair&& addPair);
+    /// The same, with the tree queries shared among the pool's workers (the pairs are merged
+    /// and sorted, so the result is the same for any number of workers).
+    template <typename AddPair>
+    void updatePairs(TaskPool& pool, AddPair&& addPair);
 
 private:
     static constexpr std::int32_t kNullProxy = -1;
@@ -50,27 +55,34 @@ private:
     // Buffered proxy ids in the order they were buffered; destroyed ones are overwritten with
     // kNullProxy rather than erased, which keeps destroyProxy from shifting the rest.
     std::vector<std::int32_t> moveBuffer_;
+    // Marks of the buffered proxies during updatePairs: a pair of two buffered proxies is taken
+    // only from the query of the larger id, so it is collected once instead of twice.
+    std::vector<std::uint8_t> buffered_;
     // Kept between calls for its capacity: updatePairs allocates nothing once it has grown.
     std::vector<ProxyPair> pairBuffer_;
+    std::vector<std::vector<ProxyPair>> workerPairs_;  // one per worker of the pool
+
+    template <typename Emit>
+    void queryMoved(std::int32_t queryProxy, Emit&& emit) const;
+    template <typename AddPair>
+    void reportSortedPairs(AddPair&& addPair);
+    void markBuffered(std::uint8_t value);
 };
 
-template <typename AddPair>
-void BroadPhase::updatePairs(AddPair&& addPair) {
-    pairBuffer_.clear();
-    for (const std::int32_t queryProxy : moveBuffer_) {
-        if (queryProxy == kNullProxy) continue;
-        tree_.query(tree_.fatBox(queryProxy), [&](std::int32_t otherProxy) {
-            if (otherProxy != queryProxy) {
-                pairBuffer_.push_back(
-                    {std::min(queryProxy, otherProxy), std::max(queryProxy, otherProxy)});
-            }
-            return true;
-        });
-    }
-    moveBuffer_.clear();
+template <typename Emit>
+void BroadPhase::queryMoved(std::int32_t queryProxy, Emit&& emit) const {
+    tree_.query(tree_.fatBox(queryProxy), [&](std::int32_t otherProxy) {
+        if (otherProxy == queryProxy) return true;
+        if (buffered_[otherProxy] && otherProxy > queryProxy) return true;  // its own query
+        emit(ProxyPair{std::min(queryProxy, otherProxy), std::max(queryProxy, otherProxy)});
+        return true;
+    });
+}
 
-    // A pair both of whose proxies were buffered (or one buffered twice) is found more than
-    // once; sorting by ids puts the copies side by side and fixes the reporting order.
+template <typename AddPair>
+void BroadPhase::reportSortedPairs(AddPair&& addPair) {
+    // A pair found from both of its proxies' queries (or from one buffered twice) appears more
+    // than once; sorting by ids puts the copies side by side and fixes the reporting order.
     std::sort(pairBuffer_.begin(), pairBuffer_.end(), [](const ProxyPair& a, const ProxyPair& b) {
         return a.lower < b.lower || (a.lower == b.lower && a.upper < b.upper);
     });
@@ -83,6 +95,41 @@ void BroadPhase::updatePairs(AddPair&& addPair) {
         }
         addPair(tree_.userData(pair.lower), tree_.userData(pair.upper));
     }
+}
+
+template <typename AddPair>
+void BroadPhase::updatePairs(AddPair&& addPair) {
+    pairBuffer_.clear();
+    markBuffered(1);
+    for (const std::int32_t queryProxy : moveBuffer_) {
+        if (queryProxy == kNullProxy) continue;
+        queryMoved(queryProxy, [&](ProxyPair pair) { pairBuffer_.push_back(pair); });
+    }
+    markBuffered(0);
+    moveBuffer_.clear();
+    reportSortedPairs(addPair);
+}
+
+template <typename AddPair>
+void BroadPhase::updatePairs(TaskPool& pool, AddPair&& addPair) {
+    workerPairs_.resize(static_cast<std::size_t>(pool.workerCount()));
+    for (std::vector<ProxyPair>& pairs : workerPairs_) pairs.clear();
+    markBuffered(1);
+    pool.parallelFor(
+        static_cast<int>(moveBuffer_.size()), 128, [&](int begin, int end, int worker) {
+            std::vector<ProxyPair>& pairs = workerPairs_[worker];
+            for (int i = begin; i < end; ++i) {
+                if (moveBuffer_[i] == kNullProxy) continue;
+                queryMoved(moveBuffer_[i], [&](ProxyPair pair) { pairs.push_back(pair); });
+            }
+        });
+    markBuffered(0);
+    moveBuffer_.clear();
+    pairBuffer_.clear();
+    for (const std::vector<ProxyPair>& pairs : workerPairs_) {
+        pairBuffer_.insert(pairBuffer_.end(), pairs.begin(), pairs.end());
+    }
+    reportSortedPairs(addPair);
 }
 
 }  // namespace pivot

@@ -39,7 +39,6 @@ void DynamicTree::destroyProxy(std::int32_t proxyId) {
 
 bool DynamicTree::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) {
     assert(isProxy(proxyId));
-    if (contains(nodes_[proxyId].box, tightBox)) return false;
 
     // Stretch only the side the shape is heading towards: the box then covers where it will
     // be over the next few steps without growing behind it.
@@ -54,6 +53,19 @@ bool DynamicTree::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 dis
         box.lower.y += ahead.y;
     } else {
         box.upper.y += ahead.y;
+    }
+
+    // Still inside its box: nothing to do, unless the box has become far larger than the one
+    // the shape would get now (stretched by a fast move that has since slowed or stopped). A
+    // bloated box costs a query and spurious pairs whenever anything near it moves, so it is
+    // shrunk. Sizes are compared, not positions, so a box stretched ahead of a steady motion
+    // keeps serving until the shape leaves it.
+    const AABB& stored = nodes_[proxyId].box;
+    if (contains(stored, tightBox)) {
+        const float slack = 2.0f * kOversizeMargins * kAabbMargin;
+        bool wider = stored.upper.x - stored.lower.x > box.upper.x - box.lower.x + slack;
+        bool taller = stored.upper.y - stored.lower.y > box.upper.y - box.lower.y + slack;
+        if (!wider && !taller) return false;
     }
 
     removeLeaf(proxyId);

@@ -50,10 +50,15 @@ public:
     std::int32_t createProxy(const AABB& tightBox, std::int32_t userData);
     void destroyProxy(std::int32_t proxyId);
     /// Updates a proxy whose shape now has `tightBox` and moved by `displacement` this step.
-    /// Does nothing and returns false while the stored fat box still contains `tightBox`;
-    /// otherwise re-inserts the leaf with a box fattened by kAabbMargin and stretched by
-    /// kAabbMotionFactor * displacement, and returns true.
+    /// Does nothing and returns false while the stored fat box still contains `tightBox` and is
+    /// not oversized (wider or taller by more than 2 kOversizeMargins margins than the box it
+    /// would get now); otherwise re-inserts the leaf with a box fattened by kAabbMargin and
+    /// stretched by kAabbMotionFactor * displacement, and returns true.
     bool moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement);
+
+    /// How much larger than needed (in margins, per side) a stored box may be before it is
+    /// shrunk: enough slack that a shape wandering about a little never causes a re-insert.
+    static constexpr float kOversizeMargins = 4.0f;
 
     const AABB& fatBox(std::int32_t proxyId) const;
     std::int32_t userData(std::int32_t proxyId) const;
@@ -64,6 +69,8 @@ public:
     void query(const AABB& box, Visit&& visit) const;
 
     int proxyCount() const;
+    /// One more than the largest id a proxy can have now (ids index the node pool).
+    int idBound() const { return static_cast<int>(nodes_.size()); }
     /// Height of the tree (0 for a single leaf, -1 when empty).
     int height() const;
     /// Checks every structural invariant (parents, heights, boxes enclosing children, free

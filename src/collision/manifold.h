@@ -28,15 +28,15 @@ enum class FeatureType : std::uint8_t { Vertex = 0, Face = 1 };
 
 inline std::uint32_t makeFeatureId(std::uint8_t indexA, std::uint8_t indexB, FeatureType typeA,
                                    FeatureType typeB) {
-    return std::uint32_t(indexA) | (std::uint32_t(indexB) << 8) |
-           (std::uint32_t(typeA) << 16) | (std::uint32_t(typeB) << 24);
+    return std::uint32_t(indexA) | (std::uint32_t(indexB) << 8) | (std::uint32_t(typeA) << 16) |
+           (std::uint32_t(typeB) << 24);
 }
 
 struct ManifoldPoint {
-    Vec2 localPoint;            // see the conventions above
-    float normalImpulse = 0.0f;   // accumulated, N s (kept for warm starting)
+    Vec2 localPoint;             // see the conventions above
+    float normalImpulse = 0.0f;  // accumulated, N s (kept for warm starting)
     float tangentImpulse = 0.0f;
-    std::uint32_t id = 0;       // feature id
+    std::uint32_t id = 0;  // feature id
 };
 
 enum class ManifoldType : std::uint8_t { Circles, FaceA, FaceB };

@@ -160,7 +160,8 @@ MeasuredPoint measure(const ContactPositionConstraint& pc, const Transform& xfA,
 
 }  // namespace
 
-void ContactSolver::prepare(const std::vector<std::int32_t>& contacts,
+void ContactSolver::prepare(const std::int32_t* contacts,
+                            const std::array<std::int32_t, 2>* bodyIndices, int count,
                             const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
                             const SlotPool<Shape>& shapes, const StepContext& step,
                             const SolverPosition* positions, SolverVelocity* velocities) {
@@ -169,15 +170,16 @@ void ContactSolver::prepare(const std::vector<std::int32_t>& contacts,
     positionBias_ = step.contactBiasFactor;
     const bool baumgarte = step.contactCorrection == ContactCorrection::Baumgarte;
 
-    for (std::int32_t contactIndex : contacts) {
+    for (int k = 0; k < count; ++k) {
+        const std::int32_t contactIndex = contacts[k];
         const Contact& contact = pool[contactIndex];
         const Manifold& manifold = contact.manifold;
         const Body& bodyA = bodies[contact.bodyA()];
         const Body& bodyB = bodies[contact.bodyB()];
 
         ContactVelocityConstraint c;
-        c.indexA = bodyA.islandIndex;
-        c.indexB = bodyB.islandIndex;
+        c.indexA = bodyIndices[k][0];
+        c.indexB = bodyIndices[k][1];
         c.contactIndex = contactIndex;
         c.mA = bodyA.invMass;
         c.mB = bodyB.invMass;

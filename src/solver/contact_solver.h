@@ -17,6 +17,7 @@
 //              -K^-1 C with C = clamp(beta (separation + slop), -kMaxLinearCorrection, 0).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -72,10 +73,11 @@ public:
     /// Builds the constraints of `contacts` from the solver arrays' poses (the start of the
     /// step) and applies the warm start, scaled by step.dtRatio. Restitution measures the
     /// approach speed from the bodies' velocities before this step's forces.
-    void prepare(const std::vector<std::int32_t>& contacts, const SlotPool<Contact>& pool,
-                 const SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
-                 const StepContext& step, const SolverPosition* positions,
-                 SolverVelocity* velocities);
+    /// `bodyIndices[i]` are the solver indices of contact i's two bodies.
+    void prepare(const std::int32_t* contacts, const std::array<std::int32_t, 2>* bodyIndices,
+                 int count, const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
+                 const SlotPool<Shape>& shapes, const StepContext& step,
+                 const SolverPosition* positions, SolverVelocity* velocities);
     void solveVelocities(SolverVelocity* velocities);
     void storeImpulses(SlotPool<Contact>& pool) const;
     /// One NGS sweep over every contact point. Returns the smallest separation measured (m,

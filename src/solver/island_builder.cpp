@@ -2,31 +2,56 @@
 
 namespace pivot {
 
-void IslandBuilder::reach(std::int32_t other) {
-    if (bodyVisited_[other]) return;
-    bodyVisited_[other] = 1;
-    stack_.push_back(other);
+void IslandBuilder::build(SolverStorage& storage, IslandSet& set) {
+    SlotPool<Body>& bodies = storage.bodies;
+    set.clear();
+    bodyVisited_.assign(static_cast<std::size_t>(bodies.capacity()), 0);
+    jointVisited_.assign(static_cast<std::size_t>(storage.joints.capacity()), 0);
+    contactVisited_.assign(static_cast<std::size_t>(storage.contacts.capacity()), 0);
+    for (std::int32_t seed = bodies.capacity() - 1; seed >= 0; --seed) {
+        if (!bodies.isAlive(seed) || bodyVisited_[seed]) continue;
+        const Body& body = bodies[seed];
+        if (body.type == BodyType::Static || !body.awake) continue;
+        collect(seed, storage, set);
+        // Static bodies may belong to the next island too.
+        const IslandSet::Range& r = set.ranges.back();
+        for (std::int32_t i = r.bodyBegin; i < r.bodyEnd; ++i) {
+            if (bodies[set.bodies[i]].type == BodyType::Static) bodyVisited_[set.bodies[i]] = 0;
+        }
+    }
 }
 
-void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, Island& island) {
-    island.bodies.clear();
-    island.contacts.clear();
-    island.joints.clear();
-    island.mouseJoints.clear();
+std::int32_t IslandBuilder::reach(std::int32_t body, SolverStorage& storage, IslandSet& set,
+                                  std::int32_t bodyBegin) {
+    Body& b = storage.bodies[body];
+    if (!bodyVisited_[body]) {
+        bodyVisited_[body] = 1;
+        b.islandIndex = static_cast<std::int32_t>(set.bodies.size()) - bodyBegin;
+        set.bodies.push_back(body);
+        stack_.push_back(body);
+    }
+    return b.islandIndex;
+}
+
+void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet& set) {
+    IslandSet::Range range{};
+    range.bodyBegin = static_cast<std::int32_t>(set.bodies.size());
+    range.contactBegin = static_cast<std::int32_t>(set.contacts.size());
+    range.jointBegin = static_cast<std::int32_t>(set.joints.size());
+    range.mouseBegin = static_cast<std::int32_t>(set.mouseJoints.size());
     stack_.clear();
-    stack_.push_back(seed);
-    bodyVisited_[seed] = 1;
+    reach(seed, storage, set, range.bodyBegin);
 
     while (!stack_.empty()) {
         std::int32_t bodyIndex = stack_.back();
         stack_.pop_back();
         Body& body = storage.bodies[bodyIndex];
-        body.islandIndex = static_cast<std::int32_t>(island.bodies.size());
-        island.bodies.push_back(bodyIndex);
         if (body.type == BodyType::Static) continue;  // does not connect islands
         body.awake = true;  // keeps its sleep timer: it may still be at rest
+        const std::int32_t self = body.islandIndex;
         for (std::int32_t m = body.mouseList; m != -1; m = storage.mouseJoints[m].next) {
-            island.mouseJoints.push_back(m);
+            set.mouseJoints.push_back(m);
+            set.mouseBodies.push_back(self);
         }
 
         for (std::int32_t key = body.contactList; key != -1;) {
@@ -36,8 +61,9 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, Island& i
             key = contact.edges[side].nextKey;
             if (contactVisited_[contactIndex] || !contact.touching) continue;
             contactVisited_[contactIndex] = 1;
-            island.contacts.push_back(contactIndex);
-            reach(contact.edges[1 - side].body);
+            std::int32_t other = reach(contact.edges[1 - side].body, storage, set, range.bodyBegin);
+            set.contacts.push_back(contactIndex);
+            set.contactBodies.push_back(side == 0 ? BodyPair{self, other} : BodyPair{other, self});
         }
 
         for (std::int32_t key = body.jointList; key != -1;) {
@@ -47,10 +73,16 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, Island& i
             key = joint.edges[side].nextKey;
             if (jointVisited_[jointIndex]) continue;
             jointVisited_[jointIndex] = 1;
-            island.joints.push_back(jointIndex);
-            reach(joint.edges[1 - side].body);
+            std::int32_t other = reach(joint.edges[1 - side].body, storage, set, range.bodyBegin);
+            set.joints.push_back(jointIndex);
+            set.jointBodies.push_back(side == 0 ? BodyPair{self, other} : BodyPair{other, self});
         }
     }
+    range.bodyEnd = static_cast<std::int32_t>(set.bodies.size());
+    range.contactEnd = static_cast<std::int32_t>(set.contacts.size());
+    range.jointEnd = static_cast<std::int32_t>(set.joints.size());
+    range.mouseEnd = static_cast<std::int32_t>(set.mouseJoints.size());
+    set.ranges.push_back(range);
 }
 
 }  // namespace pivot

@@ -18,29 +18,16 @@ namespace pivot {
 
 class IslandBuilder {
 public:
-    /// Calls solve(island) for every island, in seed order. `island` is reused between calls.
-    template <typename Solve>
-    void forEachIsland(SolverStorage& storage, Island& island, Solve&& solve) {
-        SlotPool<Body>& bodies = storage.bodies;
-        bodyVisited_.assign(static_cast<std::size_t>(bodies.capacity()), 0);
-        jointVisited_.assign(static_cast<std::size_t>(storage.joints.capacity()), 0);
-        contactVisited_.assign(static_cast<std::size_t>(storage.contacts.capacity()), 0);
-        for (std::int32_t seed = bodies.capacity() - 1; seed >= 0; --seed) {
-            if (!bodies.isAlive(seed) || bodyVisited_[seed]) continue;
-            const Body& body = bodies[seed];
-            if (body.type == BodyType::Static || !body.awake) continue;
-            collect(seed, storage, island);
-            solve(island);
-            // Static bodies may belong to the next island too.
-            for (std::int32_t b : island.bodies) {
-                if (bodies[b].type == BodyType::Static) bodyVisited_[b] = 0;
-            }
-        }
-    }
+    /// Finds every island of the awake bodies and records them in `set` (cleared first), in
+    /// seed order.
+    void build(SolverStorage& storage, IslandSet& set);
 
 private:
-    void collect(std::int32_t seed, SolverStorage& storage, Island& island);
-    void reach(std::int32_t other);
+    void collect(std::int32_t seed, SolverStorage& storage, IslandSet& set);
+    /// The island-local index of a body reached from the island being collected, adding it to
+    /// the island (and to the search) the first time.
+    std::int32_t reach(std::int32_t body, SolverStorage& storage, IslandSet& set,
+                       std::int32_t bodyBegin);
 
     std::vector<std::uint8_t> bodyVisited_;
     std::vector<std::uint8_t> jointVisited_;

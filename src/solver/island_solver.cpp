@@ -7,19 +7,59 @@
 
 namespace pivot {
 
+void IslandSet::clear() {
+    bodies.clear();
+    contacts.clear();
+    contactBodies.clear();
+    joints.clear();
+    jointBodies.clear();
+    mouseJoints.clear();
+    mouseBodies.clear();
+    ranges.clear();
+}
+
 namespace {
+
+// One island's slice of an IslandSet.
+struct IslandView {
+    const std::int32_t* bodies;
+    int bodyCount;
+    const std::int32_t* contacts;
+    const BodyPair* contactBodies;
+    int contactCount;
+    const std::int32_t* joints;
+    const BodyPair* jointBodies;
+    int jointCount;
+    const std::int32_t* mouseJoints;
+    const std::int32_t* mouseBodies;
+    int mouseCount;
+};
+
+IslandView viewOf(const IslandSet& set, int index) {
+    const IslandSet::Range& r = set.ranges[index];
+    return {set.bodies.data() + r.bodyBegin,
+            r.bodyEnd - r.bodyBegin,
+            set.contacts.data() + r.contactBegin,
+            set.contactBodies.data() + r.contactBegin,
+            r.contactEnd - r.contactBegin,
+            set.joints.data() + r.jointBegin,
+            set.jointBodies.data() + r.jointBegin,
+            r.jointEnd - r.jointBegin,
+            set.mouseJoints.data() + r.mouseBegin,
+            set.mouseBodies.data() + r.mouseBegin,
+            r.mouseEnd - r.mouseBegin};
+}
 
 // Copy body state into the solver arrays; apply gravity, forces and damping to dynamic bodies
 // (semi-implicit Euler: velocities first, positions later from the new velocities).
-void integrateVelocities(Island& island, SlotPool<Body>& bodies, const StepContext& step) {
+void integrateVelocities(const IslandView& island, IslandWorkspace& work, SlotPool<Body>& bodies,
+                         const StepContext& step) {
     const float h = step.dt;
-    const std::size_t n = island.bodies.size();
-    island.velocities.resize(n);
-    island.positions.resize(n);
+    const std::size_t n = static_cast<std::size_t>(island.bodyCount);
+    work.velocities.resize(n);
+    work.positions.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         Body& b = bodies[island.bodies[i]];
-        b.center0 = b.center;  // for the broad phase's swept box
-        b.angle0 = b.angle;
         Vec2 v = b.linearVelocity;
         float w = b.angularVelocity;
         if (b.type == BodyType::Dynamic) {
@@ -30,25 +70,26 @@ void integrateVelocities(Island& island, SlotPool<Body>& bodies, const StepConte
             v *= 1.0f / (1.0f + h * b.linearDamping);
             w *= 1.0f / (1.0f + h * b.angularDamping);
         }
-        island.positions[i] = {b.center, b.angle};
-        island.velocities[i] = {v, w};
+        work.positions[i] = {b.center, b.angle};
+        work.velocities[i] = {v, w};
     }
 }
 
 // Build each joint's solver constraint in its strategy's group and apply the warm start.
-void prepareJoints(Island& island, const SlotPool<Body>& bodies, SlotPool<RevoluteJoint>& joints,
-                   const StepContext& step) {
-    for (RevoluteConstraints& group : island.groups) group.clear();
+void prepareJoints(const IslandView& island, IslandWorkspace& work, const SlotPool<Body>& bodies,
+                   const SlotPool<RevoluteJoint>& joints, const StepContext& step) {
+    for (RevoluteConstraints& group : work.groups) group.clear();
 
-    for (std::int32_t jointIndex : island.joints) {
+    for (int j = 0; j < island.jointCount; ++j) {
+        const std::int32_t jointIndex = island.joints[j];
         const RevoluteJoint& joint = joints[jointIndex];
         const Body& a = bodies[joint.bodyA()];
         const Body& b = bodies[joint.bodyB()];
         RevoluteConstraint c;
         c.jointIndex = jointIndex;
         c.biasFactor = joint.biasFactor();
-        c.bodies.indexA = a.islandIndex;
-        c.bodies.indexB = b.islandIndex;
+        c.bodies.indexA = island.jointBodies[j][0];
+        c.bodies.indexB = island.jointBodies[j][1];
         c.bodies.mA = a.invMass;
         c.bodies.mB = b.invMass;
         c.bodies.iA = a.invInertia;
@@ -66,27 +107,27 @@ void prepareJoints(Island& island, const SlotPool<Body>& bodies, SlotPool<Revolu
         angle.motorImpulse = joint.motorImpulse;
         angle.lowerImpulse = joint.lowerImpulse;
         angle.upperImpulse = joint.upperImpulse;
-        preparePoint(c.bodies, c.point, island.positions.data());
-        prepareAngle(c.bodies, angle, island.positions.data(), step.invDt);
+        preparePoint(c.bodies, c.point, work.positions.data());
+        prepareAngle(c.bodies, angle, work.positions.data(), step.invDt);
         if (step.warmStarting) {
             // Impulses scale with the step: keep the force they stand for when dt changes.
             c.point.impulse = step.dtRatio * joint.impulse;
             angle.motorImpulse *= step.dtRatio;
             angle.lowerImpulse *= step.dtRatio;
             angle.upperImpulse *= step.dtRatio;
-            warmStart(c, island.velocities.data());
+            warmStart(c, work.velocities.data());
         } else {
             angle.motorImpulse = 0.0f;
             angle.lowerImpulse = 0.0f;
             angle.upperImpulse = 0.0f;
         }
-        island.groups[static_cast<int>(joint.solver)].push_back(c);
+        work.groups[static_cast<int>(joint.solver)].push_back(c);
     }
-    prepareVelocityBias(island.groups, island.positions.data(), step.invDt);
+    prepareVelocityBias(work.groups, work.positions.data(), step.invDt);
 }
 
-void storeImpulses(const Island& island, SlotPool<RevoluteJoint>& joints, float invDt) {
-    for (const RevoluteConstraints& group : island.groups) {
+void storeImpulses(const IslandWorkspace& work, SlotPool<RevoluteJoint>& joints, float invDt) {
+    for (const RevoluteConstraints& group : work.groups) {
         for (const RevoluteConstraint& c : group) {
             RevoluteJoint& joint = joints[c.jointIndex];
             joint.impulse = c.point.impulse;
@@ -98,30 +139,32 @@ void storeImpulses(const Island& island, SlotPool<RevoluteJoint>& joints, float 
     }
 }
 
-void prepareMouseJoints(Island& island, const SlotPool<Body>& bodies,
-                        const SlotPool<MouseJoint>& mouseJoints, const StepContext& step) {
-    island.mouseConstraints.clear();
-    for (std::int32_t m : island.mouseJoints) {
+void prepareMouseJoints(const IslandView& island, IslandWorkspace& work,
+                        const SlotPool<Body>& bodies, const SlotPool<MouseJoint>& mouseJoints,
+                        const StepContext& step) {
+    work.mouseConstraints.clear();
+    for (int k = 0; k < island.mouseCount; ++k) {
+        const std::int32_t m = island.mouseJoints[k];
         const MouseJoint& joint = mouseJoints[m];
         const Body& body = bodies[joint.body];
         MouseConstraint c;
-        c.index = body.islandIndex;
+        c.index = island.mouseBodies[k];
         c.jointIndex = m;
         c.mB = body.invMass;
         c.iB = body.invInertia;
-        prepareMouse(c, joint, body.mass, body.localCenter, island.positions.data(),
-                     island.velocities.data(), step.dt, step.dtRatio, step.warmStarting);
-        island.mouseConstraints.push_back(c);
+        prepareMouse(c, joint, body.mass, body.localCenter, work.positions.data(),
+                     work.velocities.data(), step.dt, step.dtRatio, step.warmStarting);
+        work.mouseConstraints.push_back(c);
     }
 }
 
 // Move every body by its velocity, limiting the move per step (kMaxTranslation,
 // kMaxRotation). The limit scales the velocity itself so the next step starts from it.
-void integratePositions(Island& island, const StepContext& step, IslandReport& report) {
+void integratePositions(IslandWorkspace& work, const StepContext& step, IslandReport& report) {
     const float h = step.dt;
-    for (std::size_t i = 0; i < island.bodies.size(); ++i) {
-        SolverVelocity& vel = island.velocities[i];
-        SolverPosition& pos = island.positions[i];
+    for (std::size_t i = 0; i < work.velocities.size(); ++i) {
+        SolverVelocity& vel = work.velocities[i];
+        SolverPosition& pos = work.positions[i];
         Vec2 translation = h * vel.v;
         if (dot(translation, translation) > kMaxTranslation * kMaxTranslation) {
             vel.v *= kMaxTranslation / length(translation);
@@ -139,15 +182,15 @@ void integratePositions(Island& island, const StepContext& step, IslandReport& r
 
 // Bodies slower than the sleep tolerances accumulate rest time; once every body of the island
 // has rested kTimeToSleep and the position phase converged, the whole island sleeps.
-bool updateSleep(const Island& island, SlotPool<Body>& bodies, const StepContext& step,
+bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepContext& step,
                  bool positionSolved) {
     if (!step.enableSleep) return false;
     const float linearTolerance = kLinearSleepTolerance * kLinearSleepTolerance;
     const float angularTolerance = kAngularSleepTolerance * kAngularSleepTolerance;
     float minSleepTime = kTimeToSleep;
     bool anyMovable = false;
-    for (std::int32_t index : island.bodies) {
-        Body& b = bodies[index];
+    for (int i = 0; i < island.bodyCount; ++i) {
+        Body& b = bodies[island.bodies[i]];
         if (b.type == BodyType::Static) continue;
         anyMovable = true;
         if (!b.allowSleep || b.angularVelocity * b.angularVelocity > angularTolerance ||
@@ -160,58 +203,60 @@ bool updateSleep(const Island& island, SlotPool<Body>& bodies, const StepContext
         }
     }
     if (!anyMovable || minSleepTime < kTimeToSleep || !positionSolved) return false;
-    for (std::int32_t index : island.bodies) {
-        Body& b = bodies[index];
+    for (int i = 0; i < island.bodyCount; ++i) {
+        Body& b = bodies[island.bodies[i]];
         if (b.type != BodyType::Static) putToSleep(b);
     }
     return true;
 }
 
-void writeBack(const Island& island, SlotPool<Body>& bodies) {
-    for (std::size_t i = 0; i < island.bodies.size(); ++i) {
+void writeBack(const IslandView& island, const IslandWorkspace& work, SlotPool<Body>& bodies) {
+    for (int i = 0; i < island.bodyCount; ++i) {
         Body& b = bodies[island.bodies[i]];
         if (b.type == BodyType::Static) continue;
-        b.center = island.positions[i].c;
-        b.angle = island.positions[i].a;
-        b.linearVelocity = island.velocities[i].v;
-        b.angularVelocity = island.velocities[i].w;
+        b.center = work.positions[i].c;
+        b.angle = work.positions[i].a;
+        b.linearVelocity = work.velocities[i].v;
+        b.angularVelocity = work.velocities[i].w;
         synchronizeTransform(b);
     }
 }
 
 }  // namespace
 
-IslandReport solveIsland(Island& island, SolverStorage& storage, const StepContext& step) {
+IslandReport solveIsland(const IslandSet& set, int index, IslandWorkspace& work,
+                         SolverStorage& storage, const StepContext& step) {
+    const IslandView island = viewOf(set, index);
     IslandReport report;
     SlotPool<Body>& bodies = storage.bodies;
-    integrateVelocities(island, bodies, step);
+    integrateVelocities(island, work, bodies, step);
     // Contacts are prepared and warm-started before joints, and solved after them in each
     // velocity sweep, as in Box2D 2.4.1 (see docs/position-correction.md).
-    island.contactSolver.prepare(island.contacts, storage.contacts, bodies, storage.shapes, step,
-                                 island.positions.data(), island.velocities.data());
-    prepareJoints(island, bodies, storage.joints, step);
-    prepareMouseJoints(island, bodies, storage.mouseJoints, step);
+    work.contactSolver.prepare(island.contacts, island.contactBodies, island.contactCount,
+                               storage.contacts, bodies, storage.shapes, step,
+                               work.positions.data(), work.velocities.data());
+    prepareJoints(island, work, bodies, storage.joints, step);
+    prepareMouseJoints(island, work, bodies, storage.mouseJoints, step);
     for (int it = 0; it < step.velocityIterations; ++it) {
         // A mouse joint is the user's hand: solved first, so the rigid joints and contacts have
         // the last word on what the drag may do to them.
-        for (MouseConstraint& c : island.mouseConstraints) {
-            solveMouseVelocity(c, island.velocities.data());
-        }
-        solveVelocitySweep(island.groups, island.velocities.data());
-        island.contactSolver.solveVelocities(island.velocities.data());
+        for (MouseConstraint& c : work.mouseConstraints)
+            solveMouseVelocity(c, work.velocities.data());
+        solveVelocitySweep(work.groups, work.velocities.data());
+        work.contactSolver.solveVelocities(work.velocities.data());
     }
-    storeImpulses(island, storage.joints, step.invDt);
-    island.contactSolver.storeImpulses(storage.contacts);
-    for (const MouseConstraint& c : island.mouseConstraints) {
+    storeImpulses(work, storage.joints, step.invDt);
+    work.contactSolver.storeImpulses(storage.contacts);
+    for (const MouseConstraint& c : work.mouseConstraints) {
         storage.mouseJoints[c.jointIndex].impulse = c.impulse;
     }
-    integratePositions(island, step, report);
-    island.pseudoVelocities.resize(island.bodies.size());
+    integratePositions(work, step, report);
+    work.pseudoVelocities.resize(work.velocities.size());
     PositionPhaseResult phase =
-        solvePositionPhase(island.groups, island.contactSolver, island.positions.data(),
-                           island.pseudoVelocities, step.positionIterations, step.dt);
+        solvePositionPhase(work.groups, work.contactSolver, work.positions.data(),
+                           work.pseudoVelocities, step.positionIterations, step.dt);
     report.positionIterations = phase.sweeps;
-    writeBack(island, bodies);
+    writeBack(island, work, bodies);
     report.fellAsleep = updateSleep(island, bodies, step, phase.solved);
     return report;
 }

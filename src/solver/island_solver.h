@@ -1,8 +1,10 @@
 // Solving one island: a set of awake bodies connected by joints and touching contacts,
 // independent of every other island for this step. The stages run in the order of
-// docs/position-correction.md.
+// docs/position-correction.md. Islands share nothing they write, so several can be solved at
+// once, each in its own workspace.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -27,13 +29,34 @@ struct SolverStorage {
     SlotPool<MouseJoint>& mouseJoints;
 };
 
-/// One island's members and the solver's arrays for it. Kept by the world and reused for
-/// every island of every step, so after the first steps solving allocates nothing.
-struct Island {
-    std::vector<std::int32_t> bodies;    // body pool indices; the position is the solver index
+/// The solver indices of a constraint's two bodies within its island.
+using BodyPair = std::array<std::int32_t, 2>;
+
+/// Every island of a step, island after island in flat arrays. Built by IslandBuilder; the
+/// solver indices are recorded here rather than in the bodies, because a static body belongs
+/// to every island that touches it, with a different index in each.
+struct IslandSet {
+    struct Range {
+        std::int32_t bodyBegin, bodyEnd;
+        std::int32_t contactBegin, contactEnd;
+        std::int32_t jointBegin, jointEnd;
+        std::int32_t mouseBegin, mouseEnd;
+    };
+    std::vector<std::int32_t> bodies;    // body pool indices; solver index = position - bodyBegin
     std::vector<std::int32_t> contacts;  // touching contacts, in the order they were reached
-    std::vector<std::int32_t> joints;    // joint pool indices, in the order they were reached
+    std::vector<BodyPair> contactBodies;
+    std::vector<std::int32_t> joints;  // revolute joints, in the order they were reached
+    std::vector<BodyPair> jointBodies;
     std::vector<std::int32_t> mouseJoints;
+    std::vector<std::int32_t> mouseBodies;  // solver index of each mouse joint's body
+    std::vector<Range> ranges;
+
+    void clear();
+};
+
+/// The solver's arrays for one island at a time. One per worker, reused for every island of
+/// every step, so after the first steps solving allocates nothing.
+struct IslandWorkspace {
     std::vector<SolverVelocity> velocities;
     std::vector<SolverPosition> positions;
     std::vector<SolverVelocity> pseudoVelocities;
@@ -49,9 +72,9 @@ struct IslandReport {
     bool fellAsleep = false;
 };
 
-/// Advances the island's bodies by one step, stores the joints' and contacts' impulses and
-/// updates the bodies' sleep timers (putting the island to sleep when it has rested long
-/// enough). Each body's islandIndex must hold its position in island.bodies.
-IslandReport solveIsland(Island& island, SolverStorage& storage, const StepContext& step);
+/// Advances island `index` of `set` by one step, stores its joints' and contacts' impulses and
+/// updates its bodies' sleep timers (putting it to sleep when it has rested long enough).
+IslandReport solveIsland(const IslandSet& set, int index, IslandWorkspace& workspace,
+                         SolverStorage& storage, const StepContext& step);
 
 }  // namespace pivot

@@ -19,10 +19,11 @@ Stepper stepperOf(std::unique_ptr<b2World> world) {
     return [owned](int) { owned->Step(kDt, 8, 3); };
 }
 
-WorldDef noSleep(PositionSolver solver) {
+WorldDef noSleep(PositionSolver solver, int workers) {
     WorldDef def;
     def.enableSleep = false;
     def.defaultPositionSolver = solver;
+    def.workerCount = workers;
     return def;
 }
 
@@ -42,8 +43,8 @@ bool gridStatic(int column, int row) {
     return row == 0 && column >= kGrid / 2 - 3 && column <= kGrid / 2 + 3;
 }
 
-std::unique_ptr<World> pivotJointGrid(PositionSolver solver) {
-    auto world = std::make_unique<World>(noSleep(solver));
+std::unique_ptr<World> pivotJointGrid(PositionSolver solver, int workers) {
+    auto world = std::make_unique<World>(noSleep(solver, workers));
     std::vector<BodyId> bodies(kGrid * kGrid);
     ShapeDef shape;
     shape.filter = {kGridCategory, static_cast<std::uint16_t>(0xFFFF & ~kGridCategory), 0};
@@ -184,8 +185,8 @@ void manyPyramids(World_& world, int across, int up, int base, Shelf&& shelf, Py
 // 32 m apart so neighbouring chains never meet, all above one ground.
 constexpr float kChainPitch = 32.0f;
 
-std::unique_ptr<World> pivotChains(PositionSolver solver, int count) {
-    auto world = std::make_unique<World>(noSleep(solver));
+std::unique_ptr<World> pivotChains(PositionSolver solver, int workers, int count) {
+    auto world = std::make_unique<World>(noSleep(solver, workers));
     pivotShelf(*world, -10.0f, float(count) * kChainPitch + 10.0f, 0.0f);
     ShapeDef link;
     link.density = 20.0f;
@@ -244,8 +245,8 @@ BenchScene pyramidScene(const std::string& name, const std::string& description,
     scene.name = name;
     scene.description = description;
     scene.steps = steps;
-    scene.buildPivot = [=](PositionSolver solver) {
-        auto world = std::make_unique<World>(noSleep(solver));
+    scene.buildPivot = [=](PositionSolver solver, int workers) {
+        auto world = std::make_unique<World>(noSleep(solver, workers));
         manyPyramids(*world, across, up, base, pivotShelf, pivotPyramid);
         return stepperOf(std::move(world));
     };
@@ -262,7 +263,9 @@ BenchScene chainScene(const std::string& name, int steps, int count) {
     scene.name = name;
     scene.description = std::to_string(count) + " chains of 30 links, released horizontally";
     scene.steps = steps;
-    scene.buildPivot = [=](PositionSolver solver) { return stepperOf(pivotChains(solver, count)); };
+    scene.buildPivot = [=](PositionSolver solver, int workers) {
+        return stepperOf(pivotChains(solver, workers, count));
+    };
     scene.buildBox2d = [=]() { return stepperOf(box2dChains(count)); };
     return scene;
 }
@@ -275,7 +278,9 @@ std::vector<BenchScene> benchScenes() {
     grid.name = "joint_grid";
     grid.description = "100 x 100 circles, each jointed to its neighbours above and to the left";
     grid.steps = 500;
-    grid.buildPivot = [](PositionSolver solver) { return stepperOf(pivotJointGrid(solver)); };
+    grid.buildPivot = [](PositionSolver solver, int workers) {
+        return stepperOf(pivotJointGrid(solver, workers));
+    };
     grid.buildBox2d = [] { return stepperOf(box2dJointGrid()); };
     scenes.push_back(grid);
     scenes.push_back(
@@ -288,9 +293,10 @@ std::vector<BenchScene> benchScenes() {
     heavy.name = "bridge_heavy";
     heavy.description = "the testbed scene: the bridge, and at 2 s a 600 kg box falls on it";
     heavy.steps = 600;
-    heavy.buildPivot = [](PositionSolver solver) {
+    heavy.buildPivot = [](PositionSolver solver, int workers) {
         scenes::SceneOptions options;
         options.solver = solver;
+        options.workerCount = workers;
         auto scene = std::make_shared<scenes::Scene>(
             scenes::buildScene(*scenes::findScene("bridge_heavy"), options));
         scene->world->setSleepEnabled(false);

@@ -21,7 +21,8 @@ struct BenchScene {
     std::string name;
     std::string description;
     int steps = 0;  ///< steps per timed run
-    std::function<Stepper(PositionSolver)> buildPivot;
+    /// pivot2d with the given joint solver and WorldDef::workerCount.
+    std::function<Stepper(PositionSolver, int workers)> buildPivot;
     std::function<Stepper()> buildBox2d;
 };
 

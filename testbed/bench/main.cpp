@@ -14,6 +14,7 @@
 #include <iostream>
 #include <new>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "bench/bench_scenes.h"
@@ -55,6 +56,7 @@ struct Options {
     bool quick = false;
     bool csv = false;
     int repeats = 3;
+    int workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     std::string only;
 };
 
@@ -72,7 +74,9 @@ double median(std::vector<double> values) {
 
 struct Result {
     std::string scene;
-    double fullNgs = 0.0, baumgarte = 0.0, box2d = 0.0;
+    double fullNgs = 0.0, baumgarte = 0.0;        // with Options::workers
+    double fullNgsOne = 0.0, baumgarteOne = 0.0;  // on one thread
+    double box2d = 0.0;
 };
 
 Result runScene(const bench::BenchScene& scene, const Options& options) {
@@ -81,20 +85,29 @@ Result runScene(const bench::BenchScene& scene, const Options& options) {
         auto stepper = build();  // built outside the timed region
         return millisecondsPerStep(stepper, steps);
     };
-    auto full = [&] { return scene.buildPivot(PositionSolver::FullNGS); };
-    auto baum = [&] { return scene.buildPivot(PositionSolver::Baumgarte); };
+    auto pivot = [&](PositionSolver solver, int workers) {
+        return [&scene, solver, workers] { return scene.buildPivot(solver, workers); };
+    };
     auto box2d = [&] { return scene.buildBox2d(); };
     if (!options.quick) {  // warm-up: caches, page faults, frequency scaling
-        timeIt(full);
+        timeIt(pivot(PositionSolver::FullNGS, options.workers));
         timeIt(box2d);
     }
-    std::vector<double> a, b, c;
+    const bool alsoOne = options.workers > 1;
+    std::vector<double> full, baum, fullOne, baumOne, box;
     for (int r = 0; r < options.repeats; ++r) {
-        a.push_back(timeIt(full));
-        b.push_back(timeIt(baum));
-        c.push_back(timeIt(box2d));
+        full.push_back(timeIt(pivot(PositionSolver::FullNGS, options.workers)));
+        baum.push_back(timeIt(pivot(PositionSolver::Baumgarte, options.workers)));
+        if (alsoOne) {
+            fullOne.push_back(timeIt(pivot(PositionSolver::FullNGS, 1)));
+            baumOne.push_back(timeIt(pivot(PositionSolver::Baumgarte, 1)));
+        }
+        box.push_back(timeIt(box2d));
     }
-    return {scene.name, median(a), median(b), median(c)};
+    Result result{scene.name, median(full), median(baum), 0.0, 0.0, median(box)};
+    result.fullNgsOne = alsoOne ? median(fullOne) : result.fullNgs;
+    result.baumgarteOne = alsoOne ? median(baumOne) : result.baumgarte;
+    return result;
 }
 
 long long liveBytes() {
@@ -177,14 +190,19 @@ int main(int argc, char** argv) {
             options.csv = true;
         } else if (arg == "--repeats" && i + 1 < argc) {
             options.repeats = std::max(1, std::atoi(argv[++i]));
+        } else if (arg == "--workers" && i + 1 < argc) {
+            options.workers = std::max(1, std::min(64, std::atoi(argv[++i])));
         } else if (arg == "--scene" && i + 1 < argc) {
             options.only = argv[++i];
         } else {
-            std::cerr << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--scene NAME]\n"
+            std::cerr << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] "
+                         "[--scene NAME]\n"
                          "  Times each scene in pivot2d (FullNGS and Baumgarte joints) and in\n"
                          "  Box2D 2.4.1, sleeping and continuous collision off, 1/60 s steps\n"
                          "  with 8 velocity and 3 position iterations, and prints the median\n"
-                         "  milliseconds per step and the ratio box2d / pivot.\n"
+                         "  milliseconds per step and the ratio box2d / pivot. pivot2d runs with\n"
+                         "  --workers threads (default: the machine's hardware threads) and, for\n"
+                         "  comparison, on one thread; Box2D 2.4.1 is single-threaded.\n"
                          "  --quick    a smoke run: a twentieth of the steps, one repeat\n"
                          "  --csv      print scene,solver,pivot_ms,box2d_ms,speedup lines only\n";
             return arg == "--help" ? 0 : 2;
@@ -199,6 +217,7 @@ int main(int argc, char** argv) {
     }
 
     if (options.csv) {
+        // pivot_ms is with --workers threads; see the table for one thread.
         std::cout << "scene,solver,pivot_ms,box2d_ms,speedup\n";
         for (const Result& r : results) {
             std::printf("%s,full_ngs,%.4f,%.4f,%.3f\n", r.scene.c_str(), r.fullNgs, r.box2d,
@@ -208,14 +227,18 @@ int main(int argc, char** argv) {
         }
         return 0;
     }
-    std::printf("%s: median ms per step over %d run%s (sleeping and continuous collision off)\n",
-                options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
-                options.repeats == 1 ? "" : "s");
-    std::printf("%-15s %13s %13s %11s %14s %14s\n", "scene", "pivot full_ngs", "pivot baumg.",
-                "box2d 2.4.1", "speedup full", "speedup baumg.");
+    std::printf(
+        "%s: median ms per step over %d run%s; sleeping and continuous collision off;\n"
+        "pivot2d with %d worker thread%s (and on 1 thread); Box2D 2.4.1 single-threaded\n",
+        options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
+        options.repeats == 1 ? "" : "s", options.workers, options.workers == 1 ? "" : "s");
+    std::printf("%-15s %9s %9s %9s %9s %9s | %8s %8s %8s %8s\n", "scene", "full", "baumg.",
+                "full 1t", "baumg.1t", "box2d", "x full", "x baumg.", "x full1t", "x baum1t");
     for (const Result& r : results) {
-        std::printf("%-15s %13.3f %13.3f %11.3f %13.2fx %13.2fx\n", r.scene.c_str(), r.fullNgs,
-                    r.baumgarte, r.box2d, r.box2d / r.fullNgs, r.box2d / r.baumgarte);
+        std::printf("%-15s %9.3f %9.3f %9.3f %9.3f %9.3f | %7.2fx %7.2fx %7.2fx %7.2fx\n",
+                    r.scene.c_str(), r.fullNgs, r.baumgarte, r.fullNgsOne, r.baumgarteOne, r.box2d,
+                    r.box2d / r.fullNgs, r.box2d / r.baumgarte, r.box2d / r.fullNgsOne,
+                    r.box2d / r.baumgarteOne);
     }
     if (options.only.empty()) reportMemory(std::cout);
     return 0;

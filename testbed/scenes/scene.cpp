@@ -52,6 +52,7 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
     def.gravity = options.gravity;
     def.defaultPositionSolver = options.solver;
     def.contactCorrection = options.contactCorrection;
+    def.workerCount = options.workerCount;
     scene.world = std::make_unique<World>(def);
     info.build(scene, options);
     return scene;

@@ -22,6 +22,7 @@ struct SceneOptions {
     ContactCorrection contactCorrection = ContactCorrection::NGS;
     float hz = 60.0f;
     Vec2 gravity{0.0f, -10.0f};
+    int workerCount = 1;  ///< WorldDef::workerCount
 
     /// A revolute joint def at a world anchor carrying this scene's solver and bias.
     RevoluteJointDef jointAt(BodyId a, BodyId b, Vec2 anchor) const;

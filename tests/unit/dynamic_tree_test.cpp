@@ -340,3 +340,23 @@ TEST(InlineStack, SpillsBeyondItsInlineCapacityAndStaysLastInFirstOut) {
     for (int i = 5; i >= 0; --i) EXPECT_EQ(stack.pop(), 20 + i);
     EXPECT_TRUE(stack.empty());
 }
+
+TEST(DynamicTree, ABoxStretchedByAFastMoveShrinksOnceTheShapeSlows) {
+    DynamicTree tree;
+    const AABB tight = boxAt({0, 0}, {0.5f, 0.5f});
+    const std::int32_t id = tree.createProxy(tight, 1);
+    // A fast move stretches the box 4 x 3 m ahead.
+    const Vec2 fast{3.0f, 0.0f};
+    const AABB moved = translated(tight, fast);
+    ASSERT_TRUE(tree.moveProxy(id, moved, fast));
+    const float stretchedWidth = tree.fatBox(id).upper.x - tree.fatBox(id).lower.x;
+    EXPECT_GT(stretchedWidth, 12.0f);
+    // The shape stops inside the stretched box: the box is now oversized and is shrunk.
+    const AABB still = translated(moved, {0.1f, 0.0f});
+    EXPECT_TRUE(tree.moveProxy(id, still, {0.1f, 0.0f}));
+    const AABB& shrunk = tree.fatBox(id);
+    EXPECT_LT(shrunk.upper.x - shrunk.lower.x, 2.0f);
+    EXPECT_TRUE(tree.isValid());
+    // Small moves inside a right-sized box are still free.
+    EXPECT_FALSE(tree.moveProxy(id, translated(still, {0.02f, 0.0f}), {0.02f, 0.0f}));
+}

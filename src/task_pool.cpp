@@ -1,0 +1,64 @@
+#include "task_pool.h"
+
+#include <algorithm>
+
+namespace pivot {
+
+TaskPool::TaskPool(int workers) {
+    for (int i = 1; i < workers; ++i) threads_.emplace_back([this, i] { workerLoop(i); });
+}
+
+TaskPool::~TaskPool() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : threads_) t.join();
+}
+
+void TaskPool::takeChunks(int worker) {
+    for (;;) {
+        int begin = next_.fetch_add(chunk_, std::memory_order_relaxed);
+        if (begin >= count_) return;
+        trampoline_(context_, begin, std::min(begin + chunk_, count_), worker);
+    }
+}
+
+void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        context_ = context;
+        trampoline_ = trampoline;
+        count_ = count;
+        // A few chunks per worker balance uneven work without much hand-off cost.
+        int target = std::max(1, count / (4 * workerCount()));
+        chunk_ = std::max(minChunk, target);
+        next_.store(0, std::memory_order_relaxed);
+        busy_ = static_cast<int>(threads_.size());
+        ++generation_;
+    }
+    wake_.notify_all();
+    takeChunks(0);
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [this] { return busy_ == 0; });
+}
+
+void TaskPool::workerLoop(int worker) {
+    std::uint64_t seen = 0;
+    for (;;) {
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+            if (stopping_) return;
+            seen = generation_;
+        }
+        takeChunks(worker);
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (--busy_ == 0) done_.notify_one();
+        }
+    }
+}
+
+}  // namespace pivot
