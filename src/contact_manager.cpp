@@ -109,7 +109,14 @@ void World::Impl::updateContacts() {
 }
 
 void World::Impl::findNewContacts() {
-    broadPhase.updatePairs(pool, [this](std::int32_t a, std::int32_t b) { addPair(a, b); });
+    // The cheap, read-only part of addPair's test runs inside the (parallel) queries.
+    auto mayPair = [this](std::int32_t a, std::int32_t b) {
+        const Shape& shapeA = shapes[a];
+        const Shape& shapeB = shapes[b];
+        return shapeA.body != shapeB.body && filtersAllowContact(shapeA.filter, shapeB.filter);
+    };
+    broadPhase.updatePairs(pool, mayPair,
+                           [this](std::int32_t a, std::int32_t b) { addPair(a, b); });
 }
 
 void World::Impl::synchronizeShapes(std::int32_t bodyIndex, bool swept) {

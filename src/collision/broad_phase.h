@@ -39,9 +39,11 @@ public:
     template <typename AddPair>
     void updatePairs(AddPair&& addPair);
     /// The same, with the tree queries shared among the pool's workers (the pairs are merged
-    /// and sorted, so the result is the same for any number of workers).
-    template <typename AddPair>
-    void updatePairs(TaskPool& pool, AddPair&& addPair);
+    /// and sorted, so the result is the same for any number of workers), and with
+    /// mayPair(userDataA, userDataB), a read-only and thread-safe test, dropping pairs that
+    /// could never make a contact before they are collected.
+    template <typename MayPair, typename AddPair>
+    void updatePairs(TaskPool& pool, MayPair&& mayPair, AddPair&& addPair);
 
 private:
     static constexpr std::int32_t kNullProxy = -1;
@@ -110,8 +112,8 @@ void BroadPhase::updatePairs(AddPair&& addPair) {
     reportSortedPairs(addPair);
 }
 
-template <typename AddPair>
-void BroadPhase::updatePairs(TaskPool& pool, AddPair&& addPair) {
+template <typename MayPair, typename AddPair>
+void BroadPhase::updatePairs(TaskPool& pool, MayPair&& mayPair, AddPair&& addPair) {
     workerPairs_.resize(static_cast<std::size_t>(pool.workerCount()));
     for (std::vector<ProxyPair>& pairs : workerPairs_) pairs.clear();
     markBuffered(1);
@@ -120,7 +122,11 @@ void BroadPhase::updatePairs(TaskPool& pool, AddPair&& addPair) {
             std::vector<ProxyPair>& pairs = workerPairs_[worker];
             for (int i = begin; i < end; ++i) {
                 if (moveBuffer_[i] == kNullProxy) continue;
-                queryMoved(moveBuffer_[i], [&](ProxyPair pair) { pairs.push_back(pair); });
+                queryMoved(moveBuffer_[i], [&](ProxyPair pair) {
+                    if (mayPair(tree_.userData(pair.lower), tree_.userData(pair.upper))) {
+                        pairs.push_back(pair);
+                    }
+                });
             }
         });
     markBuffered(0);

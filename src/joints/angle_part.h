@@ -28,11 +28,11 @@
 namespace pivot {
 
 struct AnglePart {
+    bool limitEnabled = false;  // read by every velocity solve: first
+    bool motorEnabled = false;
     float referenceAngle = 0.0f;
     float axialMass = 0.0f;  // 1 / (iA + iB), 0 with fixed rotation
     float angle = 0.0f;      // joint angle at the start of the step
-    bool limitEnabled = false;
-    bool motorEnabled = false;
     float lower = 0.0f;
     float upper = 0.0f;
     float motorSpeed = 0.0f;       // rad/s

@@ -19,15 +19,30 @@
 
 namespace pivot {
 
+// The fields every velocity iteration reads come first, so one joint's working set shares as
+// few cache lines as possible.
 struct PointPart {
-    Vec2 localRA;  // anchor relative to the centre of mass, in body A's frame
-    Vec2 localRB;
     Vec2 rA;  // world radius vectors when last prepared
     Vec2 rB;
-    Mat22 K;       // effective mass matrix when last prepared
-    Vec2 impulse;  // accumulated impulse (velocity phase), N s
-    Vec2 bias;     // velocity bias, m/s (Baumgarte, and the PseudoVelocity pass)
+    Mat22 K;              // effective mass matrix when last prepared
+    float invDet = 0.0f;  // 1 / det K (0 when singular), as Mat22::solve computes it
+    Vec2 impulse;         // accumulated impulse (velocity phase), N s
+    Vec2 bias;            // velocity bias, m/s (Baumgarte, and the PseudoVelocity pass)
+    Vec2 localRA;         // anchor relative to the centre of mass, in body A's frame
+    Vec2 localRB;
 };
+
+/// K^-1 b with K's inverse determinant cached: the same operations as Mat22::solve, so the same
+/// bits, without a division per solve.
+inline Vec2 solveWithCachedDet(const PointPart& p, Vec2 b) {
+    const float a11 = p.K.cx.x, a12 = p.K.cy.x, a21 = p.K.cx.y, a22 = p.K.cy.y;
+    return {p.invDet * (a22 * b.x - a12 * b.y), p.invDet * (a11 * b.y - a21 * b.x)};
+}
+
+inline float inverseDeterminant(const Mat22& K) {
+    float det = K.cx.x * K.cy.y - K.cy.x * K.cx.y;
+    return det != 0.0f ? 1.0f / det : det;
+}
 
 // K is evaluated in two float orders: the same matrix, rounded differently. The velocity phase
 // and the position phase each use the order Box2D 2.4.1's revolute joint uses in that phase, so
@@ -58,6 +73,7 @@ inline Vec2 preparePoint(const ConstraintBodies& b, PointPart& p, const SolverPo
     p.rA = rotate(Rot(A.a), p.localRA);
     p.rB = rotate(Rot(B.a), p.localRB);
     p.K = pointEffectiveMass(b, p.rA, p.rB);
+    p.invDet = inverseDeterminant(p.K);
     return B.c + p.rB - A.c - p.rA;
 }
 
@@ -68,7 +84,7 @@ inline Vec2 solvePointVelocity(const ConstraintBodies& b, const PointPart& p,
     SolverVelocity& A = velocities[b.indexA];
     SolverVelocity& B = velocities[b.indexB];
     Vec2 cdot = B.v + cross(B.w, p.rB) - A.v - cross(A.w, p.rA);
-    Vec2 P = p.K.solve(-(cdot + bias));
+    Vec2 P = solveWithCachedDet(p, -(cdot + bias));
     A.v -= b.mA * P;
     A.w -= b.iA * cross(p.rA, P);
     B.v += b.mB * P;
