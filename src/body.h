@@ -45,7 +45,6 @@ struct Body {
     bool awake = true;
     bool allowSleep = true;
     float sleepTime = 0.0f;
-
 };
 
 /// Recompute the origin frame from the centre of mass and angle.

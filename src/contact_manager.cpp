@@ -108,6 +108,20 @@ void World::Impl::updateContacts() {
     }
 }
 
+void World::Impl::countCategories(const Filter& filter, int delta) {
+    for (int bit = 0; bit < 16; ++bit) {
+        if (filter.categoryBits & (1u << bit)) categoryCounts[bit] += delta;
+    }
+}
+
+std::uint16_t World::Impl::presentCategories() const {
+    std::uint16_t present = 0;
+    for (int bit = 0; bit < 16; ++bit) {
+        if (categoryCounts[bit] > 0) present = static_cast<std::uint16_t>(present | (1u << bit));
+    }
+    return present;
+}
+
 void World::Impl::findNewContacts() {
     // The cheap, read-only part of addPair's test runs inside the (parallel) queries.
     auto mayPair = [this](std::int32_t a, std::int32_t b) {
@@ -115,7 +129,12 @@ void World::Impl::findNewContacts() {
         const Shape& shapeB = shapes[b];
         return shapeA.body != shapeB.body && filtersAllowContact(shapeA.filter, shapeB.filter);
     };
-    broadPhase.updatePairs(pool, mayPair,
+    const std::uint16_t present = presentCategories();
+    auto mayMeetAnything = [this, present](std::int32_t s) {
+        const Filter& filter = shapes[s].filter;
+        return filter.groupIndex > 0 || (filter.maskBits & present) != 0;
+    };
+    broadPhase.updatePairs(pool, mayMeetAnything, mayPair,
                            [this](std::int32_t a, std::int32_t b) { addPair(a, b); });
 }
 

@@ -3,6 +3,7 @@
 // contact bookkeeping is in contact_manager.cpp and the step pipeline in step.cpp.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -41,7 +42,12 @@ struct World::Impl {
     SlotPool<Contact> contacts;
     SlotPool<MouseJoint> mouseJoints;
     BroadPhase broadPhase;
-    PairMap contactPairs;    // shape pair -> contact index
+    PairMap contactPairs;  // shape pair -> contact index
+    // How many shapes carry each category bit: a moved shape whose mask admits none of the
+    // categories present (and no group can override) has nothing to meet, and is not queried.
+    std::array<std::int32_t, 16> categoryCounts{};
+    void countCategories(const Filter& filter, int delta);
+    std::uint16_t presentCategories() const;
     bool newShapes = false;  // pairs to find before the next step's contact update
 
     std::vector<ContactEvent> beginEvents;

@@ -23,6 +23,7 @@ ShapeId attachShape(World::Impl& w, std::int32_t bodyIndex, const ShapeDef& def,
     shape.restitution = def.restitution;
     shape.filter = def.filter;
     shape.userData = def.userData;
+    w.countCategories(shape.filter, +1);
     Body& body = w.bodies[bodyIndex];
     shape.next = body.shapeList;
     std::int32_t index = w.shapes.insert(shape);
@@ -41,6 +42,7 @@ ShapeId attachShape(World::Impl& w, std::int32_t bodyIndex, const ShapeDef& def,
 
 void World::Impl::removeShape(std::int32_t index) {
     const Shape& shape = shapes[index];
+    countCategories(shape.filter, -1);
     Body& body = bodies[shape.body];
     for (std::int32_t key = body.contactList; key != -1;) {
         std::int32_t contactIndex = edgeOwner(key);
@@ -136,7 +138,9 @@ void World::setShapeFilter(ShapeId id, const Filter& filter) {
     Impl& w = *impl_;
     std::int32_t index = w.shapeIndex("World::setShapeFilter", id);
     Shape& shape = w.shapes[index];
+    w.countCategories(shape.filter, -1);
     shape.filter = filter;
+    w.countCategories(shape.filter, +1);
     // Existing contacts may now be forbidden; pairs the old filter refused may now be allowed.
     for (std::int32_t key = w.bodies[shape.body].contactList; key != -1;) {
         Contact& contact = w.contacts[edgeOwner(key)];

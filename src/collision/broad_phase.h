@@ -39,11 +39,13 @@ public:
     template <typename AddPair>
     void updatePairs(AddPair&& addPair);
     /// The same, with the tree queries shared among the pool's workers (the pairs are merged
-    /// and sorted, so the result is the same for any number of workers), and with
-    /// mayPair(userDataA, userDataB), a read-only and thread-safe test, dropping pairs that
-    /// could never make a contact before they are collected.
-    template <typename MayPair, typename AddPair>
-    void updatePairs(TaskPool& pool, MayPair&& mayPair, AddPair&& addPair);
+    /// and sorted, so the result is the same for any number of workers), and with two
+    /// read-only, thread-safe tests that skip work which could never make a contact:
+    /// mayQuery(userData) false skips a buffered proxy's query, and mayPair(userDataA,
+    /// userDataB) false drops a pair before it is collected. A skipped proxy can still be found
+    /// by the query of another buffered proxy, where mayPair decides.
+    template <typename MayQuery, typename MayPair, typename AddPair>
+    void updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayPair, AddPair&& addPair);
 
 private:
     static constexpr std::int32_t kNullProxy = -1;
@@ -112,8 +114,9 @@ void BroadPhase::updatePairs(AddPair&& addPair) {
     reportSortedPairs(addPair);
 }
 
-template <typename MayPair, typename AddPair>
-void BroadPhase::updatePairs(TaskPool& pool, MayPair&& mayPair, AddPair&& addPair) {
+template <typename MayQuery, typename MayPair, typename AddPair>
+void BroadPhase::updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayPair,
+                             AddPair&& addPair) {
     workerPairs_.resize(static_cast<std::size_t>(pool.workerCount()));
     for (std::vector<ProxyPair>& pairs : workerPairs_) pairs.clear();
     markBuffered(1);
@@ -121,8 +124,9 @@ void BroadPhase::updatePairs(TaskPool& pool, MayPair&& mayPair, AddPair&& addPai
         static_cast<int>(moveBuffer_.size()), 128, [&](int begin, int end, int worker) {
             std::vector<ProxyPair>& pairs = workerPairs_[worker];
             for (int i = begin; i < end; ++i) {
-                if (moveBuffer_[i] == kNullProxy) continue;
-                queryMoved(moveBuffer_[i], [&](ProxyPair pair) {
+                const std::int32_t proxy = moveBuffer_[i];
+                if (proxy == kNullProxy || !mayQuery(tree_.userData(proxy))) continue;
+                queryMoved(proxy, [&](ProxyPair pair) {
                     if (mayPair(tree_.userData(pair.lower), tree_.userData(pair.upper))) {
                         pairs.push_back(pair);
                     }

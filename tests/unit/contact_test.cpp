@@ -333,3 +333,24 @@ TEST(Contacts, JointsAndNgsContactsShareThePositionSweepsAndTheEarlyExit) {
         }
     }
 }
+
+TEST(ContactFiltering, AShapeThatCouldMeetNothingIsFoundOnceSomethingItMeetsAppears) {
+    // A box that collides only with category 1 falls while no category-1 shape exists (the broad
+    // phase does not even query it then); a category-1 ground added later must still stop it.
+    World world;
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    def.position = {0.0f, 3.0f};
+    BodyId box = world.createBody(def);
+    ShapeDef boxShape;
+    boxShape.filter = {0x0002, 0x0001, 0};
+    world.createShape(box, boxShape, Polygon::box(0.5f, 0.5f));
+    for (int i = 0; i < 10; ++i) world.step(kDt);
+    ShapeDef groundShape;
+    groundShape.density = 0.0f;
+    groundShape.filter = {0x0001, 0xFFFF, 0};
+    BodyId ground = world.createBody(BodyDef{});
+    world.createShape(ground, groundShape, Polygon::box(20.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    for (int i = 0; i < 120; ++i) world.step(kDt);
+    EXPECT_NEAR(world.bodyPosition(box).y, 0.5f, 0.05f);
+}
