@@ -152,6 +152,36 @@ void World::Impl::synchronizeShapes(std::int32_t bodyIndex, bool swept) {
     }
 }
 
+void World::Impl::synchronizeSolvedBodies() {
+    shapeMoves.resize(static_cast<std::size_t>(shapes.capacity()));
+    const int count = static_cast<int>(islands.bodies.size());
+    pool.parallelFor(count, 256, [&](int begin, int end, int) {
+        for (int i = begin; i < end; ++i) {
+            const Body& body = bodies[islands.bodies[i]];
+            if (body.type == BodyType::Static) continue;
+            for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
+                Shape& shape = shapes[s];
+                AABB after = computeShapeBox(shape, body.xf);
+                ShapeMove& move = shapeMoves[s];
+                move.swept = combine(shape.box, after);
+                move.displacement =
+                    0.5f * (after.lower + after.upper) - 0.5f * (shape.box.lower + shape.box.upper);
+                move.needed = broadPhase.needsMove(shape.proxyId, move.swept, move.displacement);
+                shape.box = after;
+            }
+        }
+    });
+    // Re-insertions change the tree: one at a time, in a fixed order.
+    for (std::int32_t b : islands.bodies) {
+        const Body& body = bodies[b];
+        if (body.type == BodyType::Static) continue;
+        for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
+            const ShapeMove& move = shapeMoves[s];
+            if (move.needed) broadPhase.moveProxy(shapes[s].proxyId, move.swept, move.displacement);
+        }
+    }
+}
+
 void World::Impl::refilterBodyPair(std::int32_t a, std::int32_t b) {
     for (std::int32_t key = bodies[b].contactList; key != -1;) {
         Contact& contact = contacts[edgeOwner(key)];

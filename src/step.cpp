@@ -61,9 +61,7 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     }
 
     // Every non-static body solved this step moved: sweep its broad-phase boxes.
-    for (std::int32_t b : islands.bodies) {
-        if (bodies[b].type != BodyType::Static) synchronizeShapes(b, true);
-    }
+    synchronizeSolvedBodies();
     findNewContacts();
 
     // Forces apply for one step.

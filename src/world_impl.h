@@ -93,6 +93,15 @@ struct World::Impl {
     /// Moves a body's broad-phase boxes to its current transform, covering the whole motion
     /// since the last sync when `swept` (a step), or not (a teleport).
     void synchronizeShapes(std::int32_t bodyIndex, bool swept);
+    /// synchronizeShapes for every body solved this step, with the boxes computed and the
+    /// containment tests made on every worker; only the re-insertions are made in turn.
+    void synchronizeSolvedBodies();
+    struct ShapeMove {
+        AABB swept;
+        Vec2 displacement;
+        bool needed = false;
+    };
+    std::vector<ShapeMove> shapeMoves;  // per shape slot, for synchronizeSolvedBodies
     /// Whether two bodies may collide at all: one must be dynamic, and no joint between them
     /// may forbid it.
     bool bodiesMayCollide(std::int32_t bodyA, std::int32_t bodyB) const;

@@ -19,6 +19,10 @@ public:
     void destroyProxy(std::int32_t proxyId);
     /// See DynamicTree::moveProxy; a proxy the tree re-inserted is buffered for updatePairs.
     void moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement);
+    /// Whether moveProxy would re-insert (and so buffer) the proxy. Read-only: thread-safe.
+    bool needsMove(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) const {
+        return tree_.needsMove(proxyId, tightBox, displacement);
+    }
     /// Buffers a proxy so its pairs are reported again at the next updatePairs (for example
     /// after its filter changed).
     void touchProxy(std::int32_t proxyId);

@@ -37,9 +37,7 @@ void DynamicTree::destroyProxy(std::int32_t proxyId) {
     --proxyCount_;
 }
 
-bool DynamicTree::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) {
-    assert(isProxy(proxyId));
-
+AABB DynamicTree::fatBoxFor(const AABB& tightBox, Vec2 displacement) {
     // Stretch only the side the shape is heading towards: the box then covers where it will
     // be over the next few steps without growing behind it.
     AABB box = fatten(tightBox);
@@ -54,22 +52,29 @@ bool DynamicTree::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 dis
     } else {
         box.upper.y += ahead.y;
     }
+    return box;
+}
 
+bool DynamicTree::needsMove(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) const {
+    assert(isProxy(proxyId));
     // Still inside its box: nothing to do, unless the box has become far larger than the one
     // the shape would get now (stretched by a fast move that has since slowed or stopped). A
     // bloated box costs a query and spurious pairs whenever anything near it moves, so it is
     // shrunk. Sizes are compared, not positions, so a box stretched ahead of a steady motion
     // keeps serving until the shape leaves it.
     const AABB& stored = nodes_[proxyId].box;
-    if (contains(stored, tightBox)) {
-        const float slack = 2.0f * kOversizeMargins * kAabbMargin;
-        bool wider = stored.upper.x - stored.lower.x > box.upper.x - box.lower.x + slack;
-        bool taller = stored.upper.y - stored.lower.y > box.upper.y - box.lower.y + slack;
-        if (!wider && !taller) return false;
-    }
+    if (!contains(stored, tightBox)) return true;
+    const AABB box = fatBoxFor(tightBox, displacement);
+    const float slack = 2.0f * kOversizeMargins * kAabbMargin;
+    bool wider = stored.upper.x - stored.lower.x > box.upper.x - box.lower.x + slack;
+    bool taller = stored.upper.y - stored.lower.y > box.upper.y - box.lower.y + slack;
+    return wider || taller;
+}
 
+bool DynamicTree::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) {
+    if (!needsMove(proxyId, tightBox, displacement)) return false;
     removeLeaf(proxyId);
-    nodes_[proxyId].box = box;
+    nodes_[proxyId].box = fatBoxFor(tightBox, displacement);
     insertLeaf(proxyId);
     return true;
 }

@@ -55,6 +55,8 @@ public:
     /// would get now); otherwise re-inserts the leaf with a box fattened by kAabbMargin and
     /// stretched by kAabbMotionFactor * displacement, and returns true.
     bool moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement);
+    /// Whether moveProxy would re-insert the proxy. Read-only: safe from several threads.
+    bool needsMove(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) const;
 
     /// How much larger than needed (in margins, per side) a stored box may be before it is
     /// shrunk: enough slack that a shape wandering about a little never causes a re-insert.
@@ -98,6 +100,7 @@ private:
         bool isLeaf() const { return child1 == kNullNode; }
     };
 
+    static AABB fatBoxFor(const AABB& tightBox, Vec2 displacement);
     std::int32_t allocateNode();
     void freeNode(std::int32_t nodeId);
     bool isProxy(std::int32_t proxyId) const;
