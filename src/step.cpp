@@ -40,10 +40,29 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     islandBuilder.build(storage, islands);
     const int islandCount = static_cast<int>(islands.ranges.size());
     reports.resize(static_cast<std::size_t>(islandCount));
-    // Sharing out islands costs a hand-off per step: worth it only with enough bodies to solve.
-    const int islandsPerChunk = islands.bodies.size() < kParallelBodies ? islandCount : 1;
-    pool.parallelFor(islandCount, islandsPerChunk, [&](int begin, int end, int worker) {
-        for (int i = begin; i < end; ++i) {
+    // A coloured island is solved by every worker together, one island at a time; the others
+    // are shared out among the workers whole. Sharing out costs a hand-off per step: worth it
+    // only with enough bodies to solve.
+    const bool teams = pool.workerCount() > 1;
+    smallIslands.clear();
+    for (int i = 0; i < islandCount; ++i) {
+        if (!teams || !isColored(islands.view(i))) {
+            smallIslands.push_back(i);
+            continue;
+        }
+        IslandWorkspace& workspace = workspaces[0];
+        planIsland(islands, i, workspace, storage, context, pool.workerCount());
+        pool.region([&](int member) {
+            IslandReport report =
+                solveIsland(Team(pool, member), islands, i, workspace, storage, context);
+            if (member == 0) reports[i] = report;
+        });
+    }
+    const int smallCount = static_cast<int>(smallIslands.size());
+    const int islandsPerChunk = islands.bodies.size() < kParallelBodies ? smallCount : 1;
+    pool.parallelFor(smallCount, islandsPerChunk, [&](int begin, int end, int worker) {
+        for (int k = begin; k < end; ++k) {
+            const int i = smallIslands[k];
             reports[i] = solveIsland(islands, i, workspaces[worker], storage, context);
         }
     });

@@ -18,11 +18,27 @@ TaskPool::~TaskPool() {
 }
 
 void TaskPool::takeChunks(int worker) {
+    if (count_ < 0) {
+        trampoline_(context_, 0, 0, worker);
+        return;
+    }
     for (;;) {
         int begin = next_.fetch_add(chunk_, std::memory_order_relaxed);
         if (begin >= count_) return;
         trampoline_(context_, begin, std::min(begin + chunk_, count_), worker);
     }
+}
+
+void TaskPool::barrier() {
+    const int workers = workerCount();
+    if (workers == 1) return;
+    const std::uint64_t round = round_.load(std::memory_order_acquire);
+    if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == workers) {
+        arrived_.store(0, std::memory_order_relaxed);
+        round_.fetch_add(1, std::memory_order_acq_rel);
+        return;
+    }
+    while (round_.load(std::memory_order_acquire) == round) std::this_thread::yield();
 }
 
 void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline) {
@@ -32,7 +48,7 @@ void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline
         trampoline_ = trampoline;
         count_ = count;
         // A few chunks per worker balance uneven work without much hand-off cost.
-        int target = std::max(1, count / (4 * workerCount()));
+        const int target = std::max(1, count / (4 * workerCount()));
         chunk_ = std::max(minChunk, target);
         next_.store(0, std::memory_order_relaxed);
         busy_ = static_cast<int>(threads_.size());

@@ -38,8 +38,26 @@ public:
         });
     }
 
+    /// Runs body(worker) on every worker at once (the caller is worker 0) and returns when all
+    /// have returned. Inside, workers meet with barrier(): the island solver uses this to solve
+    /// one graph colour at a time on every worker.
+    template <typename Body>
+    void region(Body&& body) {
+        if (threads_.empty()) {
+            body(0);
+            return;
+        }
+        run(-1, 1, &body,
+            [](void* context, int, int, int worker) { (*static_cast<Body*>(context))(worker); });
+    }
+
+    /// Inside region(): waits until every worker has arrived. It spins (yielding) rather than
+    /// sleeps: the work between two barriers is a few microseconds, less than a wake-up costs.
+    void barrier();
+
 private:
     using Trampoline = void (*)(void*, int, int, int);
+    /// count < 0: a region, the trampoline called once per worker.
     void run(int count, int minChunk, void* context, Trampoline trampoline);
     void workerLoop(int worker);
     void takeChunks(int worker);
@@ -58,6 +76,9 @@ private:
     int count_ = 0;
     int chunk_ = 1;
     std::atomic<int> next_{0};
+    // The region barrier: arrivals in this round, and the round number.
+    std::atomic<int> arrived_{0};
+    std::atomic<std::uint64_t> round_{0};
 };
 
 }  // namespace pivot

@@ -60,6 +60,7 @@ struct World::Impl {
     IslandSet islands;
     std::vector<IslandWorkspace> workspaces;    // one per worker
     std::vector<IslandReport> reports;          // one per island of the current step
+    std::vector<int> smallIslands;              // islands solved whole by one worker
     std::vector<std::uint8_t> contactOutcomes;  // updateContacts' first phase, per contact slot
 
     void step(float dt, int velocityIterations, int positionIterations);

@@ -160,26 +160,27 @@ MeasuredPoint measure(const ContactPositionConstraint& pc, const Transform& xfA,
 
 }  // namespace
 
-void ContactSolver::prepare(const std::int32_t* contacts,
-                            const std::array<std::int32_t, 2>* bodyIndices, int count,
+void ContactSolver::reset(int count, const StepContext& step) {
+    positionBias_ = step.contactBiasFactor;
+    baumgarte_ = step.contactCorrection == ContactCorrection::Baumgarte;
+    velocity_.resize(static_cast<std::size_t>(count));
+    position_.resize(baumgarte_ ? 0 : static_cast<std::size_t>(count));
+}
+
+void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
                             const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
                             const SlotPool<Shape>& shapes, const StepContext& step,
-                            const SolverPosition* positions, SolverVelocity* velocities) {
-    velocity_.clear();
-    position_.clear();
-    positionBias_ = step.contactBiasFactor;
-    const bool baumgarte = step.contactCorrection == ContactCorrection::Baumgarte;
-
-    for (int k = 0; k < count; ++k) {
-        const std::int32_t contactIndex = contacts[k];
+                            const SolverPosition* positions) {
+    for (int k = range.begin; k < range.end; ++k) {
+        const std::int32_t contactIndex = ids[k];
         const Contact& contact = pool[contactIndex];
         const Manifold& manifold = contact.manifold;
         const Body& bodyA = bodies[contact.bodyA()];
         const Body& bodyB = bodies[contact.bodyB()];
 
         ContactVelocityConstraint c;
-        c.indexA = bodyIndices[k][0];
-        c.indexB = bodyIndices[k][1];
+        c.indexA = pairs[k][0];
+        c.indexB = pairs[k][1];
         c.contactIndex = contactIndex;
         c.mA = bodyA.invMass;
         c.mB = bodyB.invMass;
@@ -233,7 +234,7 @@ void ContactSolver::prepare(const std::int32_t* contacts,
             // one step's travel higher than it fell, v * h, 5% for a 2 m drop at 60 Hz.)
             float vRel = dot(c.normal, relativeVelocity(startA, startB, p.rA, p.rB));
             if (vRel < -step.restitutionThreshold) p.velocityBias = -contact.restitution * vRel;
-            if (baumgarte) {
+            if (baumgarte_) {
                 float push = -step.contactBiasFactor * step.invDt *
                              std::min(0.0f, wm.separations[j] + kLinearSlop);
                 p.velocityBias = std::max(p.velocityBias, push);
@@ -256,12 +257,14 @@ void ContactSolver::prepare(const std::int32_t* contacts,
             }
         }
 
-        velocity_.push_back(c);
-        if (!baumgarte) position_.push_back(pc);
+        velocity_[k] = c;
+        if (!baumgarte_) position_[k] = pc;
     }
+}
 
-    // Warm start: apply last step's impulses before iterating.
-    for (const ContactVelocityConstraint& c : velocity_) {
+void ContactSolver::warmStart(IndexRange range, SolverVelocity* velocities) const {
+    for (int k = range.begin; k < range.end; ++k) {
+        const ContactVelocityConstraint& c = velocity_[k];
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
         Vec2 tangent = tangentOf(c.normal);
@@ -272,8 +275,9 @@ void ContactSolver::prepare(const std::int32_t* contacts,
     }
 }
 
-void ContactSolver::solveVelocities(SolverVelocity* velocities) {
-    for (ContactVelocityConstraint& c : velocity_) {
+void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities) {
+    for (int k = range.begin; k < range.end; ++k) {
+        ContactVelocityConstraint& c = velocity_[k];
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
         // Friction first: its bound depends on the normal impulse, and penetration matters
@@ -287,8 +291,9 @@ void ContactSolver::solveVelocities(SolverVelocity* velocities) {
     }
 }
 
-void ContactSolver::storeImpulses(SlotPool<Contact>& pool) const {
-    for (const ContactVelocityConstraint& c : velocity_) {
+void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool) const {
+    for (int k = range.begin; k < range.end; ++k) {
+        const ContactVelocityConstraint& c = velocity_[k];
         Manifold& m = pool[c.contactIndex].manifold;
         for (int j = 0; j < c.pointCount; ++j) {
             m.points[j].normalImpulse = c.points[j].normalImpulse;
@@ -297,9 +302,11 @@ void ContactSolver::storeImpulses(SlotPool<Contact>& pool) const {
     }
 }
 
-float ContactSolver::solvePositions(SolverPosition* positions) const {
-    float minSeparation = 0.0f;
-    for (const ContactPositionConstraint& pc : position_) {
+float ContactSolver::solvePositions(IndexRange range, SolverPosition* positions) const {
+    float smallest = 0.0f;
+    if (position_.empty()) return smallest;
+    for (int k = range.begin; k < range.end; ++k) {
+        const ContactPositionConstraint& pc = position_[k];
         SolverPosition& A = positions[pc.indexA];
         SolverPosition& B = positions[pc.indexB];
         for (int j = 0; j < pc.pointCount; ++j) {
@@ -307,7 +314,7 @@ float ContactSolver::solvePositions(SolverPosition* positions) const {
                                       solverTransform(B, pc.localCenterB), j);
             Vec2 rA = m.point - A.c;
             Vec2 rB = m.point - B.c;
-            if (!(m.separation >= minSeparation)) minSeparation = m.separation;  // NaN wins
+            smallest = minSeparation(smallest, m.separation);
             // Only penetration beyond the slop is corrected, a fraction at a time and never by
             // more than kMaxLinearCorrection in one solve.
             float C = std::clamp(positionBias_ * (m.separation + kLinearSlop),
@@ -323,7 +330,7 @@ float ContactSolver::solvePositions(SolverPosition* positions) const {
             B.a += pc.iB * cross(rB, P);
         }
     }
-    return minSeparation;
+    return smallest;
 }
 
 }  // namespace pivot

@@ -25,7 +25,9 @@
 #include "contact.h"
 #include "pivot/world.h"
 #include "slot_pool.h"
+#include "solver/island_set.h"
 #include "solver/solver_types.h"
+#include "solver/team.h"
 
 namespace pivot {
 
@@ -67,22 +69,27 @@ struct ContactPositionConstraint {
     int pointCount = 0;
 };
 
-/// The contact constraints of one island, rebuilt every step into reused buffers.
+/// The contact constraints of one island, rebuilt every step into reused buffers. Contact k
+/// is constraint k of both the velocity and the position arrays; each stage works on a range
+/// of them, so a team can share it out by colour (island_schedule.h).
 class ContactSolver {
 public:
-    /// Builds the constraints of `contacts` from the solver arrays' poses (the start of the
-    /// step) and applies the warm start, scaled by step.dtRatio. Restitution measures the
-    /// approach speed from the bodies' velocities before this step's forces.
-    /// `bodyIndices[i]` are the solver indices of contact i's two bodies.
-    void prepare(const std::int32_t* contacts, const std::array<std::int32_t, 2>* bodyIndices,
-                 int count, const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
+    /// Sizes the arrays for `count` contacts. On one thread, before prepare.
+    void reset(int count, const StepContext& step);
+    /// Builds constraints [range) from the contacts ids[k], whose solver bodies are pairs[k], at
+    /// the solver arrays' poses (the start of the step); writes no velocity. Restitution
+    /// measures the approach speed from the bodies' velocities before this step's forces.
+    void prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
+                 const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
                  const SlotPool<Shape>& shapes, const StepContext& step,
-                 const SolverPosition* positions, SolverVelocity* velocities);
-    void solveVelocities(SolverVelocity* velocities);
-    void storeImpulses(SlotPool<Contact>& pool) const;
-    /// One NGS sweep over every contact point. Returns the smallest separation measured (m,
-    /// before each correction); 0 when there are no contacts.
-    float solvePositions(SolverPosition* positions) const;
+                 const SolverPosition* positions);
+    /// Applies last step's impulses (scaled by step.dtRatio in prepare) before iterating.
+    void warmStart(IndexRange range, SolverVelocity* velocities) const;
+    void solveVelocities(IndexRange range, SolverVelocity* velocities);
+    void storeImpulses(IndexRange range, SlotPool<Contact>& pool) const;
+    /// One NGS sweep over the points of contacts [range). Returns the smallest separation
+    /// measured (m, before each correction; NaN if any was NaN); 0 when there are none.
+    float solvePositions(IndexRange range, SolverPosition* positions) const;
     /// Whether any contact takes part in the NGS position phase.
     bool hasPositionConstraints() const { return !position_.empty(); }
 
@@ -91,10 +98,14 @@ public:
         return minSeparation >= -3.0f * kLinearSlop;
     }
 
+    /// The smaller separation, NaN winning (so a blown-up contact is never taken as solved).
+    static float minSeparation(float a, float b) { return !(b >= a) ? b : a; }
+
 private:
     std::vector<ContactVelocityConstraint> velocity_;
     std::vector<ContactPositionConstraint> position_;
     float positionBias_ = 0.0f;
+    bool baumgarte_ = false;
 };
 
 }  // namespace pivot

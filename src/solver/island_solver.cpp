@@ -7,59 +7,16 @@
 
 namespace pivot {
 
-void IslandSet::clear() {
-    bodies.clear();
-    contacts.clear();
-    contactBodies.clear();
-    joints.clear();
-    jointBodies.clear();
-    mouseJoints.clear();
-    mouseBodies.clear();
-    ranges.clear();
-}
-
 namespace {
 
-// One island's slice of an IslandSet.
-struct IslandView {
-    const std::int32_t* bodies;
-    int bodyCount;
-    const std::int32_t* contacts;
-    const BodyPair* contactBodies;
-    int contactCount;
-    const std::int32_t* joints;
-    const BodyPair* jointBodies;
-    int jointCount;
-    const std::int32_t* mouseJoints;
-    const std::int32_t* mouseBodies;
-    int mouseCount;
-};
-
-IslandView viewOf(const IslandSet& set, int index) {
-    const IslandSet::Range& r = set.ranges[index];
-    return {set.bodies.data() + r.bodyBegin,
-            r.bodyEnd - r.bodyBegin,
-            set.contacts.data() + r.contactBegin,
-            set.contactBodies.data() + r.contactBegin,
-            r.contactEnd - r.contactBegin,
-            set.joints.data() + r.jointBegin,
-            set.jointBodies.data() + r.jointBegin,
-            r.jointEnd - r.jointBegin,
-            set.mouseJoints.data() + r.mouseBegin,
-            set.mouseBodies.data() + r.mouseBegin,
-            r.mouseEnd - r.mouseBegin};
-}
-
-// Copy body state into the solver arrays; apply gravity, forces and damping to dynamic bodies
+// Copy body state into the solver slots; apply gravity, forces and damping to dynamic bodies
 // (semi-implicit Euler: velocities first, positions later from the new velocities).
-void integrateVelocities(const IslandView& island, IslandWorkspace& work, SlotPool<Body>& bodies,
-                         const StepContext& step) {
+void integrateVelocities(const Team& team, const IslandView& island, IslandWorkspace& work,
+                         const SlotPool<Body>& bodies, const StepContext& step) {
     const float h = step.dt;
-    const std::size_t n = static_cast<std::size_t>(island.bodyCount);
-    work.velocities.resize(n);
-    work.positions.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        Body& b = bodies[island.bodies[i]];
+    const IndexRange mine = team.share(island.bodyCount);
+    for (int i = mine.begin; i < mine.end; ++i) {
+        const Body& b = bodies[island.bodies[i]];
         Vec2 v = b.linearVelocity;
         float w = b.angularVelocity;
         if (b.type == BodyType::Dynamic) {
@@ -73,62 +30,79 @@ void integrateVelocities(const IslandView& island, IslandWorkspace& work, SlotPo
         work.positions[i] = {b.center, b.angle};
         work.velocities[i] = {v, w};
     }
-}
-
-// Build each joint's solver constraint in its strategy's group and apply the warm start.
-void prepareJoints(const IslandView& island, IslandWorkspace& work, const SlotPool<Body>& bodies,
-                   const SlotPool<RevoluteJoint>& joints, const StepContext& step) {
-    for (RevoluteConstraints& group : work.groups) group.clear();
-
-    for (int j = 0; j < island.jointCount; ++j) {
-        const std::int32_t jointIndex = island.joints[j];
-        const RevoluteJoint& joint = joints[jointIndex];
-        const Body& a = bodies[joint.bodyA()];
-        const Body& b = bodies[joint.bodyB()];
-        RevoluteConstraint c;
-        c.jointIndex = jointIndex;
-        c.biasFactor = joint.biasFactor();
-        c.bodies.indexA = island.jointBodies[j][0];
-        c.bodies.indexB = island.jointBodies[j][1];
-        c.bodies.mA = a.invMass;
-        c.bodies.mB = b.invMass;
-        c.bodies.iA = a.invInertia;
-        c.bodies.iB = b.invInertia;
-        c.point.localRA = joint.localAnchorA - a.localCenter;
-        c.point.localRB = joint.localAnchorB - b.localCenter;
-        AnglePart& angle = c.angle;
-        angle.referenceAngle = joint.referenceAngle;
-        angle.limitEnabled = joint.enableLimit;
-        angle.lower = joint.lowerAngle;
-        angle.upper = joint.upperAngle;
-        angle.motorEnabled = joint.enableMotor;
-        angle.motorSpeed = joint.motorSpeed;
-        angle.maxMotorImpulse = step.dt * joint.maxMotorTorque;
-        angle.motorImpulse = joint.motorImpulse;
-        angle.lowerImpulse = joint.lowerImpulse;
-        angle.upperImpulse = joint.upperImpulse;
-        preparePoint(c.bodies, c.point, work.positions.data());
-        prepareAngle(c.bodies, angle, work.positions.data(), step.invDt);
-        if (step.warmStarting) {
-            // Impulses scale with the step: keep the force they stand for when dt changes.
-            c.point.impulse = step.dtRatio * joint.impulse;
-            angle.motorImpulse *= step.dtRatio;
-            angle.lowerImpulse *= step.dtRatio;
-            angle.upperImpulse *= step.dtRatio;
-            warmStart(c, work.velocities.data());
-        } else {
-            angle.motorImpulse = 0.0f;
-            angle.lowerImpulse = 0.0f;
-            angle.upperImpulse = 0.0f;
-        }
-        work.groups[static_cast<int>(joint.solver)].push_back(c);
+    // Private copies of bodies that never move: nothing integrates them, so a copy is simply
+    // the body's own state.
+    const std::vector<std::int32_t>& copies = work.schedule.fixedCopies;
+    const IndexRange myCopies = team.share(static_cast<int>(copies.size()));
+    for (int k = myCopies.begin; k < myCopies.end; ++k) {
+        const Body& b = bodies[island.bodies[copies[k]]];
+        const std::size_t slot = static_cast<std::size_t>(island.bodyCount + k);
+        work.positions[slot] = {b.center, b.angle};
+        work.velocities[slot] = {b.linearVelocity, b.angularVelocity};
     }
-    prepareVelocityBias(work.groups, work.positions.data(), step.invDt);
 }
 
-void storeImpulses(const IslandWorkspace& work, SlotPool<RevoluteJoint>& joints, float invDt) {
+// Build each joint's solver constraint in its strategy's group (no velocity is touched: the
+// warm start comes after, in warmStartJoints).
+void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
+                   const SlotPool<RevoluteJoint>& joints, const StepContext& step) {
+    const IslandSchedule& schedule = work.schedule;
+    for (int g = 0; g < kPositionSolverCount; ++g) {
+        RevoluteConstraints& group = work.groups[g];
+        const IndexRange mine = team.share(static_cast<int>(group.size()));
+        for (int k = mine.begin; k < mine.end; ++k) {
+            const std::size_t at = static_cast<std::size_t>(schedule.groupStart[g] + k);
+            const std::int32_t jointIndex = schedule.jointIds[at];
+            const RevoluteJoint& joint = joints[jointIndex];
+            const Body& a = bodies[joint.bodyA()];
+            const Body& b = bodies[joint.bodyB()];
+            RevoluteConstraint c;
+            c.jointIndex = jointIndex;
+            c.biasFactor = joint.biasFactor();
+            c.bodies.indexA = schedule.jointPairs[at][0];
+            c.bodies.indexB = schedule.jointPairs[at][1];
+            c.bodies.mA = a.invMass;
+            c.bodies.mB = b.invMass;
+            c.bodies.iA = a.invInertia;
+            c.bodies.iB = b.invInertia;
+            c.point.localRA = joint.localAnchorA - a.localCenter;
+            c.point.localRB = joint.localAnchorB - b.localCenter;
+            AnglePart& angle = c.angle;
+            angle.referenceAngle = joint.referenceAngle;
+            angle.limitEnabled = joint.enableLimit;
+            angle.lower = joint.lowerAngle;
+            angle.upper = joint.upperAngle;
+            angle.motorEnabled = joint.enableMotor;
+            angle.motorSpeed = joint.motorSpeed;
+            angle.maxMotorImpulse = step.dt * joint.maxMotorTorque;
+            angle.motorImpulse = joint.motorImpulse;
+            angle.lowerImpulse = joint.lowerImpulse;
+            angle.upperImpulse = joint.upperImpulse;
+            preparePoint(c.bodies, c.point, work.positions.data());
+            prepareAngle(c.bodies, angle, work.positions.data(), step.invDt);
+            if (step.warmStarting) {
+                // Impulses scale with the step: keep the force they stand for when dt changes.
+                c.point.impulse = step.dtRatio * joint.impulse;
+                angle.motorImpulse *= step.dtRatio;
+                angle.lowerImpulse *= step.dtRatio;
+                angle.upperImpulse *= step.dtRatio;
+            } else {
+                angle.motorImpulse = 0.0f;
+                angle.lowerImpulse = 0.0f;
+                angle.upperImpulse = 0.0f;
+            }
+            group[k] = c;
+        }
+    }
+    prepareVelocityBias(team, work.groups, work.positions.data(), step.invDt);
+}
+
+void storeJointImpulses(const Team& team, const IslandWorkspace& work,
+                        SlotPool<RevoluteJoint>& joints, float invDt) {
     for (const RevoluteConstraints& group : work.groups) {
-        for (const RevoluteConstraint& c : group) {
+        const IndexRange mine = team.share(static_cast<int>(group.size()));
+        for (int k = mine.begin; k < mine.end; ++k) {
+            const RevoluteConstraint& c = group[k];
             RevoluteJoint& joint = joints[c.jointIndex];
             joint.impulse = c.point.impulse;
             joint.motorImpulse = c.angle.motorImpulse;
@@ -139,30 +113,32 @@ void storeImpulses(const IslandWorkspace& work, SlotPool<RevoluteJoint>& joints,
     }
 }
 
+// Mouse joints are few and share no stage with other constraints: the leader solves them.
 void prepareMouseJoints(const IslandView& island, IslandWorkspace& work,
                         const SlotPool<Body>& bodies, const SlotPool<MouseJoint>& mouseJoints,
                         const StepContext& step) {
-    work.mouseConstraints.clear();
     for (int k = 0; k < island.mouseCount; ++k) {
         const std::int32_t m = island.mouseJoints[k];
         const MouseJoint& joint = mouseJoints[m];
         const Body& body = bodies[joint.body];
-        MouseConstraint c;
+        MouseConstraint& c = work.mouseConstraints[k];
+        c = MouseConstraint{};
         c.index = island.mouseBodies[k];
         c.jointIndex = m;
         c.mB = body.invMass;
         c.iB = body.invInertia;
         prepareMouse(c, joint, body.mass, body.localCenter, work.positions.data(),
                      work.velocities.data(), step.dt, step.dtRatio, step.warmStarting);
-        work.mouseConstraints.push_back(c);
     }
 }
 
 // Move every body by its velocity, limiting the move per step (kMaxTranslation,
 // kMaxRotation). The limit scales the velocity itself so the next step starts from it.
-void integratePositions(IslandWorkspace& work, const StepContext& step, IslandReport& report) {
+void integratePositions(const Team& team, IslandWorkspace& work, const StepContext& step,
+                        IslandReport& report) {
     const float h = step.dt;
-    for (std::size_t i = 0; i < work.velocities.size(); ++i) {
+    const IndexRange mine = team.share(static_cast<int>(work.velocities.size()));
+    for (int i = mine.begin; i < mine.end; ++i) {
         SolverVelocity& vel = work.velocities[i];
         SolverPosition& pos = work.positions[i];
         Vec2 translation = h * vel.v;
@@ -210,8 +186,10 @@ bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepCon
     return true;
 }
 
-void writeBack(const IslandView& island, const IslandWorkspace& work, SlotPool<Body>& bodies) {
-    for (int i = 0; i < island.bodyCount; ++i) {
+void writeBack(const Team& team, const IslandView& island, const IslandWorkspace& work,
+               SlotPool<Body>& bodies) {
+    const IndexRange mine = team.share(island.bodyCount);
+    for (int i = mine.begin; i < mine.end; ++i) {
         Body& b = bodies[island.bodies[i]];
         if (b.type == BodyType::Static) continue;
         b.center = work.positions[i].c;
@@ -224,39 +202,93 @@ void writeBack(const IslandView& island, const IslandWorkspace& work, SlotPool<B
 
 }  // namespace
 
-IslandReport solveIsland(const IslandSet& set, int index, IslandWorkspace& work,
-                         SolverStorage& storage, const StepContext& step) {
-    const IslandView island = viewOf(set, index);
-    IslandReport report;
+void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
+                const SolverStorage& storage, const StepContext& step, int teamSize) {
+    const IslandView island = set.view(index);
+    IslandSchedule& schedule = work.schedule;
+    work.scheduler.plan(island, storage.bodies, storage.joints, schedule);
+    const std::size_t slots = static_cast<std::size_t>(schedule.slotCount(island));
+    work.velocities.resize(slots);
+    work.positions.resize(slots);
+    for (int g = 0; g < kPositionSolverCount; ++g) {
+        work.groups[g].resize(
+            static_cast<std::size_t>(schedule.groupStart[g + 1] - schedule.groupStart[g]));
+    }
+    work.contactSolver.reset(island.contactCount, step);
+    work.mouseConstraints.resize(static_cast<std::size_t>(island.mouseCount));
+    work.positionScratch.pseudo.resize(slots);
+    for (std::vector<SweepTally>& round : work.positionScratch.tallies) {
+        round.resize(static_cast<std::size_t>(teamSize));
+    }
+    work.memberReports.resize(static_cast<std::size_t>(teamSize));
+}
+
+IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
+                         IslandWorkspace& work, SolverStorage& storage, const StepContext& step) {
+    const IslandView island = set.view(index);
+    const IslandSchedule& schedule = work.schedule;
     SlotPool<Body>& bodies = storage.bodies;
-    integrateVelocities(island, work, bodies, step);
-    // Contacts are prepared and warm-started before joints, and solved after them in each
-    // velocity sweep, as in Box2D 2.4.1 (see docs/position-correction.md).
-    work.contactSolver.prepare(island.contacts, island.contactBodies, island.contactCount,
-                               storage.contacts, bodies, storage.shapes, step,
-                               work.positions.data(), work.velocities.data());
-    prepareJoints(island, work, bodies, storage.joints, step);
-    prepareMouseJoints(island, work, bodies, storage.mouseJoints, step);
+    IslandReport& mine = work.memberReports[team.member()];
+    mine = IslandReport{};
+
+    integrateVelocities(team, island, work, bodies, step);
+    team.sync();
+    work.contactSolver.prepare(team.share(island.contactCount), schedule.contactIds.data(),
+                               schedule.contactPairs.data(), storage.contacts, bodies,
+                               storage.shapes, step, work.positions.data());
+    prepareJoints(team, work, bodies, storage.joints, step);
+    team.sync();
+
+    // Warm start: contacts, then joints, then mouse joints; each velocity sweep then solves
+    // contacts after joints, as Box2D 2.4.1 does (see docs/position-correction.md).
+    SolverVelocity* velocities = work.velocities.data();
+    forEachBatch(team, schedule.contactBatches,
+                 [&](IndexRange range) { work.contactSolver.warmStart(range, velocities); });
+    warmStartJoints(team, work.groups, schedule, velocities);
+    const bool hasMouse = island.mouseCount > 0;
+    if (hasMouse) {
+        if (team.leader()) prepareMouseJoints(island, work, bodies, storage.mouseJoints, step);
+        team.sync();
+    }
     for (int it = 0; it < step.velocityIterations; ++it) {
         // A mouse joint is the user's hand: solved first, so the rigid joints and contacts have
         // the last word on what the drag may do to them.
-        for (MouseConstraint& c : work.mouseConstraints)
-            solveMouseVelocity(c, work.velocities.data());
-        solveVelocitySweep(work.groups, work.velocities.data());
-        work.contactSolver.solveVelocities(work.velocities.data());
+        if (hasMouse) {
+            if (team.leader()) {
+                for (MouseConstraint& c : work.mouseConstraints) solveMouseVelocity(c, velocities);
+            }
+            team.sync();
+        }
+        solveVelocitySweep(team, work.groups, schedule, velocities);
+        forEachBatch(team, schedule.contactBatches, [&](IndexRange range) {
+            work.contactSolver.solveVelocities(range, velocities);
+        });
     }
-    storeImpulses(work, storage.joints, step.invDt);
-    work.contactSolver.storeImpulses(storage.contacts);
-    for (const MouseConstraint& c : work.mouseConstraints) {
-        storage.mouseJoints[c.jointIndex].impulse = c.impulse;
+
+    storeJointImpulses(team, work, storage.joints, step.invDt);
+    work.contactSolver.storeImpulses(team.share(island.contactCount), storage.contacts);
+    if (team.leader()) {
+        for (const MouseConstraint& c : work.mouseConstraints) {
+            storage.mouseJoints[c.jointIndex].impulse = c.impulse;
+        }
     }
-    integratePositions(work, step, report);
-    work.pseudoVelocities.resize(work.velocities.size());
+    integratePositions(team, work, step, mine);
+    team.sync();
+
     PositionPhaseResult phase =
-        solvePositionPhase(work.groups, work.contactSolver, work.positions.data(),
-                           work.pseudoVelocities, step.positionIterations, step.dt);
+        solvePositionPhase(team, work.groups, schedule, work.contactSolver,
+                           work.positions.data(), work.positionScratch, step.positionIterations,
+                           step.dt);
+    writeBack(team, island, work, bodies);
+    team.sync();
+    if (!team.leader()) return IslandReport{};
+
+    IslandReport report;
+    for (const IslandReport& member : work.memberReports) {
+        report.translationClamps += member.translationClamps;
+        report.rotationClamps += member.rotationClamps;
+    }
     report.positionIterations = phase.sweeps;
-    writeBack(island, work, bodies);
     report.fellAsleep = updateSleep(island, bodies, step, phase.solved);
     return report;
 }

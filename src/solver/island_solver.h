@@ -1,7 +1,8 @@
 // Solving one island: a set of awake bodies connected by joints and touching contacts,
 // independent of every other island for this step. The stages run in the order of
 // docs/position-correction.md. Islands share nothing they write, so several can be solved at
-// once, each in its own workspace.
+// once, each in its own workspace; a big island can also be solved by a team of workers
+// together (team.h), colour by colour (island_schedule.h).
 #pragma once
 
 #include <array>
@@ -15,8 +16,11 @@
 #include "shape.h"
 #include "slot_pool.h"
 #include "solver/contact_solver.h"
+#include "solver/island_schedule.h"
+#include "solver/island_set.h"
 #include "solver/position_solver.h"
 #include "solver/solver_types.h"
+#include "solver/team.h"
 
 namespace pivot {
 
@@ -29,42 +33,6 @@ struct SolverStorage {
     SlotPool<MouseJoint>& mouseJoints;
 };
 
-/// The solver indices of a constraint's two bodies within its island.
-using BodyPair = std::array<std::int32_t, 2>;
-
-/// Every island of a step, island after island in flat arrays. Built by IslandBuilder; the
-/// solver indices are recorded here rather than in the bodies, because a static body belongs
-/// to every island that touches it, with a different index in each.
-struct IslandSet {
-    struct Range {
-        std::int32_t bodyBegin, bodyEnd;
-        std::int32_t contactBegin, contactEnd;
-        std::int32_t jointBegin, jointEnd;
-        std::int32_t mouseBegin, mouseEnd;
-    };
-    std::vector<std::int32_t> bodies;    // body pool indices; solver index = position - bodyBegin
-    std::vector<std::int32_t> contacts;  // touching contacts, in the order they were reached
-    std::vector<BodyPair> contactBodies;
-    std::vector<std::int32_t> joints;  // revolute joints, in the order they were reached
-    std::vector<BodyPair> jointBodies;
-    std::vector<std::int32_t> mouseJoints;
-    std::vector<std::int32_t> mouseBodies;  // solver index of each mouse joint's body
-    std::vector<Range> ranges;
-
-    void clear();
-};
-
-/// The solver's arrays for one island at a time. One per worker, reused for every island of
-/// every step, so after the first steps solving allocates nothing.
-struct IslandWorkspace {
-    std::vector<SolverVelocity> velocities;
-    std::vector<SolverPosition> positions;
-    std::vector<SolverVelocity> pseudoVelocities;
-    ConstraintGroups groups;
-    std::vector<MouseConstraint> mouseConstraints;
-    ContactSolver contactSolver;
-};
-
 struct IslandReport {
     int translationClamps = 0;
     int rotationClamps = 0;
@@ -72,9 +40,38 @@ struct IslandReport {
     bool fellAsleep = false;
 };
 
-/// Advances island `index` of `set` by one step, stores its joints' and contacts' impulses and
-/// updates its bodies' sleep timers (putting it to sleep when it has rested long enough).
-IslandReport solveIsland(const IslandSet& set, int index, IslandWorkspace& workspace,
-                         SolverStorage& storage, const StepContext& step);
+/// The solver's arrays for one island at a time. One per worker, reused for every island of
+/// every step, so after the first steps solving allocates nothing.
+struct IslandWorkspace {
+    IslandScheduler scheduler;
+    IslandSchedule schedule;
+    std::vector<SolverVelocity> velocities;  // one per solver slot
+    std::vector<SolverPosition> positions;
+    ConstraintGroups groups;
+    std::vector<MouseConstraint> mouseConstraints;
+    ContactSolver contactSolver;
+    PositionPhaseScratch positionScratch;
+    std::vector<IslandReport> memberReports;  // one per team member
+};
+
+/// Before a team solves island `index`, on one thread: plans its schedule and sizes every
+/// array of `workspace` for a team of `teamSize`.
+void planIsland(const IslandSet& set, int index, IslandWorkspace& workspace,
+                const SolverStorage& storage, const StepContext& step, int teamSize);
+
+/// One member's part of advancing the planned island `index` by one step: every member of the
+/// team calls it with the same arguments. Stores the joints' and contacts' impulses and updates
+/// the bodies' sleep timers (putting the island to sleep when it has rested long enough).
+/// Returns the island's report on the leader (an empty one on other members).
+IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
+                         IslandWorkspace& workspace, SolverStorage& storage,
+                         const StepContext& step);
+
+/// Plans and solves island `index` on the calling thread.
+inline IslandReport solveIsland(const IslandSet& set, int index, IslandWorkspace& workspace,
+                                SolverStorage& storage, const StepContext& step) {
+    planIsland(set, index, workspace, storage, step, 1);
+    return solveIsland(Team{}, set, index, workspace, storage, step);
+}
 
 }  // namespace pivot

@@ -8,14 +8,16 @@ namespace pivot {
 
 namespace {
 
-RevoluteConstraints& groupOf(ConstraintGroups& groups, PositionSolver solver) {
-    return groups[static_cast<int>(solver)];
-}
+constexpr int kBaumgarte = static_cast<int>(PositionSolver::Baumgarte);
+constexpr int kPseudoVelocity = static_cast<int>(PositionSolver::PseudoVelocity);
+constexpr int kModifiedNgs = static_cast<int>(PositionSolver::ModifiedNGS);
+constexpr int kFullNgs = static_cast<int>(PositionSolver::FullNGS);
 
 // Baumgarte: the joint's errors at the start of the step, fed back as velocities.
-void prepareBaumgarteBias(RevoluteConstraints& group, const SolverPosition* positions,
-                          float invDt) {
-    for (RevoluteConstraint& c : group) {
+void prepareBaumgarteBias(RevoluteConstraints& group, IndexRange range,
+                          const SolverPosition* positions, float invDt) {
+    for (int k = range.begin; k < range.end; ++k) {
+        RevoluteConstraint& c = group[k];
         const SolverPosition& A = positions[c.bodies.indexA];
         const SolverPosition& B = positions[c.bodies.indexB];
         Vec2 C = B.c + c.point.rB - A.c - c.point.rA;  // rA, rB were set for this pose
@@ -25,8 +27,10 @@ void prepareBaumgarteBias(RevoluteConstraints& group, const SolverPosition* posi
 }
 
 template <bool withBias>
-void solveVelocityGroup(RevoluteConstraints& group, SolverVelocity* velocities) {
-    for (RevoluteConstraint& c : group) {
+void solveVelocityRange(RevoluteConstraints& group, IndexRange range,
+                        SolverVelocity* velocities) {
+    for (int k = range.begin; k < range.end; ++k) {
+        RevoluteConstraint& c = group[k];
         solveRevoluteVelocity(c, velocities, withBias ? c.point.bias : Vec2{});
     }
 }
@@ -34,13 +38,17 @@ void solveVelocityGroup(RevoluteConstraints& group, SolverVelocity* velocities) 
 // PseudoVelocity: the velocity solve again, on velocities that only move positions. The
 // velocity phase's impulses are stored by now, so its accumulators and bias fields are free to
 // hold the pass's own (which start at zero: no warm start).
-void solvePseudoVelocityPass(RevoluteConstraints& group, SolverPosition* positions,
+void solvePseudoVelocityPass(const Team& team, RevoluteConstraints& group,
+                             const std::vector<Batch>& batches, SolverPosition* positions,
                              std::vector<SolverVelocity>& pseudo, int iterations, float h) {
     if (group.empty()) return;
-    std::fill(pseudo.begin(), pseudo.end(), SolverVelocity{});
+    const IndexRange slots = team.share(static_cast<int>(pseudo.size()));
+    std::fill(pseudo.begin() + slots.begin, pseudo.begin() + slots.end, SolverVelocity{});
 
     const float invH = 1.0f / h;
-    for (RevoluteConstraint& c : group) {
+    const IndexRange mine = team.share(static_cast<int>(group.size()));
+    for (int k = mine.begin; k < mine.end; ++k) {
+        RevoluteConstraint& c = group[k];
         Vec2 C = preparePoint(c.bodies, c.point, positions);
         c.point.bias = (c.biasFactor * invH) * C;
         AnglePart& a = c.angle;
@@ -51,26 +59,33 @@ void solvePseudoVelocityPass(RevoluteConstraints& group, SolverPosition* positio
         a.upperTerm = std::max(a.upper - a.angle, 0.0f) * invH;
         prepareLimitBaumgarteBias(a, c.biasFactor, invH);
     }
+    team.sync();
     for (int it = 0; it < iterations; ++it) {
-        for (RevoluteConstraint& c : group) {
-            solveAngleVelocity<false>(c.bodies, c.angle, pseudo.data());
-            solvePointVelocity(c.bodies, c.point, pseudo.data(), c.point.bias);
-        }
+        forEachBatch(team, batches, [&](IndexRange range) {
+            for (int k = range.begin; k < range.end; ++k) {
+                RevoluteConstraint& c = group[k];
+                solveAngleVelocity<false>(c.bodies, c.angle, pseudo.data());
+                solvePointVelocity(c.bodies, c.point, pseudo.data(), c.point.bias);
+            }
+        });
     }
     // Bodies no pseudo-velocity joint touches have zero pseudo velocity: adding it is a no-op.
-    for (std::size_t i = 0; i < pseudo.size(); ++i) {
+    for (int i = slots.begin; i < slots.end; ++i) {
         positions[i].c += h * pseudo[i].v;
         positions[i].a += h * pseudo[i].w;
     }
+    team.sync();
 }
 
-// NGS: one sweep of position-level solves. Returns whether every joint was within slop.
+// NGS: one sweep of position-level solves over a range. Returns whether every joint was within
+// slop.
 template <bool rebuildMass>
-bool solveNgsSweep(const RevoluteConstraints& group, SolverPosition* positions) {
+bool solveNgsRange(const RevoluteConstraints& group, IndexRange range,
+                   SolverPosition* positions) {
     bool withinSlop = true;
-    for (const RevoluteConstraint& c : group) {
+    for (int k = range.begin; k < range.end; ++k) {
         // Evaluated for every joint: each solve moves the bodies, whatever the others report.
-        bool ok = solveRevolutePosition<rebuildMass>(c, positions);
+        bool ok = solveRevolutePosition<rebuildMass>(group[k], positions);
         withinSlop = withinSlop && ok;
     }
     return withinSlop;
@@ -78,26 +93,42 @@ bool solveNgsSweep(const RevoluteConstraints& group, SolverPosition* positions) 
 
 }  // namespace
 
-void prepareVelocityBias(ConstraintGroups& groups, const SolverPosition* positions, float invDt) {
-    prepareBaumgarteBias(groupOf(groups, PositionSolver::Baumgarte), positions, invDt);
+void prepareVelocityBias(const Team& team, ConstraintGroups& groups,
+                         const SolverPosition* positions, float invDt) {
+    RevoluteConstraints& group = groups[kBaumgarte];
+    prepareBaumgarteBias(group, team.share(static_cast<int>(group.size())), positions, invDt);
 }
 
-void solveVelocitySweep(ConstraintGroups& groups, SolverVelocity* velocities) {
-    solveVelocityGroup<true>(groupOf(groups, PositionSolver::Baumgarte), velocities);
-    solveVelocityGroup<false>(groupOf(groups, PositionSolver::PseudoVelocity), velocities);
-    solveVelocityGroup<false>(groupOf(groups, PositionSolver::ModifiedNGS), velocities);
-    solveVelocityGroup<false>(groupOf(groups, PositionSolver::FullNGS), velocities);
+void warmStartJoints(const Team& team, const ConstraintGroups& groups,
+                     const IslandSchedule& schedule, SolverVelocity* velocities) {
+    for (int g = 0; g < kPositionSolverCount; ++g) {
+        forEachBatch(team, schedule.jointBatches[g], [&](IndexRange range) {
+            for (int k = range.begin; k < range.end; ++k) warmStart(groups[g][k], velocities);
+        });
+    }
 }
 
-PositionPhaseResult solvePositionPhase(ConstraintGroups& groups, const ContactSolver& contacts,
-                                       SolverPosition* positions,
-                                       std::vector<SolverVelocity>& pseudo, int iterations,
-                                       float h) {
-    solvePseudoVelocityPass(groupOf(groups, PositionSolver::PseudoVelocity), positions, pseudo,
-                            iterations, h);
+void solveVelocitySweep(const Team& team, ConstraintGroups& groups,
+                        const IslandSchedule& schedule, SolverVelocity* velocities) {
+    forEachBatch(team, schedule.jointBatches[kBaumgarte], [&](IndexRange range) {
+        solveVelocityRange<true>(groups[kBaumgarte], range, velocities);
+    });
+    for (int g : {kPseudoVelocity, kModifiedNgs, kFullNgs}) {
+        forEachBatch(team, schedule.jointBatches[g], [&](IndexRange range) {
+            solveVelocityRange<false>(groups[g], range, velocities);
+        });
+    }
+}
 
-    RevoluteConstraints& modified = groupOf(groups, PositionSolver::ModifiedNGS);
-    RevoluteConstraints& full = groupOf(groups, PositionSolver::FullNGS);
+PositionPhaseResult solvePositionPhase(const Team& team, ConstraintGroups& groups,
+                                       const IslandSchedule& schedule,
+                                       const ContactSolver& contacts, SolverPosition* positions,
+                                       PositionPhaseScratch& scratch, int iterations, float h) {
+    solvePseudoVelocityPass(team, groups[kPseudoVelocity], schedule.jointBatches[kPseudoVelocity],
+                            positions, scratch.pseudo, iterations, h);
+
+    RevoluteConstraints& modified = groups[kModifiedNgs];
+    RevoluteConstraints& full = groups[kFullNgs];
     PositionPhaseResult result;
     if (modified.empty() && full.empty() && !contacts.hasPositionConstraints()) {
         result.solved = true;
@@ -105,16 +136,42 @@ PositionPhaseResult solvePositionPhase(ConstraintGroups& groups, const ContactSo
     }
 
     // ModifiedNGS keeps the effective mass of the pose the position phase starts from.
-    for (RevoluteConstraint& c : modified) preparePoint(c.bodies, c.point, positions);
+    const IndexRange mine = team.share(static_cast<int>(modified.size()));
+    for (int k = mine.begin; k < mine.end; ++k) {
+        RevoluteConstraint& c = modified[k];
+        preparePoint(c.bodies, c.point, positions);
+    }
+    team.sync();
 
     while (result.sweeps < iterations) {
         ++result.sweeps;
         // Contacts first: a joint then has the last word on a body both move, and a joint's
         // error is the one users look at (as in Box2D 2.4.1's position loop).
-        float minSeparation = contacts.solvePositions(positions);
-        bool modifiedOk = solveNgsSweep<false>(modified, positions);
-        bool fullOk = solveNgsSweep<true>(full, positions);
-        if (ContactSolver::withinTolerance(minSeparation) && modifiedOk && fullOk) {
+        SweepTally tally;
+        forEachBatch(team, schedule.contactBatches, [&](IndexRange range) {
+            tally.minSeparation = ContactSolver::minSeparation(
+                tally.minSeparation, contacts.solvePositions(range, positions));
+        });
+        forEachBatch(team, schedule.jointBatches[kModifiedNgs], [&](IndexRange range) {
+            bool ok = solveNgsRange<false>(modified, range, positions);
+            tally.jointsWithinSlop = tally.jointsWithinSlop && ok;
+        });
+        forEachBatch(team, schedule.jointBatches[kFullNgs], [&](IndexRange range) {
+            bool ok = solveNgsRange<true>(full, range, positions);
+            tally.jointsWithinSlop = tally.jointsWithinSlop && ok;
+        });
+        if (team.size() > 1) {
+            std::vector<SweepTally>& round = scratch.tallies[result.sweeps & 1];
+            round[team.member()] = tally;
+            team.sync();
+            tally = SweepTally{};
+            for (const SweepTally& t : round) {
+                tally.minSeparation =
+                    ContactSolver::minSeparation(tally.minSeparation, t.minSeparation);
+                tally.jointsWithinSlop = tally.jointsWithinSlop && t.jointsWithinSlop;
+            }
+        }
+        if (ContactSolver::withinTolerance(tally.minSeparation) && tally.jointsWithinSlop) {
             result.solved = true;
             break;
         }

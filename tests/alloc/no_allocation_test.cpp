@@ -71,3 +71,52 @@ INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene,
                              return std::get<0>(info.param) + "_" +
                                     std::to_string(std::get<1>(info.param)) + "_workers";
                          });
+
+// Big islands are coloured and solved by every worker together (src/solver/team.h): their
+// schedules and arrays are reused too. A 30 x 30 joint grid and a 40-row pyramid, side by side.
+TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
+    for (int workers : {1, 2}) {
+        WorldDef def;
+        def.workerCount = workers;
+        World world(def);
+        ShapeDef ground;
+        ground.density = 0.0f;
+        world.createShape(world.createBody(BodyDef{}), ground,
+                          Polygon::box(50.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+        ShapeDef box;
+        for (int row = 0; row < 40; ++row) {
+            for (int i = 0; i < 40 - row; ++i) {
+                BodyDef body;
+                body.type = BodyType::Dynamic;
+                body.position = {-0.55f * float(39 - row) + 1.1f * float(i), 0.5f + float(row)};
+                world.createShape(world.createBody(body), box, Polygon::box(0.5f, 0.5f));
+            }
+        }
+        ShapeDef circle;
+        circle.filter.categoryBits = 0x0002;
+        circle.filter.maskBits = 0x0001;
+        std::vector<BodyId> grid;
+        for (int row = 0; row < 30; ++row) {
+            for (int col = 0; col < 30; ++col) {
+                BodyDef body;
+                body.type = row == 0 && col % 10 == 0 ? BodyType::Static : BodyType::Dynamic;
+                body.position = {100.0f + float(col), 100.0f - float(row)};
+                BodyId id = world.createBody(body);
+                world.createShape(id, circle, Circle{{0.0f, 0.0f}, 0.4f});
+                grid.push_back(id);
+                if (row > 0) {
+                    world.createJoint(RevoluteJointDef::atWorldAnchor(
+                        grid[(row - 1) * 30 + col], id, body.position + Vec2{0.0f, 0.5f}));
+                }
+                if (col > 0) {
+                    world.createJoint(RevoluteJointDef::atWorldAnchor(
+                        grid[row * 30 + col - 1], id, body.position - Vec2{0.5f, 0.0f}));
+                }
+            }
+        }
+        for (int i = 0; i < 600; ++i) world.step(1.0f / 60.0f);
+        long before = gAllocations.load();
+        for (int i = 0; i < 300; ++i) world.step(1.0f / 60.0f);
+        EXPECT_EQ(gAllocations.load() - before, 0) << workers << " workers";
+    }
+}

@@ -1,0 +1,84 @@
+// Graph colouring of constraints: constraints of one colour share no movable body, so the
+// members of a team can solve them at the same time without locks and still get the result a
+// single thread would (each body is written by one constraint of the colour at most).
+//
+// Greedy first fit in the island's order: each constraint takes the lowest colour neither of
+// its bodies has yet. Bodies that never move (static, kinematic) do not count: the solver
+// gives every constraint its own copy of them (see island_schedule.h). A constraint that finds
+// all kMaxColors taken goes to the overflow batch, solved by one member after the colours.
+// First fit makes the first colours the biggest, which is what splits best.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "solver/team.h"
+
+namespace pivot {
+
+class GraphColoring {
+public:
+    static constexpr int kMaxColors = 32;
+
+    /// Colours items[0..count) (constraint numbers; pairs[item] are its two solver bodies,
+    /// fixed[body] != 0 for bodies that never move). Appends the items to `order`, colour by
+    /// colour and in their original order within a colour, and one batch per non-empty colour
+    /// to `batches`, numbered from `base` (the position in the constraint array of the first
+    /// item appended). Allocates only while its scratch grows.
+    template <typename Pairs>
+    void color(const std::int32_t* items, int count, const Pairs& pairs, const std::uint8_t* fixed,
+               int bodyCount, std::vector<std::int32_t>& order, std::vector<Batch>& batches,
+               std::int32_t base);
+
+private:
+    std::vector<std::uint64_t> masks_;  // per body: colours already used by its constraints
+    std::vector<std::uint8_t> colorOf_;
+};
+
+template <typename Pairs>
+void GraphColoring::color(const std::int32_t* items, int count, const Pairs& pairs,
+                          const std::uint8_t* fixed, int bodyCount,
+                          std::vector<std::int32_t>& order, std::vector<Batch>& batches,
+                          std::int32_t base) {
+    constexpr std::uint64_t kAllColors = (std::uint64_t{1} << kMaxColors) - 1;
+    if (masks_.size() < static_cast<std::size_t>(bodyCount)) masks_.resize(bodyCount, 0);
+    colorOf_.resize(static_cast<std::size_t>(count));
+    std::int32_t sizes[kMaxColors + 1] = {};
+
+    for (int i = 0; i < count; ++i) {
+        const auto& pair = pairs[items[i]];
+        const bool movableA = fixed[pair[0]] == 0;
+        const bool movableB = fixed[pair[1]] == 0;
+        std::uint64_t used = (movableA ? masks_[pair[0]] : 0) | (movableB ? masks_[pair[1]] : 0);
+        std::uint64_t free = ~used & kAllColors;
+        int color = kMaxColors;  // overflow
+        if (free != 0) {
+            color = __builtin_ctzll(free);
+            const std::uint64_t bit = std::uint64_t{1} << color;
+            if (movableA) masks_[pair[0]] |= bit;
+            if (movableB) masks_[pair[1]] |= bit;
+        }
+        colorOf_[i] = static_cast<std::uint8_t>(color);
+        ++sizes[color];
+    }
+
+    // Colour c occupies [next[c], next[c] + sizes[c]) of what is appended.
+    std::int32_t next[kMaxColors + 1];
+    std::int32_t at = 0;
+    for (int c = 0; c <= kMaxColors; ++c) {
+        next[c] = at;
+        if (sizes[c] > 0) batches.push_back({base + at, base + at + sizes[c], c == kMaxColors});
+        at += sizes[c];
+    }
+    const std::size_t first = order.size();
+    order.resize(first + static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) order[first + next[colorOf_[i]]++] = items[i];
+
+    // Leave the masks zeroed for the next call.
+    for (int i = 0; i < count; ++i) {
+        masks_[pairs[items[i]][0]] = 0;
+        masks_[pairs[items[i]][1]] = 0;
+    }
+}
+
+}  // namespace pivot

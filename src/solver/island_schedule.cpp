@@ -1,0 +1,98 @@
+#include "solver/island_schedule.h"
+
+namespace pivot {
+
+void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodies,
+                           const SlotPool<RevoluteJoint>& joints, IslandSchedule& schedule) {
+    schedule.colored = isColored(island);
+    schedule.fixedCopies.clear();
+    if (schedule.colored) {
+        fixed_.resize(static_cast<std::size_t>(island.bodyCount));
+        for (int i = 0; i < island.bodyCount; ++i) {
+            fixed_[i] = bodies[island.bodies[i]].type != BodyType::Dynamic;
+        }
+    }
+    planJoints(island, joints, schedule);
+    planContacts(island, schedule);
+    if (schedule.colored) giveFixedBodiesPrivateSlots(island, schedule);
+}
+
+void IslandScheduler::planJoints(const IslandView& island, const SlotPool<RevoluteJoint>& joints,
+                                 IslandSchedule& schedule) {
+    std::array<std::int32_t, kPositionSolverCount> sizes{};
+    for (int j = 0; j < island.jointCount; ++j) {
+        ++sizes[static_cast<int>(joints[island.joints[j]].solver)];
+    }
+    schedule.groupStart[0] = 0;
+    for (int g = 0; g < kPositionSolverCount; ++g) {
+        schedule.groupStart[g + 1] = schedule.groupStart[g] + sizes[g];
+    }
+
+    // Island positions of the joints, strategy by strategy, then (if coloured) colour by colour.
+    order_.clear();
+    for (int g = 0; g < kPositionSolverCount; ++g) {
+        std::vector<Batch>& batches = schedule.jointBatches[g];
+        batches.clear();
+        if (sizes[g] == 0) continue;
+        items_.clear();
+        for (int j = 0; j < island.jointCount; ++j) {
+            if (static_cast<int>(joints[island.joints[j]].solver) == g) items_.push_back(j);
+        }
+        if (schedule.colored) {
+            coloring_.color(items_.data(), sizes[g], island.jointBodies, fixed_.data(),
+                            island.bodyCount, order_, batches, 0);
+        } else {
+            order_.insert(order_.end(), items_.begin(), items_.end());
+            batches.push_back({0, sizes[g], true});
+        }
+    }
+
+    schedule.jointIds.resize(order_.size());
+    schedule.jointPairs.resize(order_.size());
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+        schedule.jointIds[k] = island.joints[order_[k]];
+        schedule.jointPairs[k] = island.jointBodies[order_[k]];
+    }
+}
+
+void IslandScheduler::planContacts(const IslandView& island, IslandSchedule& schedule) {
+    const int count = island.contactCount;
+    schedule.contactBatches.clear();
+    schedule.contactIds.resize(static_cast<std::size_t>(count));
+    schedule.contactPairs.resize(static_cast<std::size_t>(count));
+    if (!schedule.colored) {
+        for (int k = 0; k < count; ++k) {
+            schedule.contactIds[k] = island.contacts[k];
+            schedule.contactPairs[k] = island.contactBodies[k];
+        }
+        if (count > 0) schedule.contactBatches.push_back({0, count, true});
+        return;
+    }
+    items_.resize(static_cast<std::size_t>(count));
+    for (int k = 0; k < count; ++k) items_[k] = k;
+    order_.clear();
+    coloring_.color(items_.data(), count, island.contactBodies, fixed_.data(), island.bodyCount,
+                    order_, schedule.contactBatches, 0);
+    for (int k = 0; k < count; ++k) {
+        schedule.contactIds[k] = island.contacts[order_[k]];
+        schedule.contactPairs[k] = island.contactBodies[order_[k]];
+    }
+}
+
+void IslandScheduler::giveFixedBodiesPrivateSlots(const IslandView& island,
+                                                  IslandSchedule& schedule) {
+    const auto privatize = [&](std::vector<BodyPair>& pairs) {
+        for (BodyPair& pair : pairs) {
+            for (std::int32_t& index : pair) {
+                if (index < island.bodyCount && fixed_[index]) {
+                    schedule.fixedCopies.push_back(index);
+                    index = island.bodyCount + static_cast<std::int32_t>(schedule.fixedCopies.size()) - 1;
+                }
+            }
+        }
+    };
+    privatize(schedule.jointPairs);
+    privatize(schedule.contactPairs);
+}
+
+}  // namespace pivot

@@ -1,0 +1,76 @@
+// The order in which one island's constraints are solved, and which of them may be solved at
+// the same time.
+//
+// Joints are grouped by position strategy (group g of ConstraintGroups is joints
+// [groupStart[g], groupStart[g+1]) of jointIds), in the island's order within a group. A small
+// island is solved in that order by one thread, one serial batch per array.
+//
+// An island with at least kColoringThreshold constraints is coloured (graph_coloring.h): within
+// each group, and among the contacts, constraints are reordered colour by colour, one batch
+// per colour, so a team can share it out. Every constraint that acts on a body that never
+// moves (static or kinematic) then gets a private copy of that body in an extra solver slot,
+// so no two members ever write one slot (a constraint's write to such a body adds zero, so a
+// copy behaves exactly as the original).
+//
+// Whether an island is coloured depends only on its size, never on the number of workers: a
+// world steps to the same bits with any WorldDef::workerCount. A coloured island is solved in
+// a different order than Box2D 2.4.1 would, so it agrees with Box2D in behaviour, not in bits.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "body.h"
+#include "joints/revolute_joint.h"
+#include "pivot/joint.h"
+#include "slot_pool.h"
+#include "solver/graph_coloring.h"
+#include "solver/island_set.h"
+#include "solver/team.h"
+
+namespace pivot {
+
+/// Islands with at least this many joints and contacts are coloured.
+constexpr int kColoringThreshold = 1024;
+
+inline bool isColored(const IslandView& island) {
+    return island.jointCount + island.contactCount >= kColoringThreshold;
+}
+
+struct IslandSchedule {
+    bool colored = false;
+    std::vector<std::int32_t> jointIds;  // joint pool indices, in solving order
+    std::vector<BodyPair> jointPairs;    // their solver bodies
+    std::array<std::int32_t, kPositionSolverCount + 1> groupStart{};
+    std::array<std::vector<Batch>, kPositionSolverCount> jointBatches;  // within each group
+    std::vector<std::int32_t> contactIds;  // contact pool indices, in solving order
+    std::vector<BodyPair> contactPairs;
+    std::vector<Batch> contactBatches;
+    /// Extra solver slots after the island's bodies: the island body each one copies.
+    std::vector<std::int32_t> fixedCopies;
+
+    int slotCount(const IslandView& island) const {
+        return island.bodyCount + static_cast<int>(fixedCopies.size());
+    }
+};
+
+class IslandScheduler {
+public:
+    /// Plans `island` into `schedule`. Allocates only while its buffers grow.
+    void plan(const IslandView& island, const SlotPool<Body>& bodies,
+              const SlotPool<RevoluteJoint>& joints, IslandSchedule& schedule);
+
+private:
+    void planJoints(const IslandView& island, const SlotPool<RevoluteJoint>& joints,
+                    IslandSchedule& schedule);
+    void planContacts(const IslandView& island, IslandSchedule& schedule);
+    void giveFixedBodiesPrivateSlots(const IslandView& island, IslandSchedule& schedule);
+
+    GraphColoring coloring_;
+    std::vector<std::uint8_t> fixed_;  // per island body: never moves
+    std::vector<std::int32_t> items_;
+    std::vector<std::int32_t> order_;
+};
+
+}  // namespace pivot

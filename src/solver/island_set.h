@@ -1,0 +1,75 @@
+// The islands of one step: sets of awake bodies connected by joints and touching contacts,
+// each independent of every other for this step. Built by IslandBuilder.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pivot {
+
+/// The solver indices of a constraint's two bodies within its island.
+using BodyPair = std::array<std::int32_t, 2>;
+
+/// One island's slice of an IslandSet.
+struct IslandView {
+    const std::int32_t* bodies;
+    int bodyCount;
+    const std::int32_t* contacts;
+    const BodyPair* contactBodies;
+    int contactCount;
+    const std::int32_t* joints;
+    const BodyPair* jointBodies;
+    int jointCount;
+    const std::int32_t* mouseJoints;
+    const std::int32_t* mouseBodies;
+    int mouseCount;
+};
+
+/// Every island of a step, island after island in flat arrays. The solver indices are recorded
+/// here rather than in the bodies, because a static body belongs to every island that touches
+/// it, with a different index in each.
+struct IslandSet {
+    struct Range {
+        std::int32_t bodyBegin, bodyEnd;
+        std::int32_t contactBegin, contactEnd;
+        std::int32_t jointBegin, jointEnd;
+        std::int32_t mouseBegin, mouseEnd;
+    };
+    std::vector<std::int32_t> bodies;    // body pool indices; solver index = position - bodyBegin
+    std::vector<std::int32_t> contacts;  // touching contacts, in the order they were reached
+    std::vector<BodyPair> contactBodies;
+    std::vector<std::int32_t> joints;  // revolute joints, in the order they were reached
+    std::vector<BodyPair> jointBodies;
+    std::vector<std::int32_t> mouseJoints;
+    std::vector<std::int32_t> mouseBodies;  // solver index of each mouse joint's body
+    std::vector<Range> ranges;
+
+    void clear() {
+        bodies.clear();
+        contacts.clear();
+        contactBodies.clear();
+        joints.clear();
+        jointBodies.clear();
+        mouseJoints.clear();
+        mouseBodies.clear();
+        ranges.clear();
+    }
+
+    IslandView view(int index) const {
+        const Range& r = ranges[index];
+        return {bodies.data() + r.bodyBegin,
+                r.bodyEnd - r.bodyBegin,
+                contacts.data() + r.contactBegin,
+                contactBodies.data() + r.contactBegin,
+                r.contactEnd - r.contactBegin,
+                joints.data() + r.jointBegin,
+                jointBodies.data() + r.jointBegin,
+                r.jointEnd - r.jointBegin,
+                mouseJoints.data() + r.mouseBegin,
+                mouseBodies.data() + r.mouseBegin,
+                r.mouseEnd - r.mouseBegin};
+    }
+};
+
+}  // namespace pivot

@@ -1,0 +1,232 @@
+// Big islands: graph colouring and the team of workers that solves one island together
+// (src/solver/graph_coloring.h, island_schedule.h, team.h).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "pivot/pivot.h"
+#include "solver/graph_coloring.h"
+#include "solver/island_schedule.h"
+
+using namespace pivot;
+
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+
+struct Coloring {
+    std::vector<std::int32_t> order;
+    std::vector<Batch> batches;
+};
+
+Coloring colorAll(const std::vector<BodyPair>& pairs, const std::vector<std::uint8_t>& fixed) {
+    std::vector<std::int32_t> items(pairs.size());
+    for (std::size_t i = 0; i < items.size(); ++i) items[i] = static_cast<std::int32_t>(i);
+    GraphColoring coloring;
+    Coloring result;
+    coloring.color(items.data(), static_cast<int>(items.size()), pairs.data(), fixed.data(),
+                   static_cast<int>(fixed.size()), result.order, result.batches, 0);
+    return result;
+}
+
+TEST(GraphColoring, NoColourTouchesAMovableBodyTwiceAndEveryConstraintAppearsOnce) {
+    std::mt19937 random(7);
+    const int bodies = 300;
+    std::vector<std::uint8_t> fixed(bodies, 0);
+    for (int i = 0; i < bodies; i += 17) fixed[i] = 1;
+    std::uniform_int_distribution<int> pick(0, bodies - 1);
+    std::vector<BodyPair> pairs;
+    while (pairs.size() < 2000) {
+        int a = pick(random), b = pick(random);
+        if (a != b) pairs.push_back({a, b});
+    }
+    Coloring c = colorAll(pairs, fixed);
+
+    std::vector<std::int32_t> sorted = c.order;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], std::int32_t(i));
+    ASSERT_FALSE(c.batches.empty());
+    EXPECT_EQ(c.batches.front().begin, 0);
+    EXPECT_EQ(c.batches.back().end, 2000);
+    for (std::size_t k = 0; k < c.batches.size(); ++k) {
+        const Batch& batch = c.batches[k];
+        if (k > 0) {
+            EXPECT_EQ(batch.begin, c.batches[k - 1].end);
+        }
+        if (batch.serial) continue;
+        std::set<std::int32_t> seen;
+        for (std::int32_t at = batch.begin; at < batch.end; ++at) {
+            const BodyPair& p = pairs[c.order[at]];
+            for (std::int32_t body : p) {
+                if (!fixed[body]) {
+                    EXPECT_TRUE(seen.insert(body).second) << "colour " << k;
+                }
+            }
+            // Within a colour, constraints keep the island's order.
+            if (at > batch.begin) {
+                EXPECT_LT(c.order[at - 1], c.order[at]);
+            }
+        }
+    }
+}
+
+TEST(GraphColoring, ABodyWithMoreConstraintsThanColoursSpillsIntoASerialBatch) {
+    const int spokes = GraphColoring::kMaxColors + 8;
+    std::vector<std::uint8_t> fixed(spokes + 1, 0);
+    std::vector<BodyPair> pairs;
+    for (int i = 1; i <= spokes; ++i) pairs.push_back({0, i});
+    Coloring c = colorAll(pairs, fixed);
+    ASSERT_EQ(c.batches.size(), std::size_t(GraphColoring::kMaxColors + 1));
+    EXPECT_TRUE(c.batches.back().serial);
+    EXPECT_EQ(c.batches.back().end - c.batches.back().begin, 8);
+    for (int k = 0; k < GraphColoring::kMaxColors; ++k) EXPECT_FALSE(c.batches[k].serial);
+}
+
+TEST(GraphColoring, BodiesThatNeverMoveDoNotSeparateConstraints) {
+    // A static ground under 50 boxes: one colour, since only the ground is shared.
+    std::vector<std::uint8_t> fixed(51, 0);
+    fixed[0] = 1;
+    std::vector<BodyPair> pairs;
+    for (int i = 1; i <= 50; ++i) pairs.push_back({0, i});
+    Coloring c = colorAll(pairs, fixed);
+    ASSERT_EQ(c.batches.size(), 1u);
+    EXPECT_FALSE(c.batches[0].serial);
+}
+
+// A grid of circles jointed to their neighbours above and to the left, hanging from its top
+// row's middle; circles do not collide (as in the joint_grid benchmark). Strategies cycle so
+// every group of a coloured island has joints.
+struct JointGrid {
+    World world;
+    std::vector<JointId> joints;
+};
+
+void buildGrid(JointGrid& grid, int n, bool mixedSolvers) {
+    World& world = grid.world;
+    std::vector<BodyId> bodies;
+    ShapeDef shape;
+    shape.filter.categoryBits = 0x0002;
+    shape.filter.maskBits = 0x0001;
+    const PositionSolver solvers[] = {PositionSolver::FullNGS, PositionSolver::Baumgarte,
+                                      PositionSolver::PseudoVelocity, PositionSolver::ModifiedNGS};
+    for (int row = 0; row < n; ++row) {
+        for (int col = 0; col < n; ++col) {
+            BodyDef def;
+            def.type = row == 0 && std::abs(col - n / 2) <= 1 ? BodyType::Static
+                                                                : BodyType::Dynamic;
+            def.position = {float(col), -float(row)};
+            BodyId body = world.createBody(def);
+            world.createShape(body, shape, Circle{{0.0f, 0.0f}, 0.4f});
+            bodies.push_back(body);
+            const auto link = [&](BodyId other, Vec2 anchor) {
+                RevoluteJointDef joint = RevoluteJointDef::atWorldAnchor(other, body, anchor);
+                if (mixedSolvers) joint.positionSolver = solvers[grid.joints.size() % 4];
+                grid.joints.push_back(world.createJoint(joint));
+            };
+            if (row > 0) link(bodies[(row - 1) * n + col], {float(col), 0.5f - float(row)});
+            if (col > 0) link(bodies[row * n + col - 1], {float(col) - 0.5f, -float(row)});
+        }
+    }
+}
+
+// Boxes on the plane y = 0 (a static ground unless the caller provides its own floor).
+void buildPyramid(World& world, int rows, bool withGround = true) {
+    if (withGround) {
+        BodyId ground = world.createBody(BodyDef{});
+        ShapeDef groundShape;
+        groundShape.density = 0.0f;
+        world.createShape(ground, groundShape,
+                          Polygon::box(rows + 10.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    }
+    ShapeDef box;
+    box.friction = 0.6f;
+    for (int row = 0; row < rows; ++row) {
+        const int count = rows - row;
+        for (int i = 0; i < count; ++i) {
+            BodyDef def;
+            def.type = BodyType::Dynamic;
+            def.position = {-0.55f * float(count - 1) + 1.1f * float(i), 0.5f + 1.0f * row};
+            world.createShape(world.createBody(def), box, Polygon::box(0.5f, 0.5f));
+        }
+    }
+}
+
+std::uint64_t gridHash(int workers, bool mixed, int steps) {
+    WorldDef def;
+    def.workerCount = workers;
+    def.enableSleep = false;
+    JointGrid grid{World(def), {}};
+    buildGrid(grid, 30, mixed);
+    for (int i = 0; i < steps; ++i) grid.world.step(kDt);
+    return grid.world.stateHash();
+}
+
+std::uint64_t pyramidHash(int workers, ContactCorrection correction, int steps) {
+    WorldDef def;
+    def.workerCount = workers;
+    def.contactCorrection = correction;
+    World world(def);
+    buildPyramid(world, 40);  // 820 boxes, about 2,400 contacts: one coloured island
+    for (int i = 0; i < steps; ++i) world.step(kDt);
+    return world.stateHash();
+}
+
+}  // namespace
+
+TEST(TeamSolver, BigIslandsAreColoured) {
+    // The scenes below must really exercise the coloured path.
+    JointGrid grid{World(WorldDef{}), {}};
+    buildGrid(grid, 30, false);
+    EXPECT_GE(int(grid.joints.size()), kColoringThreshold);
+    grid.world.step(kDt);
+    EXPECT_EQ(grid.world.lastStepStats().islandCount, 1);
+}
+
+TEST(TeamSolver, AJointGridStepsToTheSameBitsOnAnyNumberOfWorkers) {
+    for (bool mixed : {false, true}) {
+        const std::uint64_t one = gridHash(1, mixed, 120);
+        EXPECT_EQ(gridHash(2, mixed, 120), one) << "mixed " << mixed;
+        EXPECT_EQ(gridHash(3, mixed, 120), one) << "mixed " << mixed;
+    }
+}
+
+TEST(TeamSolver, APyramidStepsToTheSameBitsOnAnyNumberOfWorkers) {
+    for (ContactCorrection correction : {ContactCorrection::NGS, ContactCorrection::Baumgarte}) {
+        const std::uint64_t one = pyramidHash(1, correction, 120);
+        EXPECT_EQ(pyramidHash(2, correction, 120), one);
+        EXPECT_EQ(pyramidHash(4, correction, 120), one);
+    }
+}
+
+TEST(TeamSolver, AKinematicCarrierUnderABigPileMovesExactlyAsAlone) {
+    // Every contact with the carrier gets its own copy of it; the copies must all agree with
+    // the body itself, which moves at its set velocity whatever rests on it.
+    const auto carrier = [](World& world) {
+        BodyDef def;
+        def.type = BodyType::Kinematic;
+        def.position = {0.0f, -0.5f};
+        def.linearVelocity = {0.5f, 0.0f};
+        BodyId body = world.createBody(def);
+        world.createShape(body, ShapeDef{}, Polygon::box(40.0f, 0.5f));
+        return body;
+    };
+    WorldDef def;
+    def.workerCount = 2;
+    World loaded(def);
+    BodyId carried = carrier(loaded);
+    buildPyramid(loaded, 40, false);
+    World alone(def);
+    BodyId lone = carrier(alone);
+    for (int i = 0; i < 60; ++i) {
+        loaded.step(kDt);
+        alone.step(kDt);
+    }
+    EXPECT_GE(loaded.lastStepStats().touchingCount, kColoringThreshold);
+    EXPECT_EQ(loaded.bodyPosition(carried).x, alone.bodyPosition(lone).x);
+    EXPECT_EQ(loaded.bodyPosition(carried).y, alone.bodyPosition(lone).y);
+    EXPECT_EQ(loaded.bodyLinearVelocity(carried).x, 0.5f);
+}
