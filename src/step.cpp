@@ -74,6 +74,8 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
         stats.jointCount += r.jointEnd - r.jointBegin;
         stats.translationClamps += report.translationClamps;
         stats.rotationClamps += report.rotationClamps;
+        stats.blownUpJointCount += report.blownUpJoints;
+        stats.discardedBodyCount += report.discardedBodies;
         if (report.positionIterations > stats.positionIterations) {
             stats.positionIterations = report.positionIterations;
         }

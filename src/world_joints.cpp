@@ -98,6 +98,9 @@ float World::jointSeparation(JointId id) const {
     Vec2 pB = transformPoint(impl_->bodies[j.bodyB()].xf, j.localAnchorB);
     return distance(pA, pB);
 }
+bool World::jointBlownUp(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointBlownUp", id)].blownUp;
+}
 Vec2 World::jointReactionForce(JointId id) const {
     const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointReactionForce", id)];
     return j.impulseInvDt * j.impulse;

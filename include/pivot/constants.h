@@ -33,6 +33,13 @@ constexpr float kMaxRotation = 0.5f * kPi;
 /// is resolved over several steps instead of launching bodies apart.
 constexpr float kMaxLinearCorrection = 0.2f;
 
+/// Metres. A joint whose two anchors are further apart than this at the start of a step, or
+/// whose state has become non-finite, has blown up: the solver stops solving it (so it cannot
+/// pump energy into, or spread NaN through, everything it touches) and World::jointBlownUp
+/// reports it. Far beyond anything a working joint reaches: the seed note's fast pendulum comes
+/// apart by 3 m under Modified NGS and still recovers.
+constexpr float kJointBlowUpSeparation = 10.0f;
+
 /// Metres. Every polygon collides as if rounded by this skin (twice the linear slop), so that
 /// resting polygons keep a small gap and contacts exist before the shapes' cores touch. It does
 /// not change mass properties.

@@ -85,6 +85,10 @@ struct StepStats {
     int contactCount = 0;       ///< contacts in the world (broad-phase boxes overlapping)
     int touchingCount = 0;      ///< of which touching (manifold with points)
     int sleepingBodyCount = 0;  ///< dynamic and kinematic bodies asleep after the step
+    /// Joints found blown up this step (see kJointBlowUpSeparation and World::jointBlownUp).
+    int blownUpJointCount = 0;
+    /// Bodies whose solved state this step was not finite: each kept its pose, at rest.
+    int discardedBodyCount = 0;
 };
 
 class World {
@@ -195,6 +199,12 @@ public:
     Vec2 jointAnchorB(JointId id) const;  ///< m, the pin on body B in world coordinates
     /// m, |anchorB - anchorA|: how far the joint has come apart.
     float jointSeparation(JointId id) const;
+    /// Whether the joint has blown up: its anchors were more than kJointBlowUpSeparation apart
+    /// at the start of a step, or its impulses stopped being finite. A blown-up joint is no
+    /// longer solved (its bodies move as if it were not there), so it cannot drag NaN or
+    /// energy into everything it touches; StepStats::blownUpJointCount counts the step it
+    /// happened in. It stays blown up: destroy it, and create a new one if you want the pin.
+    bool jointBlownUp(JointId id) const;
     /// rad, angleB - angleA - referenceAngle.
     float jointAngle(JointId id) const;
     /// rad/s, angular velocity of B relative to A.

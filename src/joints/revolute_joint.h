@@ -19,6 +19,7 @@ struct RevoluteJoint {
     bool hasBiasOverride = false;
     float biasOverride = 0.0f;
     bool collideConnected = false;
+    bool blownUp = false;  // see kJointBlowUpSeparation; no longer solved
     std::uint64_t userData = 0;
     bool enableLimit = false;
     float lowerAngle = 0.0f;  // rad

@@ -1,6 +1,7 @@
 #include "solver/contact_solver.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "pivot/constants.h"
 
@@ -296,8 +297,12 @@ void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool) con
         const ContactVelocityConstraint& c = velocity_[k];
         Manifold& m = pool[c.contactIndex].manifold;
         for (int j = 0; j < c.pointCount; ++j) {
-            m.points[j].normalImpulse = c.points[j].normalImpulse;
-            m.points[j].tangentImpulse = c.points[j].tangentImpulse;
+            // A non-finite impulse is not carried into the next step's warm start.
+            const float normal = c.points[j].normalImpulse;
+            const float tangent = c.points[j].tangentImpulse;
+            const bool finite = std::isfinite(normal) && std::isfinite(tangent);
+            m.points[j].normalImpulse = finite ? normal : 0.0f;
+            m.points[j].tangentImpulse = finite ? tangent : 0.0f;
         }
     }
 }

@@ -42,10 +42,25 @@ void integrateVelocities(const Team& team, const IslandView& island, IslandWorks
     }
 }
 
+// A joint that has come apart beyond kJointBlowUpSeparation (or whose stored state is not
+// finite) is marked blown up and, for this step, acts on nothing: its bodies' masses are taken
+// as zero, so every solve applies a zero impulse. From the next step on it is not in an island.
+bool blewUp(const RevoluteJoint& joint, Vec2 separation) {
+    const float limit = kJointBlowUpSeparation * kJointBlowUpSeparation;
+    return !(lengthSquared(separation) <= limit) || !isFinite(joint.impulse) ||
+           !std::isfinite(joint.motorImpulse + joint.lowerImpulse + joint.upperImpulse);
+}
+
+void makeInert(RevoluteConstraint& c) {
+    c = RevoluteConstraint{c.bodies, PointPart{}, AnglePart{}, 0.0f, c.jointIndex};
+    c.bodies.mA = c.bodies.mB = c.bodies.iA = c.bodies.iB = 0.0f;
+}
+
 // Build each joint's solver constraint in its strategy's group (no velocity is touched: the
 // warm start comes after, in warmStartJoints).
 void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
-                   const SlotPool<RevoluteJoint>& joints, const StepContext& step) {
+                   SlotPool<RevoluteJoint>& joints, const StepContext& step,
+                   IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
     for (int g = 0; g < kPositionSolverCount; ++g) {
         RevoluteConstraints& group = work.groups[g];
@@ -53,7 +68,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
         for (int k = mine.begin; k < mine.end; ++k) {
             const std::size_t at = static_cast<std::size_t>(schedule.groupStart[g] + k);
             const std::int32_t jointIndex = schedule.jointIds[at];
-            const RevoluteJoint& joint = joints[jointIndex];
+            RevoluteJoint& joint = joints[jointIndex];
             const Body& a = bodies[joint.bodyA()];
             const Body& b = bodies[joint.bodyB()];
             RevoluteConstraint c;
@@ -78,9 +93,15 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
             angle.motorImpulse = joint.motorImpulse;
             angle.lowerImpulse = joint.lowerImpulse;
             angle.upperImpulse = joint.upperImpulse;
-            preparePoint(c.bodies, c.point, work.positions.data());
+            const Vec2 separation = preparePoint(c.bodies, c.point, work.positions.data());
             prepareAngle(c.bodies, angle, work.positions.data(), step.invDt);
-            if (step.warmStarting) {
+            if (blewUp(joint, separation)) {
+                joint.blownUp = true;
+                joint.impulse = Vec2{};
+                joint.motorImpulse = joint.lowerImpulse = joint.upperImpulse = 0.0f;
+                ++report.blownUpJoints;
+                makeInert(c);
+            } else if (step.warmStarting) {
                 // Impulses scale with the step: keep the force they stand for when dt changes.
                 c.point.impulse = step.dtRatio * joint.impulse;
                 angle.motorImpulse *= step.dtRatio;
@@ -97,8 +118,9 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
     prepareVelocityBias(team, work.groups, work.positions.data(), step.invDt);
 }
 
+// A joint whose impulses went non-finite during the step blew up in it: it keeps nothing.
 void storeJointImpulses(const Team& team, const IslandWorkspace& work,
-                        SlotPool<RevoluteJoint>& joints, float invDt) {
+                        SlotPool<RevoluteJoint>& joints, float invDt, IslandReport& report) {
     for (const RevoluteConstraints& group : work.groups) {
         const IndexRange mine = team.share(static_cast<int>(group.size()));
         for (int k = mine.begin; k < mine.end; ++k) {
@@ -109,6 +131,12 @@ void storeJointImpulses(const Team& team, const IslandWorkspace& work,
             joint.lowerImpulse = c.angle.lowerImpulse;
             joint.upperImpulse = c.angle.upperImpulse;
             joint.impulseInvDt = invDt;
+            if (!joint.blownUp && blewUp(joint, Vec2{})) {
+                joint.blownUp = true;
+                joint.impulse = Vec2{};
+                joint.motorImpulse = joint.lowerImpulse = joint.upperImpulse = 0.0f;
+                ++report.blownUpJoints;
+            }
         }
     }
 }
@@ -186,12 +214,22 @@ bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepCon
     return true;
 }
 
+// A body whose solved state is not finite keeps the pose it started the step with, at rest:
+// NaN never reaches the bodies, the broad phase or the next step.
 void writeBack(const Team& team, const IslandView& island, const IslandWorkspace& work,
-               SlotPool<Body>& bodies) {
+               SlotPool<Body>& bodies, IslandReport& report) {
     const IndexRange mine = team.share(island.bodyCount);
     for (int i = mine.begin; i < mine.end; ++i) {
         Body& b = bodies[island.bodies[i]];
         if (b.type == BodyType::Static) continue;
+        const SolverPosition& p = work.positions[i];
+        const SolverVelocity& v = work.velocities[i];
+        if (!isFinite(p.c) || !std::isfinite(p.a) || !isFinite(v.v) || !std::isfinite(v.w)) {
+            b.linearVelocity = Vec2{};
+            b.angularVelocity = 0.0f;
+            ++report.discardedBodies;
+            continue;
+        }
         b.center = work.positions[i].c;
         b.angle = work.positions[i].a;
         b.linearVelocity = work.velocities[i].v;
@@ -236,7 +274,7 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
     work.contactSolver.prepare(team.share(island.contactCount), schedule.contactIds.data(),
                                schedule.contactPairs.data(), storage.contacts, bodies,
                                storage.shapes, step, work.positions.data());
-    prepareJoints(team, work, bodies, storage.joints, step);
+    prepareJoints(team, work, bodies, storage.joints, step, mine);
     team.sync();
 
     // Warm start: contacts, then joints, then mouse joints; each velocity sweep then solves
@@ -265,11 +303,11 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
         });
     }
 
-    storeJointImpulses(team, work, storage.joints, step.invDt);
+    storeJointImpulses(team, work, storage.joints, step.invDt, mine);
     work.contactSolver.storeImpulses(team.share(island.contactCount), storage.contacts);
     if (team.leader()) {
         for (const MouseConstraint& c : work.mouseConstraints) {
-            storage.mouseJoints[c.jointIndex].impulse = c.impulse;
+            storage.mouseJoints[c.jointIndex].impulse = isFinite(c.impulse) ? c.impulse : Vec2{};
         }
     }
     integratePositions(team, work, step, mine);
@@ -279,7 +317,7 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
         solvePositionPhase(team, work.groups, schedule, work.contactSolver,
                            work.positions.data(), work.positionScratch, step.positionIterations,
                            step.dt);
-    writeBack(team, island, work, bodies);
+    writeBack(team, island, work, bodies, mine);
     team.sync();
     if (!team.leader()) return IslandReport{};
 
@@ -287,6 +325,8 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
     for (const IslandReport& member : work.memberReports) {
         report.translationClamps += member.translationClamps;
         report.rotationClamps += member.rotationClamps;
+        report.blownUpJoints += member.blownUpJoints;
+        report.discardedBodies += member.discardedBodies;
     }
     report.positionIterations = phase.sweeps;
     report.fellAsleep = updateSleep(island, bodies, step, phase.solved);

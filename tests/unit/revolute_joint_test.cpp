@@ -2,6 +2,8 @@
 // reaction force.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -125,4 +127,46 @@ TEST(RevoluteJoint, DestroyingAJointFreesTheBody) {
     EXPECT_FALSE(rig.world.isValid(rig.joint));
     for (int i = 0; i < 30; ++i) rig.world.step(kDt);
     EXPECT_LT(rig.world.bodyPosition(rig.box).y, 3.0f);  // falls
+}
+
+TEST(RevoluteJoint, AJointTornFurtherThanTheBlowUpSeparationIsReportedAndLetGo) {
+    // A chain of three boxes; the last one is moved 50 m away. Its joint is reported blown up at
+    // the next step and no longer pulls (the box falls freely instead of being yanked back
+    // across 50 m); the rest of the chain is untouched by it.
+    for (PositionSolver solver : {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
+                                  PositionSolver::ModifiedNGS, PositionSolver::FullNGS}) {
+        World world;
+        BodyId ground = world.createBody(BodyDef{});
+        std::vector<BodyId> boxes;
+        std::vector<JointId> joints;
+        BodyId previous = ground;
+        for (int i = 0; i < 3; ++i) {
+            BodyDef bd;
+            bd.type = BodyType::Dynamic;
+            bd.position = {float(i) + 0.5f, 10.0f};
+            BodyId box = world.createBody(bd);
+            world.createShape(box, ShapeDef{}, Polygon::box(0.5f, 0.1f));
+            RevoluteJointDef def = RevoluteJointDef::atWorldAnchor(previous, box, {float(i), 10.0f});
+            def.positionSolver = solver;
+            joints.push_back(world.createJoint(def));
+            boxes.push_back(box);
+            previous = box;
+        }
+        world.step(kDt);
+        EXPECT_EQ(world.lastStepStats().blownUpJointCount, 0);
+        world.setBodyTransform(boxes[2], {52.5f, 10.0f}, 0.0f);
+        world.setBodyLinearVelocity(boxes[2], {0.0f, 0.0f});
+        world.step(kDt);
+        EXPECT_EQ(world.lastStepStats().blownUpJointCount, 1) << positionSolverName(solver);
+        EXPECT_TRUE(world.jointBlownUp(joints[2]));
+        EXPECT_FALSE(world.jointBlownUp(joints[0]));
+        EXPECT_FALSE(world.jointBlownUp(joints[1]));
+        for (int i = 0; i < 59; ++i) world.step(kDt);
+        EXPECT_EQ(world.lastStepStats().blownUpJointCount, 0);
+        // Free fall for the 60 steps since the teleport: no joint pulled it sideways.
+        EXPECT_NEAR(world.bodyPosition(boxes[2]).x, 52.5f, 1e-4f);
+        EXPECT_LT(world.bodyPosition(boxes[2]).y, 10.0f - 4.0f);
+        EXPECT_LT(world.jointSeparation(joints[1]), 0.05f);
+        EXPECT_TRUE(world.jointBlownUp(joints[2]));
+    }
 }
