@@ -2,7 +2,24 @@
 
 #include <algorithm>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace pivot {
+
+namespace {
+
+// Tells the core this is a spin-wait (lets a sibling hyperthread run, saves power).
+inline void relaxCpu() {
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_pause();
+#elif defined(__aarch64__)
+    asm volatile("yield");
+#endif
+}
+
+}  // namespace
 
 TaskPool::TaskPool(int workers) {
     for (int i = 1; i < workers; ++i) threads_.emplace_back([this, i] { workerLoop(i); });
@@ -35,10 +52,23 @@ void TaskPool::barrier() {
     const std::uint64_t round = round_.load(std::memory_order_acquire);
     if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == workers) {
         arrived_.store(0, std::memory_order_relaxed);
-        round_.fetch_add(1, std::memory_order_acq_rel);
+        {
+            // Under the lock, so a member between its last check and its wait cannot miss it.
+            std::lock_guard<std::mutex> lock(barrierMutex_);
+            round_.fetch_add(1, std::memory_order_acq_rel);
+        }
+        barrierWake_.notify_all();
         return;
     }
-    while (round_.load(std::memory_order_acquire) == round) std::this_thread::yield();
+    // The others are usually a few microseconds behind: spin that long. If they are not (the
+    // machine has more busy threads than cores, and one of ours is waiting for a core), sleep
+    // and give the core away rather than burn the time slice it needs.
+    for (int spin = 0; spin < kBarrierSpins; ++spin) {
+        if (round_.load(std::memory_order_acquire) != round) return;
+        relaxCpu();
+    }
+    std::unique_lock<std::mutex> lock(barrierMutex_);
+    barrierWake_.wait(lock, [&] { return round_.load(std::memory_order_acquire) != round; });
 }
 
 void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline) {

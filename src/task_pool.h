@@ -51,8 +51,8 @@ public:
             [](void* context, int, int, int worker) { (*static_cast<Body*>(context))(worker); });
     }
 
-    /// Inside region(): waits until every worker has arrived. It spins (yielding) rather than
-    /// sleeps: the work between two barriers is a few microseconds, less than a wake-up costs.
+    /// Inside region(): waits until every worker has arrived. It spins a little first (the work
+    /// between two barriers is a few microseconds, less than a wake-up costs), then sleeps.
     void barrier();
 
 private:
@@ -76,9 +76,13 @@ private:
     int count_ = 0;
     int chunk_ = 1;
     std::atomic<int> next_{0};
-    // The region barrier: arrivals in this round, and the round number.
+    // The region barrier: arrivals in this round, the round number, and where members sleep
+    // once they have spun kBarrierSpins times.
+    static constexpr int kBarrierSpins = 2000;
     std::atomic<int> arrived_{0};
     std::atomic<std::uint64_t> round_{0};
+    std::mutex barrierMutex_;
+    std::condition_variable barrierWake_;
 };
 
 }  // namespace pivot
