@@ -261,7 +261,8 @@ BenchScene pyramidScene(const std::string& name, const std::string& description,
 BenchScene chainScene(const std::string& name, int steps, int count) {
     BenchScene scene;
     scene.name = name;
-    scene.description = std::to_string(count) + " chains of 30 links, released horizontally";
+    scene.description = std::to_string(count) + (count == 1 ? " chain" : " chains") +
+                        " of 30 links, released horizontally";
     scene.steps = steps;
     scene.buildPivot = [=](PositionSolver solver, int workers) {
         return stepperOf(pivotChains(solver, workers, count));

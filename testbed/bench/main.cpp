@@ -194,9 +194,14 @@ int main(int argc, char** argv) {
             options.workers = std::max(1, std::min(64, std::atoi(argv[++i])));
         } else if (arg == "--scene" && i + 1 < argc) {
             options.only = argv[++i];
+        } else if (arg == "--list") {
+            for (const bench::BenchScene& scene : bench::benchScenes()) {
+                std::printf("%-15s %s\n", scene.name.c_str(), scene.description.c_str());
+            }
+            return 0;
         } else {
             std::cerr << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] "
-                         "[--scene NAME]\n"
+                         "[--scene NAME] [--list]\n"
                          "  Times each scene in pivot2d (FullNGS and Baumgarte joints) and in\n"
                          "  Box2D 2.4.1, sleeping and continuous collision off, 1/60 s steps\n"
                          "  with 8 velocity and 3 position iterations, and prints the median\n"
@@ -204,8 +209,18 @@ int main(int argc, char** argv) {
                          "  --workers threads (default: the machine's hardware threads) and, for\n"
                          "  comparison, on one thread; Box2D 2.4.1 is single-threaded.\n"
                          "  --quick    a smoke run: a twentieth of the steps, one repeat\n"
-                         "  --csv      print scene,solver,pivot_ms,box2d_ms,speedup lines only\n";
+                         "  --csv      print scene,solver,pivot_ms,box2d_ms,speedup lines only\n"
+                         "  --list     name and describe the scenes\n";
             return arg == "--help" ? 0 : 2;
+        }
+    }
+
+    if (!options.only.empty()) {
+        bool known = false;
+        for (const bench::BenchScene& scene : bench::benchScenes()) known |= scene.name == options.only;
+        if (!known) {
+            std::cerr << "pivot-bench: no scene named '" << options.only << "' (see --list)\n";
+            return 2;
         }
     }
 
