@@ -214,8 +214,8 @@ bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepCon
     return true;
 }
 
-// A body whose solved state is not finite keeps the pose it started the step with, at rest:
-// NaN never reaches the bodies, the broad phase or the next step.
+// A body whose solved state is not finite keeps the pose it started the step with (a dynamic
+// one at rest): NaN never reaches the bodies, the broad phase or the next step.
 void writeBack(const Team& team, const IslandView& island, const IslandWorkspace& work,
                SlotPool<Body>& bodies, IslandReport& report) {
     const IndexRange mine = team.share(island.bodyCount);
@@ -225,8 +225,11 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
         const SolverPosition& p = work.positions[i];
         const SolverVelocity& v = work.velocities[i];
         if (!isFinite(p.c) || !std::isfinite(p.a) || !isFinite(v.v) || !std::isfinite(v.w)) {
-            b.linearVelocity = Vec2{};
-            b.angularVelocity = 0.0f;
+            // A kinematic body keeps the velocity its owner set; a dynamic one stops.
+            if (b.type == BodyType::Dynamic) {
+                b.linearVelocity = Vec2{};
+                b.angularVelocity = 0.0f;
+            }
             ++report.discardedBodies;
             continue;
         }
