@@ -10,7 +10,13 @@ void updateBodyMass(Body& body, const SlotPool<Shape>& shapes) {
     body.localCenter = Vec2{};
 
     if (body.type != BodyType::Dynamic) {
+        // Without mass the centre is the origin. When it moves there (a dynamic body made
+        // kinematic), the velocity follows the origin, so the body's motion does not jump.
+        Vec2 oldCenter = body.center;
         body.center = body.xf.p;
+        if (body.center != oldCenter) {
+            body.linearVelocity += cross(body.angularVelocity, body.center - oldCenter);
+        }
         return;
     }
 
