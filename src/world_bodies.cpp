@@ -98,11 +98,12 @@ void World::setBodyType(BodyId id, BodyType type) {
     body.type = type;
     body.force = Vec2{};
     body.torque = 0.0f;
+    updateBodyMass(body, w.shapes);
     if (type == BodyType::Static) {
+        // After the mass update, which moves the velocity with the centre of mass.
         body.linearVelocity = Vec2{};
         body.angularVelocity = 0.0f;
     }
-    updateBodyMass(body, w.shapes);
     // The centre of mass may have moved: the broad phase's next swept box starts from here.
     body.center0 = body.center;
     body.angle0 = body.angle;

@@ -82,9 +82,9 @@ constexpr int kMaxIterations = 1000;
 
 // Input limits. These are pivot2d's own (Box2D has no such checks): every number the API takes
 // must be finite and within them, or the call throws pivot::Error. They are far beyond anything
-// a game builds, and they keep the products a step forms (mass times length squared, inverse
-// inertia times torque, ...) inside float range, so accepted input never turns into inf or NaN
-// (docs/reliability.md gives the fuzzing that checks this).
+// a game builds, and they keep each product a step forms from them (mass times length squared,
+// inverse inertia times torque, ...) inside float range. They cannot stop a solver diverging on
+// constraints that contradict each other; docs/reliability.md gives what the fuzzing found.
 
 /// Metres. The largest |x| or |y| of a position, anchor, point, target, polygon vertex, circle
 /// centre or radius. At 1e5 m neighbouring floats are 7.8 mm apart, more than kLinearSlop:
