@@ -269,6 +269,11 @@ public:
         return ok_ ? std::atoi(w.c_str()) : 0;
     }
     bool b() { return i() != 0; }
+    /// An integer if one is left on the line, else `otherwise`.
+    int optionalInt(int otherwise) {
+        std::string w;
+        return (in_ >> w) ? std::atoi(w.c_str()) : otherwise;
+    }
     Filter filter() {
         Filter out;
         out.categoryBits = static_cast<std::uint16_t>(i());
@@ -509,10 +514,18 @@ ReplayResult replay(std::istream& in) {
             bool on = f.b();
             call = [&w, on] { w.setSleepEnabled(on); };
         } else if (command == "step") {
+            // An optional fourth field repeats the step (hand-written reproductions).
             float dt = f.f();
             int vi = f.i();
             int pi = f.i();
-            call = [&w, dt, vi, pi] { w.step(dt, vi, pi); };
+            int repeat = f.optionalInt(1);
+            std::string* what = &result.nonFinite;
+            call = [&w, dt, vi, pi, repeat, what] {
+                for (int k = 0; k < repeat; ++k) {
+                    w.step(dt, vi, pi);
+                    if (!worldIsFinite(w, what)) return;
+                }
+            };
         } else {
             result.error = "line " + std::to_string(result.lines) + ": unknown command " + command;
             return result;

@@ -3,7 +3,8 @@
 // built it can be written out, replayed, and cut down (tests/fuzz/reduce.py) to a short
 // reproduction. Refused calls change nothing (the driver checks that), so only accepted ones
 // are written. Objects are named by kind and creation number (b3, s7, j2, m0); a replayed line
-// naming an object whose creating line was cut is skipped.
+// naming an object whose creating line was cut is skipped. A step line may end with a repeat
+// count, for reproductions written by hand.
 #pragma once
 
 #include <cstdint>

@@ -5,8 +5,8 @@
 
 Delta debugging (ddmin) over the journal's lines, keeping the first (the world) line: a
 candidate is kept when `PIVOT_FUZZ --replay candidate` still exits with 3. Then each step line
-is tried with fewer iterations, so the result shows what the solver needs to go wrong. Writes
-OUT (default: JOURNAL with .min appended) and prints it.
+is tried with fewer iterations, and every line with rounder numbers, so the result is short
+and readable. Writes OUT (default: JOURNAL with .min appended) and prints it.
 """
 import os
 import subprocess
@@ -24,6 +24,18 @@ def still_fails(fuzz, lines):
         return result.returncode == 3
     finally:
         os.unlink(path)
+
+
+def round_field(text, digits):
+    """A number rounded to `digits` decimals; names (b3, s7, ...) unchanged."""
+    try:
+        value = float(text)
+    except ValueError:
+        return text
+    if text.lstrip("-").isdigit():
+        return text
+    rounded = round(value, digits)
+    return str(int(rounded)) if digits == 0 else repr(rounded)
 
 
 def ddmin(fuzz, head, body):
@@ -67,6 +79,15 @@ def main():
             if still_fails(fuzz, head + candidate):
                 body = candidate
                 fields = body[i].split()
+    # Rounder numbers, line by line, where that keeps the failure: easier to read and retype.
+    for i, line in enumerate(body):
+        fields = line.split()
+        for digits in (0, 1, 2):
+            rounded = [fields[0]] + [round_field(x, digits) for x in fields[1:]]
+            candidate = body[:i] + [" ".join(rounded)] + body[i + 1:]
+            if rounded != fields and still_fails(fuzz, head + candidate):
+                body = candidate
+                break
     with open(out, "w") as f:
         f.write("\n".join(head + body) + "\n")
     print("\n".join(head + body))
