@@ -197,4 +197,25 @@ void World::Impl::refilterBodyPair(std::int32_t a, std::int32_t b) {
     newShapes = true;
 }
 
+void World::Impl::refilterBody(std::int32_t bodyIndex) {
+    Body& body = bodies[bodyIndex];
+    for (std::int32_t key = body.contactList; key != -1;) {
+        Contact& contact = contacts[edgeOwner(key)];
+        int side = edgeSide(key);
+        contact.needsFiltering = true;
+        wakeUp(bodies[contact.edges[1 - side].body]);
+        key = contact.edges[side].nextKey;
+    }
+    for (std::int32_t key = body.jointList; key != -1;) {
+        const RevoluteJoint& joint = joints[edgeOwner(key)];
+        int side = edgeSide(key);
+        wakeUp(bodies[joint.edges[1 - side].body]);
+        key = joint.edges[side].nextKey;
+    }
+    for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
+        broadPhase.touchProxy(shapes[s].proxyId);
+    }
+    newShapes = true;
+}
+
 }  // namespace pivot

@@ -7,14 +7,22 @@
 
 namespace pivot {
 
+namespace {
+void requireExtent(const char* call, const char* field, float value) {
+    requireFinite(call, field, value);
+    if (value <= 0.0f)
+        fail(call, std::string(field) + " must be > 0 (got " + formatFloat(value) + ")");
+    if (value > kMaxCoordinate) {
+        fail(call, std::string(field) + " must be <= kMaxCoordinate (" +
+                       formatFloat(kMaxCoordinate) + " m) (got " + formatFloat(value) + ")");
+    }
+}
+}  // namespace
+
 Polygon Polygon::box(float halfWidth, float halfHeight) {
     const char* call = "Polygon::box";
-    requireFinite(call, "halfWidth", halfWidth);
-    requireFinite(call, "halfHeight", halfHeight);
-    if (halfWidth <= 0.0f) fail(call, "halfWidth must be > 0 (got " + formatFloat(halfWidth) + ")");
-    if (halfHeight <= 0.0f) {
-        fail(call, "halfHeight must be > 0 (got " + formatFloat(halfHeight) + ")");
-    }
+    requireExtent(call, "halfWidth", halfWidth);
+    requireExtent(call, "halfHeight", halfHeight);
     Polygon p;
     p.count = 4;
     p.vertices[0] = {-halfWidth, -halfHeight};
@@ -25,8 +33,8 @@ Polygon Polygon::box(float halfWidth, float halfHeight) {
 }
 
 Polygon Polygon::box(float halfWidth, float halfHeight, Vec2 center, float angle) {
-    requireFinite("Polygon::box", "center", center);
-    requireFinite("Polygon::box", "angle", angle);
+    requireCoordinate("Polygon::box", "center", center);
+    requireMagnitude("Polygon::box", "angle", angle);
     Polygon p = box(halfWidth, halfHeight);
     Transform xf{center, Rot(angle)};
     for (int i = 0; i < p.count; ++i) p.vertices[i] = transformPoint(xf, p.vertices[i]);
@@ -68,9 +76,13 @@ std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out) {
                std::to_string(n) + ")";
     }
     for (int i = 0; i < n; ++i) {
-        if (!isFinite(input.vertices[i])) {
-            return "polygon." + vertexName(i) + " must be finite (got " +
-                   formatVec2(input.vertices[i]) + ")";
+        Vec2 v = input.vertices[i];
+        if (!isFinite(v)) {
+            return "polygon." + vertexName(i) + " must be finite (got " + formatVec2(v) + ")";
+        }
+        if (std::fabs(v.x) > kMaxCoordinate || std::fabs(v.y) > kMaxCoordinate) {
+            return "polygon." + vertexName(i) + " must be within +-kMaxCoordinate (" +
+                   formatFloat(kMaxCoordinate) + " m) (got " + formatVec2(v) + ")";
         }
     }
 
@@ -111,6 +123,21 @@ std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out) {
     }
     out = poly;
     return {};
+}
+
+void checkCircle(const char* call, const Circle& circle) {
+    requireCoordinate(call, "circle.center", circle.center);
+    requireFinite(call, "circle.radius", circle.radius);
+    // Smaller than the slop a contact could not resolve it, as for a polygon's edges; the bound
+    // also keeps the lightest circle's inverse mass a finite float (see kMinDensity).
+    if (circle.radius < kLinearSlop) {
+        fail(call, "circle.radius must be >= kLinearSlop (" + formatFloat(kLinearSlop) +
+                       " m) (got " + formatFloat(circle.radius) + ")");
+    }
+    if (circle.radius > kMaxCoordinate) {
+        fail(call, "circle.radius must be <= kMaxCoordinate (" + formatFloat(kMaxCoordinate) +
+                       " m) (got " + formatFloat(circle.radius) + ")");
+    }
 }
 
 // Mass properties are evaluated in the same float order as Box2D 2.4.1, so that bodies built
@@ -181,17 +208,21 @@ MassData aboutCentroid(const OriginMass& m) {
 }  // namespace
 
 MassData computeMass(const Circle& circle, float density) {
+    const char* call = "computeMass";
+    checkCircle(call, circle);
+    requireDensity(call, "density", density);
     return aboutCentroid(circleMassAboutOrigin(circle, density));
 }
 
 MassData computeMass(const Polygon& polygon, float density) {
-    // Integrate counter-clockwise whatever the winding, so area and mass come out positive.
-    std::array<Vec2, kMaxPolygonVertices> ccw{};
-    const int n = polygon.count;
-    bool clockwise = signedArea(polygon) < 0.0f;
-    for (int i = 0; i < n; ++i)
-        ccw[i] = clockwise ? polygon.vertices[n - 1 - i] : polygon.vertices[i];
-    return aboutCentroid(polygonMassAboutOrigin(ccw.data(), n, density));
+    const char* call = "computeMass";
+    // The checked polygon is counter-clockwise whatever the input's winding, so area and mass
+    // come out positive; its vertices are the input's, in the order the reference integrates.
+    ConvexPolygon ccw;
+    std::string problem = makeConvexPolygon(polygon, ccw);
+    if (!problem.empty()) fail(call, problem);
+    requireDensity(call, "density", density);
+    return aboutCentroid(polygonMassAboutOrigin(ccw.vertices.data(), ccw.count, density));
 }
 
 AABB computeShapeBox(const Shape& shape, const Transform& xf) {

@@ -38,6 +38,9 @@ struct Shape {
 /// Checks a user polygon. Returns what is wrong with it as text, or an empty string and the
 /// polygon in canonical form in `out`.
 std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out);
+/// Checks a user circle (centre within kMaxCoordinate, radius in [kLinearSlop,
+/// kMaxCoordinate]); throws pivot::Error naming `call`.
+void checkCircle(const char* call, const Circle& circle);
 
 /// A shape's mass, centroid, and second moment about its frame's origin (what a body sums)
 /// and about its centroid (what computeMass reports, computed directly rather than by

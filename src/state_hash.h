@@ -12,10 +12,20 @@ namespace pivot {
 class StateHasher {
 public:
     void add(std::int32_t value) { addBytes(&value, sizeof value); }
+    void add(std::uint64_t value) { addBytes(&value, sizeof value); }
+    void add(bool value) { add(static_cast<std::int32_t>(value)); }
     void add(float value) { addBytes(&value, sizeof value); }
     void add(Vec2 value) {
         add(value.x);
         add(value.y);
+    }
+    void add(Rot value) {
+        add(value.s);
+        add(value.c);
+    }
+    void add(Transform value) {
+        add(value.p);
+        add(value.q);
     }
     std::uint64_t value() const { return hash_; }
 

@@ -2,14 +2,22 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+
+#include "pivot/constants.h"
 
 namespace pivot {
 
 std::string formatFloat(float value) {
     if (std::isnan(value)) return "nan";
     if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    // Nine significant digits always read back exactly; fewer usually do, and are what the
+    // caller typed (0.005 rather than 0.00499999989).
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(value));
+    for (int digits = 1; digits <= 9; ++digits) {
+        std::snprintf(buffer, sizeof buffer, "%.*g", digits, static_cast<double>(value));
+        if (std::strtof(buffer, nullptr) == value) break;
+    }
     return buffer;
 }
 
@@ -33,11 +41,44 @@ void requireFinite(const char* call, const char* field, Vec2 value) {
     }
 }
 
+void requireMagnitude(const char* call, const char* field, float value) {
+    requireFinite(call, field, value);
+    if (std::fabs(value) > kMaxMagnitude) {
+        fail(call, std::string(field) + " must be within +-kMaxMagnitude (" +
+                       formatFloat(kMaxMagnitude) + ") (got " + formatFloat(value) + ")");
+    }
+}
+
+void requireMagnitude(const char* call, const char* field, Vec2 value) {
+    requireFinite(call, field, value);
+    if (std::fabs(value.x) > kMaxMagnitude || std::fabs(value.y) > kMaxMagnitude) {
+        fail(call, std::string(field) + " must be within +-kMaxMagnitude (" +
+                       formatFloat(kMaxMagnitude) + ") (got " + formatVec2(value) + ")");
+    }
+}
+
+void requireCoordinate(const char* call, const char* field, Vec2 value) {
+    requireFinite(call, field, value);
+    if (std::fabs(value.x) > kMaxCoordinate || std::fabs(value.y) > kMaxCoordinate) {
+        fail(call, std::string(field) + " must be within +-kMaxCoordinate (" +
+                       formatFloat(kMaxCoordinate) + " m) (got " + formatVec2(value) + ")");
+    }
+}
+
 void requireNonNegative(const char* call, const char* field, float value) {
     requireFinite(call, field, value);
     if (value < 0.0f) {
         fail(call, std::string(field) + " must be >= 0 (got " + formatFloat(value) + ")");
     }
+    requireMagnitude(call, field, value);
+}
+
+void requirePositive(const char* call, const char* field, float value) {
+    requireFinite(call, field, value);
+    if (value <= 0.0f) {
+        fail(call, std::string(field) + " must be > 0 (got " + formatFloat(value) + ")");
+    }
+    requireMagnitude(call, field, value);
 }
 
 void requireInRange(const char* call, const char* field, float value, float lo, float hi) {
@@ -45,6 +86,18 @@ void requireInRange(const char* call, const char* field, float value, float lo, 
     if (value < lo || value > hi) {
         fail(call, std::string(field) + " must be in [" + formatFloat(lo) + ", " + formatFloat(hi) +
                        "] (got " + formatFloat(value) + ")");
+    }
+}
+
+void requireDensity(const char* call, const char* field, float value) {
+    requireFinite(call, field, value);
+    if (value < 0.0f) {
+        fail(call, std::string(field) + " must be >= 0 (got " + formatFloat(value) + ")");
+    }
+    if (value != 0.0f && (value < kMinDensity || value > kMaxDensity)) {
+        fail(call, std::string(field) + " must be 0 or in [kMinDensity, kMaxDensity] = [" +
+                       formatFloat(kMinDensity) + ", " + formatFloat(kMaxDensity) +
+                       "] kg/m^2 (got " + formatFloat(value) + ")");
     }
 }
 

@@ -1,6 +1,7 @@
 // Checks on public input. Each throws pivot::Error with a message of the form
 //   "<call>: <field> <problem> (got <value>)"
-// so the caller sees which argument of which call was wrong, and with what value.
+// so the caller sees which argument of which call was wrong, and with what value. The limits
+// they enforce are in include/pivot/constants.h ("Input limits").
 #pragma once
 
 #include <string>
@@ -18,9 +19,18 @@ std::string formatVec2(Vec2 value);
 
 void requireFinite(const char* call, const char* field, float value);
 void requireFinite(const char* call, const char* field, Vec2 value);
-/// Finite and >= 0.
+/// Finite and |value| <= kMaxMagnitude (speeds, forces, angles, ...).
+void requireMagnitude(const char* call, const char* field, float value);
+void requireMagnitude(const char* call, const char* field, Vec2 value);
+/// Finite and every component within [-kMaxCoordinate, kMaxCoordinate] (positions, points).
+void requireCoordinate(const char* call, const char* field, Vec2 value);
+/// Finite, >= 0 and <= kMaxMagnitude.
 void requireNonNegative(const char* call, const char* field, float value);
+/// Finite, > 0 and <= kMaxMagnitude.
+void requirePositive(const char* call, const char* field, float value);
 /// Finite and within [lo, hi].
 void requireInRange(const char* call, const char* field, float value, float lo, float hi);
+/// 0, or within [kMinDensity, kMaxDensity].
+void requireDensity(const char* call, const char* field, float value);
 
 }  // namespace pivot

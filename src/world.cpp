@@ -50,7 +50,7 @@ void World::Impl::wakeAll() {
 
 World::World(const WorldDef& def) {
     const char* call = "World::World";
-    requireFinite(call, "def.gravity", def.gravity);
+    requireMagnitude(call, "def.gravity", def.gravity);
     checkSolver(call, "def.defaultPositionSolver", def.defaultPositionSolver);
     checkContactCorrection(call, "def.contactCorrection", def.contactCorrection);
     requireInRange(call, "def.contactBiasFactor", def.contactBiasFactor, 0.0f, 1.0f);
@@ -59,6 +59,7 @@ World::World(const WorldDef& def) {
         fail(call,
              "def.workerCount must be in [1, 64] (got " + std::to_string(def.workerCount) + ")");
     }
+    // bool fields need no check: any value is meaningful.
     impl_ = std::make_unique<Impl>(def);
 }
 
@@ -68,6 +69,10 @@ void World::step(float dt, int velocityIterations, int positionIterations) {
     const char* call = "World::step";
     requireFinite(call, "dt", dt);
     if (dt <= 0.0f) fail(call, "dt must be > 0 (got " + formatFloat(dt) + ")");
+    if (dt > kMaxTimeStep) {
+        fail(call, "dt must be <= kMaxTimeStep (" + formatFloat(kMaxTimeStep) + " s) (got " +
+                       formatFloat(dt) + ")");
+    }
     auto checkIterations = [&](const char* field, int value) {
         if (value < 0 || value > kMaxIterations) {
             fail(call, std::string(field) + " must be in [0, " + std::to_string(kMaxIterations) +
@@ -88,7 +93,7 @@ Vec2 World::gravity() const {
 }
 
 void World::setGravity(Vec2 gravity) {
-    requireFinite("World::setGravity", "gravity", gravity);
+    requireMagnitude("World::setGravity", "gravity", gravity);
     impl_->gravity = gravity;
     impl_->wakeAll();
 }
@@ -115,11 +120,31 @@ bool World::isSleepEnabled() const {
     return impl_->enableSleep;
 }
 
+// Everything a public call can change goes in, so that "the hash is unchanged" means "the world
+// is unchanged": settings, every field of every object (derived ones too, such as the inverse
+// mass, so that a forgotten recomputation shows), the list links, the broad phase's boxes, the
+// contacts with their manifolds, and what the last step reported. Only scratch buffers that
+// every step rebuilds are left out.
 std::uint64_t World::stateHash() const {
+    const Impl& w = *impl_;
     StateHasher h;
-    impl_->bodies.forEach([&](std::int32_t index, const Body& b) {
+    h.add(w.gravity);
+    h.add(static_cast<std::int32_t>(w.defaultPositionSolver));
+    h.add(w.warmStarting);
+    h.add(static_cast<std::int32_t>(w.contactCorrection));
+    h.add(w.contactBiasFactor);
+    h.add(w.restitutionThreshold);
+    h.add(w.enableSleep);
+    h.add(w.previousInvDt);
+    h.add(w.newShapes);
+
+    h.add(w.bodies.size());
+    w.bodies.forEach([&](std::int32_t index, const Body& b) {
         h.add(index);
+        h.add(static_cast<std::int32_t>(w.bodies.generation(index)));
         h.add(static_cast<std::int32_t>(b.type));
+        h.add(b.xf);
+        h.add(b.localCenter);
         h.add(b.center);
         h.add(b.angle);
         h.add(b.linearVelocity);
@@ -127,47 +152,133 @@ std::uint64_t World::stateHash() const {
         h.add(b.force);
         h.add(b.torque);
         h.add(b.mass);
+        h.add(b.invMass);
         h.add(b.inertia);
-        h.add(b.localCenter);
+        h.add(b.invInertia);
+        h.add(b.linearDamping);
+        h.add(b.angularDamping);
+        h.add(b.gravityScale);
+        h.add(b.fixedRotation);
+        h.add(b.userData);
+        h.add(b.shapeList);
+        h.add(b.jointList);
+        h.add(b.contactList);
+        h.add(b.mouseList);
         h.add(b.shapeCount);
-        h.add(static_cast<std::int32_t>(b.awake));
+        h.add(b.awake);
+        h.add(b.allowSleep);
         h.add(b.sleepTime);
     });
-    impl_->shapes.forEach([&](std::int32_t index, const Shape& s) {
+    h.add(w.shapes.size());
+    w.shapes.forEach([&](std::int32_t index, const Shape& s) {
         h.add(index);
+        h.add(static_cast<std::int32_t>(w.shapes.generation(index)));
         h.add(s.body);
+        h.add(static_cast<std::int32_t>(s.type));
+        if (s.type == ShapeType::Circle) {
+            h.add(s.circle.center);
+            h.add(s.circle.radius);
+        } else {
+            h.add(s.polygon.count);
+            for (int i = 0; i < s.polygon.count; ++i) h.add(s.polygon.vertices[i]);
+        }
         h.add(s.density);
+        h.add(s.friction);
+        h.add(s.restitution);
         h.add(static_cast<std::int32_t>(s.filter.categoryBits | (s.filter.maskBits << 16)));
         h.add(static_cast<std::int32_t>(s.filter.groupIndex));
+        h.add(s.userData);
+        h.add(s.prev);
+        h.add(s.next);
+        const AABB& box = w.broadPhase.fatBox(s.proxyId);
+        h.add(box.lower);
+        h.add(box.upper);
     });
-    impl_->joints.forEach([&](std::int32_t index, const RevoluteJoint& j) {
+    h.add(w.joints.size());
+    w.joints.forEach([&](std::int32_t index, const RevoluteJoint& j) {
         h.add(index);
+        h.add(static_cast<std::int32_t>(w.joints.generation(index)));
+        for (const BodyEdge& e : j.edges) {
+            h.add(e.body);
+            h.add(e.prevKey);
+            h.add(e.nextKey);
+        }
+        h.add(j.localAnchorA);
+        h.add(j.localAnchorB);
+        h.add(j.referenceAngle);
         h.add(static_cast<std::int32_t>(j.solver));
-        h.add(j.biasFactor());
+        h.add(j.hasBiasOverride);
+        h.add(j.biasOverride);
+        h.add(j.collideConnected);
+        h.add(j.userData);
+        h.add(j.enableLimit);
+        h.add(j.lowerAngle);
+        h.add(j.upperAngle);
+        h.add(j.enableMotor);
+        h.add(j.motorSpeed);
+        h.add(j.maxMotorTorque);
         h.add(j.impulse);
         h.add(j.motorImpulse);
         h.add(j.lowerImpulse);
         h.add(j.upperImpulse);
-        h.add(j.bodyA());
-        h.add(j.bodyB());
+        h.add(j.impulseInvDt);
+        h.add(j.blownUp);
     });
-    impl_->mouseJoints.forEach([&](std::int32_t index, const MouseJoint& m) {
+    h.add(w.mouseJoints.size());
+    w.mouseJoints.forEach([&](std::int32_t index, const MouseJoint& m) {
         h.add(index);
+        h.add(static_cast<std::int32_t>(w.mouseJoints.generation(index)));
         h.add(m.body);
+        h.add(m.next);
+        h.add(m.localAnchor);
         h.add(m.target);
+        h.add(m.maxForce);
+        h.add(m.hertz);
+        h.add(m.dampingRatio);
         h.add(m.impulse);
     });
-    impl_->contacts.forEach([&](std::int32_t index, const Contact& c) {
+    h.add(w.contacts.size());
+    w.contacts.forEach([&](std::int32_t index, const Contact& c) {
         h.add(index);
+        for (const BodyEdge& e : c.edges) {
+            h.add(e.body);
+            h.add(e.prevKey);
+            h.add(e.nextKey);
+        }
         h.add(c.shapeA);
         h.add(c.shapeB);
-        h.add(c.manifold.pointCount);
-        for (int i = 0; i < c.manifold.pointCount; ++i) {
-            h.add(c.manifold.points[i].localPoint);
-            h.add(c.manifold.points[i].normalImpulse);
-            h.add(c.manifold.points[i].tangentImpulse);
+        h.add(c.friction);
+        h.add(c.restitution);
+        h.add(c.touching);
+        h.add(c.needsFiltering);
+        const Manifold& m = c.manifold;
+        h.add(static_cast<std::int32_t>(m.type));
+        h.add(m.localNormal);
+        h.add(m.localPoint);
+        h.add(m.pointCount);
+        for (int i = 0; i < m.pointCount; ++i) {
+            h.add(m.points[i].localPoint);
+            h.add(m.points[i].normalImpulse);
+            h.add(m.points[i].tangentImpulse);
+            h.add(static_cast<std::int32_t>(m.points[i].id));
         }
     });
+    for (const std::vector<ContactEvent>* events : {&w.beginEvents, &w.endEvents}) {
+        h.add(static_cast<std::int32_t>(events->size()));
+        for (const ContactEvent& e : *events) {
+            h.add(e.shapeA.index);
+            h.add(static_cast<std::int32_t>(e.shapeA.generation));
+            h.add(e.shapeB.index);
+            h.add(static_cast<std::int32_t>(e.shapeB.generation));
+        }
+    }
+    const StepStats& s = w.stats;
+    for (int value :
+         {s.islandCount, s.bodyCount, s.jointCount, s.translationClamps, s.rotationClamps,
+          s.positionIterations, s.contactCount, s.touchingCount, s.sleepingBodyCount,
+          s.blownUpJointCount, s.discardedBodyCount}) {
+        h.add(static_cast<std::int32_t>(value));
+    }
     return h.value();
 }
 

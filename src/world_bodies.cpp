@@ -6,17 +6,14 @@ namespace pivot {
 
 BodyId World::createBody(const BodyDef& def) {
     const char* call = "World::createBody";
-    int type = static_cast<int>(def.type);
-    if (type < 0 || type > static_cast<int>(BodyType::Dynamic)) {
-        fail(call, "def.type is not a BodyType (got " + std::to_string(type) + ")");
-    }
-    requireFinite(call, "def.position", def.position);
-    requireFinite(call, "def.angle", def.angle);
-    requireFinite(call, "def.linearVelocity", def.linearVelocity);
-    requireFinite(call, "def.angularVelocity", def.angularVelocity);
+    checkBodyType(call, "def.type", def.type);
+    requireCoordinate(call, "def.position", def.position);
+    requireMagnitude(call, "def.angle", def.angle);
+    requireMagnitude(call, "def.linearVelocity", def.linearVelocity);
+    requireMagnitude(call, "def.angularVelocity", def.angularVelocity);
     requireNonNegative(call, "def.linearDamping", def.linearDamping);
     requireNonNegative(call, "def.angularDamping", def.angularDamping);
-    requireFinite(call, "def.gravityScale", def.gravityScale);
+    requireMagnitude(call, "def.gravityScale", def.gravityScale);
     if (def.type == BodyType::Static &&
         (def.linearVelocity != Vec2{} || def.angularVelocity != 0.0f)) {
         fail(call, "a static body cannot move: def.linearVelocity " +
@@ -77,6 +74,40 @@ int World::bodyCount() const {
 BodyType World::bodyType(BodyId id) const {
     return impl_->bodies[impl_->bodyIndex("World::bodyType", id)].type;
 }
+
+void World::setBodyType(BodyId id, BodyType type) {
+    const char* call = "World::setBodyType";
+    Impl& w = *impl_;
+    std::int32_t index = w.bodyIndex(call, id);
+    checkBodyType(call, "type", type);
+    Body& body = w.bodies[index];
+    if (type == BodyType::Dynamic) {
+        // The rule createShape enforces, so a dynamic body's mass always comes from its shapes.
+        for (std::int32_t s = body.shapeList; s != -1; s = w.shapes[s].next) {
+            if (w.shapes[s].density == 0.0f) {
+                fail(call, "a dynamic body needs density > 0 in every shape, and shape " +
+                               std::to_string(s) +
+                               " has density 0 (give it a density with setShapeDensity first)");
+            }
+        }
+    }
+    if (body.type == type) return;
+
+    body.type = type;
+    body.force = Vec2{};
+    body.torque = 0.0f;
+    updateBodyMass(body, w.shapes);
+    if (type == BodyType::Static) {
+        // After the mass update, which moves the velocity with the centre of mass.
+        body.linearVelocity = Vec2{};
+        body.angularVelocity = 0.0f;
+    }
+    body.sleepTime = 0.0f;
+    body.awake = true;
+    // Contacts that became static-static or kinematic-static go at the next step's contact
+    // update; pairs that were not allowed to collide before are found then.
+    w.refilterBody(index);
+}
 Vec2 World::bodyPosition(BodyId id) const {
     return impl_->bodies[impl_->bodyIndex("World::bodyPosition", id)].xf.p;
 }
@@ -108,13 +139,13 @@ float World::bodyRotationalInertia(BodyId id) const {
 Vec2 World::bodyWorldPoint(BodyId id, Vec2 localPoint) const {
     const char* call = "World::bodyWorldPoint";
     const Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
-    requireFinite(call, "localPoint", localPoint);
+    requireCoordinate(call, "localPoint", localPoint);
     return transformPoint(b.xf, localPoint);
 }
 Vec2 World::bodyLocalPoint(BodyId id, Vec2 worldPoint) const {
     const char* call = "World::bodyLocalPoint";
     const Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
-    requireFinite(call, "worldPoint", worldPoint);
+    requireCoordinate(call, "worldPoint", worldPoint);
     return inverseTransformPoint(b.xf, worldPoint);
 }
 
@@ -142,8 +173,8 @@ void World::setBodyTransform(BodyId id, Vec2 position, float angle) {
     const char* call = "World::setBodyTransform";
     Impl& w = *impl_;
     std::int32_t index = w.bodyIndex(call, id);
-    requireFinite(call, "position", position);
-    requireFinite(call, "angle", angle);
+    requireCoordinate(call, "position", position);
+    requireMagnitude(call, "angle", angle);
     Body& b = w.bodies[index];
     b.xf = {position, Rot(angle)};
     b.angle = angle;
@@ -165,7 +196,7 @@ Body& movableBody(World::Impl& w, const char* call, BodyId id) {
 void World::setBodyLinearVelocity(BodyId id, Vec2 velocity) {
     const char* call = "World::setBodyLinearVelocity";
     Body& b = movableBody(*impl_, call, id);
-    requireFinite(call, "velocity", velocity);
+    requireMagnitude(call, "velocity", velocity);
     b.linearVelocity = velocity;
     wakeUp(b);
 }
@@ -173,7 +204,7 @@ void World::setBodyLinearVelocity(BodyId id, Vec2 velocity) {
 void World::setBodyAngularVelocity(BodyId id, float omega) {
     const char* call = "World::setBodyAngularVelocity";
     Body& b = movableBody(*impl_, call, id);
-    requireFinite(call, "omega", omega);
+    requireMagnitude(call, "omega", omega);
     b.angularVelocity = b.fixedRotation ? 0.0f : omega;
     wakeUp(b);
 }
@@ -183,8 +214,8 @@ void World::setBodyAngularVelocity(BodyId id, float omega) {
 void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
     const char* call = "World::applyForce";
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
-    requireFinite(call, "force", force);
-    requireFinite(call, "worldPoint", worldPoint);
+    requireMagnitude(call, "force", force);
+    requireCoordinate(call, "worldPoint", worldPoint);
     if (b.type != BodyType::Dynamic) return;
     b.force += force;
     b.torque += cross(worldPoint - b.center, force);
@@ -194,7 +225,7 @@ void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
 void World::applyForceToCenter(BodyId id, Vec2 force) {
     const char* call = "World::applyForceToCenter";
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
-    requireFinite(call, "force", force);
+    requireMagnitude(call, "force", force);
     if (b.type != BodyType::Dynamic) return;
     b.force += force;
     wakeUp(b);
@@ -203,7 +234,7 @@ void World::applyForceToCenter(BodyId id, Vec2 force) {
 void World::applyTorque(BodyId id, float torque) {
     const char* call = "World::applyTorque";
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
-    requireFinite(call, "torque", torque);
+    requireMagnitude(call, "torque", torque);
     if (b.type != BodyType::Dynamic) return;
     b.torque += torque;
     wakeUp(b);
@@ -212,8 +243,8 @@ void World::applyTorque(BodyId id, float torque) {
 void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
     const char* call = "World::applyLinearImpulse";
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
-    requireFinite(call, "impulse", impulse);
-    requireFinite(call, "worldPoint", worldPoint);
+    requireMagnitude(call, "impulse", impulse);
+    requireCoordinate(call, "worldPoint", worldPoint);
     if (b.type != BodyType::Dynamic) return;
     b.linearVelocity += b.invMass * impulse;
     b.angularVelocity += b.invInertia * cross(worldPoint - b.center, impulse);
@@ -223,7 +254,7 @@ void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
 void World::applyAngularImpulse(BodyId id, float impulse) {
     const char* call = "World::applyAngularImpulse";
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
-    requireFinite(call, "impulse", impulse);
+    requireMagnitude(call, "impulse", impulse);
     if (b.type != BodyType::Dynamic) return;
     b.angularVelocity += b.invInertia * impulse;
     wakeUp(b);

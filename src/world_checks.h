@@ -17,6 +17,13 @@ inline void checkSolver(const char* call, const char* field, PositionSolver solv
     }
 }
 
+inline void checkBodyType(const char* call, const char* field, BodyType type) {
+    int value = static_cast<int>(type);
+    if (value < 0 || value > static_cast<int>(BodyType::Dynamic)) {
+        fail(call, std::string(field) + " is not a BodyType (got " + std::to_string(value) + ")");
+    }
+}
+
 inline void checkContactCorrection(const char* call, const char* field,
                                    ContactCorrection correction) {
     int value = static_cast<int>(correction);
@@ -27,8 +34,8 @@ inline void checkContactCorrection(const char* call, const char* field,
 }
 
 inline void checkLimit(const char* call, const std::string& field, const JointLimit& limit) {
-    requireFinite(call, (field + ".lower").c_str(), limit.lower);
-    requireFinite(call, (field + ".upper").c_str(), limit.upper);
+    requireMagnitude(call, (field + ".lower").c_str(), limit.lower);
+    requireMagnitude(call, (field + ".upper").c_str(), limit.upper);
     if (limit.lower > limit.upper) {
         fail(call, field + ".lower must be <= " + field + ".upper (got " +
                        formatFloat(limit.lower) + " > " + formatFloat(limit.upper) + ")");
@@ -36,7 +43,7 @@ inline void checkLimit(const char* call, const std::string& field, const JointLi
 }
 
 inline void checkMotor(const char* call, const std::string& field, const JointMotor& motor) {
-    requireFinite(call, (field + ".speed").c_str(), motor.speed);
+    requireMagnitude(call, (field + ".speed").c_str(), motor.speed);
     requireNonNegative(call, (field + ".maxTorque").c_str(), motor.maxTorque);
 }
 

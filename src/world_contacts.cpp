@@ -26,10 +26,10 @@ std::vector<ContactData> World::contacts() const {
     return result;
 }
 
-const std::vector<ContactEvent>& World::contactBeginEvents() const {
+std::vector<ContactEvent> World::contactBeginEvents() const {
     return impl_->beginEvents;
 }
-const std::vector<ContactEvent>& World::contactEndEvents() const {
+std::vector<ContactEvent> World::contactEndEvents() const {
     return impl_->endEvents;
 }
 

@@ -109,12 +109,21 @@ struct World::Impl {
     /// Flags the contacts between two bodies for re-filtering and makes the broad phase report
     /// their shapes again (after a joint between them appeared or went).
     void refilterBodyPair(std::int32_t bodyA, std::int32_t bodyB);
+    /// Flags every contact of a body for re-filtering, wakes the bodies it touches or is jointed
+    /// to, and makes the broad phase report its shapes again (after its type changed).
+    void refilterBody(std::int32_t body);
 };
 
 /// Checks a handle against a pool; returns the slot index or throws pivot::Error.
 template <typename Tag, typename T>
 std::int32_t checkHandle(const char* call, const char* what, detail::Handle<Tag> id,
                          const SlotPool<T>& pool, std::uint32_t worldId) {
+    // The common case first: the messages are built only when a check fails, because every
+    // query goes through here.
+    if (!id.isNull() && id.world == worldId && pool.isAlive(id.index) &&
+        pool.generation(id.index) == id.generation) {
+        return id.index;
+    }
     const std::string name(what);
     if (id.isNull()) fail(call, name + " id is null (default-constructed)");
     if (id.world != worldId) {
@@ -125,11 +134,14 @@ std::int32_t checkHandle(const char* call, const char* what, detail::Handle<Tag>
         fail(call, name + " id has index " + std::to_string(id.index) +
                        ", which this world never issued");
     }
-    if (!pool.isAlive(id.index) || pool.generation(id.index) != id.generation) {
+    if (!pool.isAlive(id.index)) {
         fail(call, name + " id is stale: " + name + " " + std::to_string(id.index) +
                        " (generation " + std::to_string(id.generation) + ") was destroyed");
     }
-    return id.index;
+    fail(call, name + " id is stale: " + name + " " + std::to_string(id.index) + " (generation " +
+                   std::to_string(id.generation) +
+                   ") was destroyed; the slot now holds generation " +
+                   std::to_string(pool.generation(id.index)));
 }
 
 }  // namespace pivot

@@ -21,10 +21,10 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
     std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
     if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
-    requireFinite(call, "def.localAnchorA", def.localAnchorA);
-    requireFinite(call, "def.localAnchorB", def.localAnchorB);
-    requireFinite(call, "def.referenceAngle", def.referenceAngle);
-    if (def.worldAnchor) requireFinite(call, "def.worldAnchor", *def.worldAnchor);
+    requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
+    requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
+    requireMagnitude(call, "def.referenceAngle", def.referenceAngle);
+    if (def.worldAnchor) requireCoordinate(call, "def.worldAnchor", *def.worldAnchor);
     PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
     checkSolver(call, "def.positionSolver", solver);
     if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);

@@ -20,13 +20,9 @@ MouseJointId World::createMouseJoint(const MouseJointDef& def) {
     std::int32_t bodyIndex = checkHandle(call, "def.body", def.body, w.bodies, w.id);
     Body& body = w.bodies[bodyIndex];
     if (body.type != BodyType::Dynamic) fail(call, "def.body must be dynamic to be dragged");
-    requireFinite(call, "def.target", def.target);
-    requireFinite(call, "def.maxForce", def.maxForce);
-    if (def.maxForce <= 0.0f) {
-        fail(call, "def.maxForce must be > 0 (got " + formatFloat(def.maxForce) + ")");
-    }
-    requireFinite(call, "def.hertz", def.hertz);
-    if (def.hertz <= 0.0f) fail(call, "def.hertz must be > 0 (got " + formatFloat(def.hertz) + ")");
+    requireCoordinate(call, "def.target", def.target);
+    requirePositive(call, "def.maxForce", def.maxForce);
+    requirePositive(call, "def.hertz", def.hertz);
     requireNonNegative(call, "def.dampingRatio", def.dampingRatio);
 
     MouseJoint joint;
@@ -55,7 +51,7 @@ bool World::isValid(MouseJointId id) const {
 void World::setMouseTarget(MouseJointId id, Vec2 target) {
     const char* call = "World::setMouseTarget";
     MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
-    requireFinite(call, "target", target);
+    requireCoordinate(call, "target", target);
     joint.target = target;
     wakeUp(impl_->bodies[joint.body]);
 }

@@ -7,7 +7,7 @@ namespace pivot {
 namespace {
 
 void checkShapeDef(const char* call, const ShapeDef& def, const Body& body) {
-    requireNonNegative(call, "def.density", def.density);
+    requireDensity(call, "def.density", def.density);
     if (body.type == BodyType::Dynamic && def.density <= 0.0f) {
         fail(call,
              "def.density must be > 0 on a dynamic body (got " + formatFloat(def.density) + ")");
@@ -65,11 +65,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Circle& cir
     const char* call = "World::createShape";
     std::int32_t bodyIndex = impl_->bodyIndex(call, bodyId);
     checkShapeDef(call, def, impl_->bodies[bodyIndex]);
-    requireFinite(call, "circle.center", circle.center);
-    requireFinite(call, "circle.radius", circle.radius);
-    if (circle.radius <= 0.0f) {
-        fail(call, "circle.radius must be > 0 (got " + formatFloat(circle.radius) + ")");
-    }
+    checkCircle(call, circle);
     Shape shape;
     shape.type = ShapeType::Circle;
     shape.circle = circle;
@@ -128,6 +124,25 @@ Polygon World::shapePolygon(ShapeId id) const {
     polygon.count = shape.polygon.count;
     for (int i = 0; i < polygon.count; ++i) polygon.vertices[i] = shape.polygon.vertices[i];
     return polygon;
+}
+
+float World::shapeDensity(ShapeId id) const {
+    return impl_->shapes[impl_->shapeIndex("World::shapeDensity", id)].density;
+}
+
+void World::setShapeDensity(ShapeId id, float density) {
+    const char* call = "World::setShapeDensity";
+    Impl& w = *impl_;
+    std::int32_t index = w.shapeIndex(call, id);
+    requireDensity(call, "density", density);
+    Shape& shape = w.shapes[index];
+    Body& body = w.bodies[shape.body];
+    if (body.type == BodyType::Dynamic && density == 0.0f) {
+        fail(call, "density must be > 0 on a dynamic body (got 0)");
+    }
+    shape.density = density;
+    updateBodyMass(body, w.shapes);
+    wakeUp(body);
 }
 
 Filter World::shapeFilter(ShapeId id) const {

@@ -87,4 +87,33 @@ constexpr int kDefaultPositionIterations = 3;
 /// (a negative number cast to unsigned, say) and would stall the caller.
 constexpr int kMaxIterations = 1000;
 
+// Input limits. These are pivot2d's own (Box2D has no such checks): every number the API takes
+// must be finite and within them, or the call throws pivot::Error. They are far beyond anything
+// a game builds, and they keep each product a step forms from them (mass times length squared,
+// inverse inertia times torque, ...) inside float range. They cannot stop a solver diverging on
+// constraints that contradict each other; docs/reliability.md gives what the fuzzing found.
+
+/// Metres. The largest |x| or |y| of a position, anchor, point, target, polygon vertex, circle
+/// centre or radius. At 1e5 m neighbouring floats are 7.8 mm apart, more than kLinearSlop:
+/// further out, joints and contacts could not hold their slop. Simulation may carry a body
+/// beyond it (nothing stops a fall), with the precision that implies.
+constexpr float kMaxCoordinate = 1.0e5f;
+
+/// kg/m^2. A shape's density is 0 (no mass) or within [kMinDensity, kMaxDensity]: the range of
+/// real materials spread over any thickness a 2D world means, and narrow enough that the
+/// lightest allowed shape (a kLinearSlop sliver) still has an inverse mass and inverse inertia
+/// that are finite floats, and the heaviest an inertia that is.
+constexpr float kMinDensity = 1.0e-6f;
+constexpr float kMaxDensity = 1.0e6f;
+
+/// The largest magnitude of every other number the API takes: speeds (m/s, rad/s), forces (N),
+/// torques (N m), impulses (N s, N m s), angles (rad), gravity (m/s^2), gravity scale, damping
+/// (1/s), friction, the restitution threshold (m/s), joint limits, motor speed and torque,
+/// and the mouse joint's force, frequency and damping ratio.
+constexpr float kMaxMagnitude = 1.0e10f;
+
+/// Seconds. The longest time step World::step accepts. A longer one is a unit mistake (ms for
+/// s): kMaxTranslation per step would cap every body below 2 m/s.
+constexpr float kMaxTimeStep = 1.0f;
+
 }  // namespace pivot

@@ -17,18 +17,18 @@ enum class ShapeType : std::uint8_t { Circle, Polygon };
 /// A solid disc.
 struct Circle {
     Vec2 center;          ///< m, in the body frame
-    float radius = 0.5f;  ///< m, > 0
+    float radius = 0.5f;  ///< m, in [kLinearSlop, kMaxCoordinate]
 };
 
 /// A solid convex polygon of 3 to kMaxPolygonVertices vertices in the body frame, in either
-/// winding. World::createShape checks it (convex, no repeated or collinear vertices, non-zero
-/// area) and stores it counter-clockwise.
+/// winding. World::createShape checks it (convex, edges at least kLinearSlop long, no
+/// collinear vertices, coordinates within kMaxCoordinate) and stores it counter-clockwise.
 struct Polygon {
     std::array<Vec2, kMaxPolygonVertices> vertices{};
     int count = 0;
 
-    /// An axis-aligned box of the given half extents (m, > 0), centred on the body origin.
-    /// Non-positive or non-finite arguments throw pivot::Error.
+    /// An axis-aligned box of the given half extents (m, in (0, kMaxCoordinate]), centred on the
+    /// body origin. Other arguments throw pivot::Error.
     static Polygon box(float halfWidth, float halfHeight);
     /// A box of the given half extents, centred at `center` and turned by `angle` (rad).
     static Polygon box(float halfWidth, float halfHeight, Vec2 center, float angle);
@@ -47,8 +47,10 @@ struct Filter {
 
 /// Everything a shape needs besides its geometry.
 struct ShapeDef {
-    float density = 1.0f;  ///< kg/m^2, >= 0; a dynamic body needs some shape with density > 0
-    /// Coulomb coefficient, >= 0. A contact uses sqrt(frictionA * frictionB).
+    /// kg/m^2: 0, or in [kMinDensity, kMaxDensity]. Every shape of a dynamic body has a density
+    /// > 0 (createShape, setShapeDensity and setBodyType refuse to break that).
+    float density = 1.0f;
+    /// Coulomb coefficient, in [0, kMaxMagnitude]. A contact uses sqrt(frictionA * frictionB).
     float friction = 0.6f;
     /// Bounce, in [0, 1]. A contact uses max(restitutionA, restitutionB), and bounces only when
     /// it closes faster than WorldDef::restitutionThreshold.
@@ -57,9 +59,11 @@ struct ShapeDef {
     std::uint64_t userData = 0;
 };
 
-/// Mass properties of a circle of the given density (kg/m^2).
+/// Mass properties of a circle of the given density (kg/m^2). A circle or density that
+/// World::createShape would refuse throws pivot::Error.
 MassData computeMass(const Circle& circle, float density);
-/// Mass properties of a convex polygon (either winding) of the given density (kg/m^2).
+/// Mass properties of a convex polygon (either winding) of the given density (kg/m^2). A
+/// polygon or density that World::createShape would refuse throws pivot::Error.
 MassData computeMass(const Polygon& polygon, float density);
 
 }  // namespace pivot

@@ -1,7 +1,10 @@
 // The World: owns bodies, shapes and joints, and advances them with World::step.
 //
 // Every call that takes an id or a def checks it first; bad input throws pivot::Error (see
-// error.h) naming the field and value, and leaves the world unchanged.
+// error.h) naming the field and value, and leaves the world unchanged. Bad input is a null,
+// stale or foreign id, an enum value out of range, a degenerate polygon, or a number that is
+// not finite or outside the input limits of constants.h (kMaxCoordinate for positions and
+// sizes, kMinDensity to kMaxDensity, kMaxMagnitude for everything else).
 #pragma once
 
 #include <cstdint>
@@ -101,7 +104,8 @@ public:
     World& operator=(const World&) = delete;
 
     // --- simulation -------------------------------------------------------------------------
-    /// Advance by dt seconds (> 0, finite) with the given iteration counts (>= 0).
+    /// Advance by dt seconds, in (0, kMaxTimeStep], with the given iteration counts, in
+    /// [0, kMaxIterations].
     void step(float dt, int velocityIterations = kDefaultVelocityIterations,
               int positionIterations = kDefaultPositionIterations);
     const StepStats& lastStepStats() const;
@@ -118,7 +122,8 @@ public:
 
     // --- bodies -----------------------------------------------------------------------------
     BodyId createBody(const BodyDef& def);
-    /// Destroys the body, its shapes and every joint attached to it.
+    /// Destroys the body, its shapes, its contacts, every joint attached to it and its mouse
+    /// joints, and wakes every body it touched or was jointed to.
     void destroyBody(BodyId id);
     bool isValid(BodyId id) const;
     int bodyCount() const;
@@ -128,6 +133,21 @@ public:
     std::vector<ShapeId> bodyShapes(BodyId id) const;
 
     BodyType bodyType(BodyId id) const;
+    /// Changes the body's type between steps. Mass, centre of mass and inertia are recomputed
+    /// from its shapes (as createBody and createShape do); pending forces are dropped; a body
+    /// made static stops (its velocities become zero), one made kinematic keeps the velocity of
+    /// its origin. The body and everything touching it or jointed to it are woken. Contacts
+    /// that can no longer collide (static-static, kinematic-static, kinematic-kinematic) are
+    /// dropped at the next step's contact update, with an end event if they touched; pairs that
+    /// may now collide are found at the next step. Joints stay as they are (a joint between two
+    /// non-dynamic bodies holds nothing). A mouse joint on a body that stops being dynamic stays
+    /// but pulls nothing until the body is dynamic again.
+    ///
+    /// Making a body dynamic needs every one of its shapes to have density > 0, the rule
+    /// createShape enforces; a body with a zero-density shape is refused (pivot::Error, nothing
+    /// changed): give the shape a density with setShapeDensity first. A dynamic body without
+    /// shapes moves as a 1 kg point mass, as one made by createBody does.
+    void setBodyType(BodyId id, BodyType type);
     Vec2 bodyPosition(BodyId id) const;  ///< m, world position of the body origin
     float bodyAngle(BodyId id) const;    ///< rad
     Transform bodyTransform(BodyId id) const;
@@ -170,6 +190,12 @@ public:
     int shapeCount() const;
     BodyId shapeBody(ShapeId id) const;
     Filter shapeFilter(ShapeId id) const;
+    float shapeDensity(ShapeId id) const;  ///< kg/m^2
+    /// Changes the shape's density (0, or in [kMinDensity, kMaxDensity]) and recomputes its
+    /// body's mass, centre of mass and inertia, keeping the body's motion; wakes the body. A
+    /// shape on a dynamic body needs density > 0. Static and kinematic bodies keep the density
+    /// for when they become dynamic.
+    void setShapeDensity(ShapeId id, float density);
     ShapeType shapeType(ShapeId id) const;
     /// The shape's geometry in its body's frame. Asking a polygon for its circle (or the other
     /// way round) throws pivot::Error. Polygons come back counter-clockwise.
@@ -179,11 +205,16 @@ public:
     void setShapeFilter(ShapeId id, const Filter& filter);
 
     // --- contacts ---------------------------------------------------------------------------
+    // Every list the API returns (contacts, events, bodyIds, jointIds, bodyShapes) is a copy,
+    // so destroying bodies, shapes or joints while iterating one is safe; the ids in it may go
+    // stale meanwhile (check with isValid). No call ever runs user code during a step.
     /// Every touching contact, measured at the current poses.
     std::vector<ContactData> contacts() const;
-    /// Contacts that started / stopped touching during the last step.
-    const std::vector<ContactEvent>& contactBeginEvents() const;
-    const std::vector<ContactEvent>& contactEndEvents() const;
+    /// Contacts that started / stopped touching during the last step. Destroying a shape (or
+    /// its body) that touched another adds its end event at once, until the next step clears
+    /// the list: the event's shape ids are then already stale.
+    std::vector<ContactEvent> contactBeginEvents() const;
+    std::vector<ContactEvent> contactEndEvents() const;
 
     // --- joints -----------------------------------------------------------------------------
     JointId createJoint(const RevoluteJointDef& def);

@@ -149,3 +149,23 @@ TEST(Geometry, ShapesReadBackInTheirBodyFrame) {
     EXPECT_EQ(world.bodyIds().size(), 1u);
     EXPECT_TRUE(world.jointIds().empty());
 }
+
+// Far from the body origin, shifting the second moment about the origin to the centre of mass
+// subtracts two nearly equal huge numbers; the body must still get its shape's own inertia.
+TEST(Mass, AShapeFarFromTheBodyOriginKeepsItsInertia) {
+    World world;
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    BodyId body = world.createBody(def);
+    world.createShape(body, ShapeDef{}, Circle{{kMaxCoordinate, -0.9f}, 1.0f});
+    float mass = kPi;
+    EXPECT_FLOAT_EQ(world.bodyMass(body), mass);
+    EXPECT_NEAR(world.bodyRotationalInertia(body), 0.5f * mass, 1e-3f * mass);
+    world.createShape(body, ShapeDef{},
+                      Polygon::box(1.0f, 1.0f, {kMaxCoordinate - 2.0f, 2.0f}, 0.3f));
+    EXPECT_GT(world.bodyRotationalInertia(body), 0.5f * mass);
+    world.setBodyAngularVelocity(body, 1.0f);
+    for (int i = 0; i < 60; ++i) world.step(1.0f / 60.0f);
+    EXPECT_TRUE(isFinite(world.bodyPosition(body)));
+    EXPECT_NEAR(world.bodyAngularVelocity(body), 1.0f, 1e-3f);
+}

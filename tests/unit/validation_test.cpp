@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -202,7 +203,18 @@ TEST(Validation, CircleAndShapeDefFields) {
                    [&] {
                        f.world.createShape(f.body, def, Circle{{0, 0}, 0.0f});
                    },
-                   {"circle.radius", "> 0", "0"});
+                   {"circle.radius", ">= kLinearSlop", "0.005", "got 0"});
+    // Smaller than the slop: the lightest such circle's inverse mass would overflow.
+    expectRejected(f.world,
+                   [&] {
+                       f.world.createShape(f.body, def, Circle{{0, 0}, 1e-20f});
+                   },
+                   {"circle.radius", "1e-20"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.createShape(f.body, def, Circle{{0, 0}, 2e5f});
+                   },
+                   {"circle.radius", "kMaxCoordinate", "2e+05"});
     expectRejected(f.world,
                    [&] {
                        f.world.createShape(f.body, def, Circle{{0, 0}, kNaN});
@@ -217,9 +229,215 @@ TEST(Validation, CircleAndShapeDefFields) {
     bad.friction = -0.1f;
     expectRejected(f.world, [&] { f.world.createShape(f.body, bad, Circle{}); }, {"def.friction"});
     bad = def;
+    bad.friction = 1e20f;
+    expectRejected(f.world, [&] { f.world.createShape(f.body, bad, Circle{}); },
+                   {"def.friction", "kMaxMagnitude", "1e+20"});
+    bad = def;
     bad.restitution = 1.5f;
     expectRejected(f.world, [&] { f.world.createShape(f.body, bad, Circle{}); },
                    {"def.restitution", "1.5"});
+    bad = def;
+    bad.restitution = kNaN;
+    expectRejected(f.world, [&] { f.world.createShape(f.body, bad, Circle{}); },
+                   {"def.restitution", "nan"});
+}
+
+TEST(Validation, DensityOutsideItsRange) {
+    Fixture f;
+    ShapeDef def;
+    // The range applies on every body type: the shape keeps its density if its body changes
+    // type later.
+    for (BodyId body : {f.ground, f.body}) {
+        def.density = 1e-30f;
+        expectRejected(f.world, [&] { f.world.createShape(body, def, Circle{}); },
+                       {"def.density", "kMinDensity", "1e-30"});
+        def.density = std::numeric_limits<float>::denorm_min();
+        expectRejected(f.world, [&] { f.world.createShape(body, def, Circle{}); }, {"def.density"});
+        def.density = 2e6f;
+        expectRejected(f.world, [&] { f.world.createShape(body, def, Circle{}); },
+                       {"def.density", "kMaxDensity", "2e+06"});
+        def.density = kInf;
+        expectRejected(f.world, [&] { f.world.createShape(body, def, Circle{}); },
+                       {"def.density", "inf"});
+    }
+    def.density = kMinDensity;
+    EXPECT_NO_THROW(f.world.createShape(f.body, def, Circle{}));
+    def.density = kMaxDensity;
+    EXPECT_NO_THROW(f.world.createShape(f.body, def, Circle{}));
+    for (int i = 0; i < 10; ++i) f.world.step(1.0f / 60.0f);
+    EXPECT_TRUE(std::isfinite(f.world.bodyPosition(f.body).x));
+}
+
+TEST(Validation, NumbersBeyondTheInputLimits) {
+    Fixture f;
+    const float huge = 1e20f;
+    const float tooFar = 2.0f * kMaxCoordinate;
+    const float tooBig = 2.0f * kMaxMagnitude;
+    auto dynamicWith = [](auto mutate) {
+        BodyDef def = dynamicDef();
+        mutate(def);
+        return def;
+    };
+    expectRejected(
+        f.world,
+        [&] {
+            f.world.createBody(dynamicWith([&](BodyDef& d) { d.position = {tooFar, 0}; }));
+        },
+        {"createBody", "def.position", "kMaxCoordinate", "2e+05"});
+    expectRejected(f.world,
+                   [&] { f.world.createBody(dynamicWith([&](BodyDef& d) { d.angle = tooBig; })); },
+                   {"def.angle", "kMaxMagnitude", "2e+10"});
+    expectRejected(
+        f.world,
+        [&] {
+            f.world.createBody(dynamicWith([&](BodyDef& d) { d.linearVelocity = {0, -huge}; }));
+        },
+        {"def.linearVelocity", "-1e+20"});
+    expectRejected(
+        f.world,
+        [&] { f.world.createBody(dynamicWith([&](BodyDef& d) { d.angularVelocity = huge; })); },
+        {"def.angularVelocity"});
+    expectRejected(
+        f.world,
+        [&] { f.world.createBody(dynamicWith([&](BodyDef& d) { d.angularDamping = huge; })); },
+        {"def.angularDamping"});
+    expectRejected(
+        f.world,
+        [&] { f.world.createBody(dynamicWith([&](BodyDef& d) { d.gravityScale = -huge; })); },
+        {"def.gravityScale"});
+
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setBodyTransform(f.body, {0, tooFar}, 0);
+                   },
+                   {"setBodyTransform", "position"});
+    expectRejected(f.world, [&] { f.world.setBodyTransform(f.body, {0, 0}, huge); }, {"angle"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setBodyLinearVelocity(f.body, {huge, 0});
+                   },
+                   {"velocity"});
+    expectRejected(f.world, [&] { f.world.setBodyAngularVelocity(f.body, -huge); }, {"omega"});
+    expectRejected(f.world, [&] { f.world.applyForce(f.body, {huge, 0}, {0, 0}); }, {"force"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.applyForce(f.body, {1, 0}, {tooFar, 0});
+                   },
+                   {"worldPoint"});
+    expectRejected(f.world, [&] { f.world.applyForceToCenter(f.body, {0, huge}); }, {"force"});
+    expectRejected(f.world, [&] { f.world.applyTorque(f.body, huge); }, {"torque"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.applyLinearImpulse(f.body, {huge, 0}, {0, 0});
+                   },
+                   {"impulse"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.applyLinearImpulse(f.body, {1, 0}, {0, -tooFar});
+                   },
+                   {"worldPoint"});
+    expectRejected(f.world, [&] { f.world.applyAngularImpulse(f.body, huge); }, {"impulse"});
+    expectRejected(f.world, [&] { f.world.bodyWorldPoint(f.body, {tooFar, 0}); }, {"localPoint"});
+    expectRejected(f.world, [&] { f.world.bodyLocalPoint(f.body, {tooFar, 0}); }, {"worldPoint"});
+    expectRejected(f.world, [&] { f.world.setGravity({0, -huge}); }, {"gravity"});
+
+    expectRejected(f.world,
+                   [&] {
+                       f.world.createShape(f.body, ShapeDef{}, Circle{{tooFar, 0}});
+                   },
+                   {"circle.center", "kMaxCoordinate"});
+    Polygon far = Polygon::box(1, 1);
+    far.vertices[2].x = tooFar;
+    expectRejected(f.world, [&] { f.world.createShape(f.body, ShapeDef{}, far); },
+                   {"polygon.vertices[2]", "kMaxCoordinate"});
+    expectRejected(f.world, [&] { Polygon::box(tooFar, 1); }, {"halfWidth", "kMaxCoordinate"});
+    expectRejected(f.world, [&] { Polygon::box(1, 1, {0, tooFar}, 0); }, {"center"});
+    expectRejected(f.world, [&] { Polygon::box(1, 1, {0, 0}, huge); }, {"angle"});
+
+    RevoluteJointDef def = RevoluteJointDef::atWorldAnchor(f.body, f.other, {1.5f, 0});
+    RevoluteJointDef bad = def;
+    bad.worldAnchor = Vec2{tooFar, 0};
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.worldAnchor"});
+    bad = def;
+    bad.worldAnchor.reset();
+    bad.localAnchorA = {0, -tooFar};
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.localAnchorA"});
+    bad = def;
+    bad.referenceAngle = huge;
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.referenceAngle"});
+    bad = def;
+    bad.limit = {true, -huge, 0.0f};
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.limit.lower"});
+    bad = def;
+    bad.motor = {true, huge, 1.0f};
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.motor.speed"});
+    bad = def;
+    bad.motor = {true, 1.0f, huge};
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.motor.maxTorque"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setJointLimit(f.joint, {true, 0.0f, huge});
+                   },
+                   {"limit.upper"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setJointMotor(f.joint, {true, -huge, 1.0f});
+                   },
+                   {"motor.speed"});
+
+    MouseJointDef mouse;
+    mouse.body = f.body;
+    mouse.target = {1, 0};
+    MouseJointDef badMouse = mouse;
+    badMouse.target = {tooFar, 0};
+    expectRejected(f.world, [&] { f.world.createMouseJoint(badMouse); }, {"def.target"});
+    badMouse = mouse;
+    badMouse.maxForce = huge;
+    expectRejected(f.world, [&] { f.world.createMouseJoint(badMouse); }, {"def.maxForce"});
+    badMouse = mouse;
+    badMouse.hertz = huge;
+    expectRejected(f.world, [&] { f.world.createMouseJoint(badMouse); }, {"def.hertz"});
+    badMouse = mouse;
+    badMouse.dampingRatio = huge;
+    expectRejected(f.world, [&] { f.world.createMouseJoint(badMouse); }, {"def.dampingRatio"});
+    MouseJointId hand = f.world.createMouseJoint(mouse);
+    expectRejected(f.world, [&] { f.world.setMouseTarget(hand, {0, tooFar}); }, {"target"});
+
+    expectRejected(f.world, [&] { f.world.step(2.0f); }, {"dt", "kMaxTimeStep", "got 2"});
+    WorldDef worldDef;
+    worldDef.gravity = {huge, 0};
+    EXPECT_THROW(World{worldDef}, Error);
+    worldDef = WorldDef{};
+    worldDef.restitutionThreshold = huge;
+    EXPECT_THROW(World{worldDef}, Error);
+
+    // Right at the limits is accepted.
+    BodyDef edge = dynamicDef();
+    edge.position = {kMaxCoordinate, -kMaxCoordinate};
+    edge.angularVelocity = kMaxMagnitude;
+    EXPECT_NO_THROW(f.world.createBody(edge));
+    EXPECT_NO_THROW(f.world.step(kMaxTimeStep));
+}
+
+TEST(Validation, ComputeMassChecksItsInput) {
+    Polygon tooMany = Polygon::box(1, 1);
+    tooMany.count = kMaxPolygonVertices + 1;
+    EXPECT_THROW(computeMass(tooMany, 1.0f), Error);
+    Polygon negative = Polygon::box(1, 1);
+    negative.count = -1;
+    EXPECT_THROW(computeMass(negative, 1.0f), Error);
+    EXPECT_THROW(computeMass(Polygon::fromPoints({{0, 0}, {1, 1}, {2, 2}}), 1.0f), Error);
+    EXPECT_THROW(computeMass(Polygon::box(1, 1), kNaN), Error);
+    EXPECT_THROW(computeMass(Polygon::box(1, 1), -1.0f), Error);
+    EXPECT_THROW(computeMass(Circle{{0, 0}, 0.0f}, 1.0f), Error);
+    EXPECT_THROW(computeMass(Circle{{kNaN, 0}, 1.0f}, 1.0f), Error);
+    try {
+        computeMass(tooMany, 1.0f);
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("computeMass: polygon.count"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_FLOAT_EQ(computeMass(Polygon::box(1, 2), 3.0f).mass, 24.0f);
 }
 
 TEST(Validation, ZeroOrNegativeDensityOnADynamicBody) {
@@ -343,8 +561,136 @@ TEST(Validation, UnknownNullAndForeignIds) {
             f.world.createJoint(RevoluteJointDef::atWorldAnchor(f.ground, elsewhere.body, {0, 0}));
         },
         {"def.bodyB", "another world"});
+    expectRejected(f.world, [&] { f.world.destroyJoint(elsewhere.joint); },
+                   {"destroyJoint", "another world"});
+    expectRejected(f.world, [&] { f.world.setJointMotor(elsewhere.joint, JointMotor{}); },
+                   {"another world"});
+    MouseJointDef mouse;
+    mouse.body = elsewhere.body;
+    MouseJointId foreignHand = elsewhere.world.createMouseJoint(mouse);
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setMouseTarget(foreignHand, {0, 0});
+                   },
+                   {"mouse joint", "another world"});
+    expectRejected(f.world, [&] { f.world.destroyMouseJoint(MouseJointId{}); },
+                   {"mouse joint", "null"});
+    mouse.body = elsewhere.body;
+    expectRejected(f.world, [&] { f.world.createMouseJoint(mouse); },
+                   {"def.body", "another world"});
     EXPECT_FALSE(f.world.isValid(elsewhere.body));
+    EXPECT_FALSE(f.world.isValid(elsewhere.shape));
+    EXPECT_FALSE(f.world.isValid(elsewhere.joint));
+    EXPECT_FALSE(f.world.isValid(foreignHand));
     EXPECT_FALSE(f.world.isValid(BodyId{}));
+    EXPECT_FALSE(f.world.isValid(MouseJointId{}));
+}
+
+// Every call that takes an id refuses a stale one, with the world unchanged. Listing them all
+// here keeps a new call from slipping through without its check.
+TEST(Validation, EveryCallChecksItsIds) {
+    Fixture f;
+    BodyId body = f.world.createBody(dynamicDef());
+    ShapeId shape = f.world.createShape(body, ShapeDef{}, Circle{});
+    JointId joint = f.world.createJoint(RevoluteJointDef::atWorldAnchor(f.ground, body, {0, 0}));
+    MouseJointDef mouseDef;
+    mouseDef.body = body;
+    MouseJointId mouse = f.world.createMouseJoint(mouseDef);
+    f.world.destroyBody(body);
+    EXPECT_FALSE(f.world.isValid(mouse));
+    f.world.step(1.0f / 60.0f);
+
+    std::vector<std::function<void()>> bodyCalls = {
+        [&] { f.world.destroyBody(body); },
+        [&] { f.world.bodyShapes(body); },
+        [&] { f.world.bodyType(body); },
+        [&] { f.world.setBodyType(body, BodyType::Static); },
+        [&] { f.world.bodyPosition(body); },
+        [&] { f.world.bodyAngle(body); },
+        [&] { f.world.bodyTransform(body); },
+        [&] { f.world.bodyWorldCenter(body); },
+        [&] { f.world.bodyLocalCenter(body); },
+        [&] { f.world.bodyLinearVelocity(body); },
+        [&] { f.world.bodyAngularVelocity(body); },
+        [&] { f.world.bodyMass(body); },
+        [&] { f.world.bodyRotationalInertia(body); },
+        [&] {
+            f.world.bodyWorldPoint(body, {0, 0});
+        },
+        [&] {
+            f.world.bodyLocalPoint(body, {0, 0});
+        },
+        [&] { f.world.isBodyAwake(body); },
+        [&] { f.world.setBodyAwake(body, true); },
+        [&] { f.world.setBodySleepAllowed(body, true); },
+        [&] {
+            f.world.setBodyTransform(body, {0, 0}, 0);
+        },
+        [&] {
+            f.world.setBodyLinearVelocity(body, {0, 0});
+        },
+        [&] { f.world.setBodyAngularVelocity(body, 0); },
+        [&] {
+            f.world.applyForce(body, {0, 0}, {0, 0});
+        },
+        [&] {
+            f.world.applyForceToCenter(body, {0, 0});
+        },
+        [&] { f.world.applyTorque(body, 0); },
+        [&] {
+            f.world.applyLinearImpulse(body, {0, 0}, {0, 0});
+        },
+        [&] { f.world.applyAngularImpulse(body, 0); },
+        [&] { f.world.createShape(body, ShapeDef{}, Circle{}); },
+        [&] { f.world.createShape(body, ShapeDef{}, Polygon::box(1, 1)); },
+        [&] {
+            f.world.createJoint(RevoluteJointDef::atWorldAnchor(body, f.ground, {0, 0}));
+        },
+        [&] { f.world.createMouseJoint(mouseDef); },
+    };
+    for (const auto& call : bodyCalls) expectRejected(f.world, call, {"body", "stale"});
+    std::vector<std::function<void()>> shapeCalls = {
+        [&] { f.world.destroyShape(shape); },
+        [&] { f.world.shapeBody(shape); },
+        [&] { f.world.shapeFilter(shape); },
+        [&] { f.world.shapeType(shape); },
+        [&] { f.world.shapeCircle(shape); },
+        [&] { f.world.shapePolygon(shape); },
+        [&] { f.world.setShapeFilter(shape, Filter{}); },
+        [&] { f.world.shapeDensity(shape); },
+        [&] { f.world.setShapeDensity(shape, 1.0f); },
+    };
+    for (const auto& call : shapeCalls) expectRejected(f.world, call, {"shape", "stale"});
+    std::vector<std::function<void()>> jointCalls = {
+        [&] { f.world.destroyJoint(joint); },
+        [&] { f.world.jointBodyA(joint); },
+        [&] { f.world.jointBodyB(joint); },
+        [&] { f.world.jointAnchorA(joint); },
+        [&] { f.world.jointAnchorB(joint); },
+        [&] { f.world.jointSeparation(joint); },
+        [&] { f.world.jointAngle(joint); },
+        [&] { f.world.jointSpeed(joint); },
+        [&] { f.world.jointReactionForce(joint); },
+        [&] { f.world.jointReactionTorque(joint); },
+        [&] { f.world.jointMotorTorque(joint); },
+        [&] { f.world.jointLimit(joint); },
+        [&] { f.world.setJointLimit(joint, JointLimit{}); },
+        [&] { f.world.jointMotor(joint); },
+        [&] { f.world.setJointMotor(joint, JointMotor{}); },
+        [&] { f.world.jointPositionSolver(joint); },
+        [&] { f.world.setJointPositionSolver(joint, PositionSolver::FullNGS); },
+        [&] { f.world.jointBiasFactor(joint); },
+        [&] { f.world.setJointBiasFactor(joint, std::nullopt); },
+    };
+    for (const auto& call : jointCalls) expectRejected(f.world, call, {"joint", "stale"});
+    std::vector<std::function<void()>> mouseCalls = {
+        [&] { f.world.destroyMouseJoint(mouse); },
+        [&] {
+            f.world.setMouseTarget(mouse, {0, 0});
+        },
+        [&] { f.world.mouseTarget(mouse); },
+    };
+    for (const auto& call : mouseCalls) expectRejected(f.world, call, {"mouse joint", "stale"});
 }
 
 TEST(Validation, StepArguments) {

@@ -1,0 +1,1342 @@
+#include "fuzz_driver.h"
+
+#include "journal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <functional>
+#include <optional>
+#include <string>
+#include <typeinfo>
+#include <utility>
+
+namespace pivot::fuzz {
+
+namespace {
+
+// Sizes the driver keeps a world within: large enough for stacks, chains and islands that
+// sleep and wake, small enough that hashing the world before every call stays cheap.
+constexpr int kMaxBodies = 40;
+constexpr int kMaxShapesPerBody = 4;
+constexpr int kMaxJoints = 48;
+constexpr int kMaxMouseJoints = 4;
+constexpr std::size_t kRememberedIds = 64;  // per kind, for stale ids
+
+// Whether the API must accept a call: Bad must throw, Valid must return, Unknown either (a
+// random polygon, say, that the driver does not judge itself).
+enum class Verdict { Valid, Bad, Unknown };
+
+Verdict verdict(bool bad) {
+    return bad ? Verdict::Bad : Verdict::Valid;
+}
+
+struct Snapshot {
+    std::uint64_t hash = 0;
+    int bodies = 0, shapes = 0, joints = 0;
+    bool operator==(const Snapshot& o) const {
+        return hash == o.hash && bodies == o.bodies && shapes == o.shapes && joints == o.joints;
+    }
+};
+
+template <typename Id>
+std::string idText(Id id) {
+    return "{" + std::to_string(id.index) + "," + std::to_string(id.generation) + "," +
+           std::to_string(id.world) + "}";
+}
+
+std::string text(float v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(v));
+    return buffer;
+}
+std::string text(Vec2 v) {
+    return "(" + text(v.x) + "," + text(v.y) + ")";
+}
+
+/// A remembered set of ids of one kind, for picking stale ones: the oldest is overwritten.
+template <typename Id>
+struct IdMemory {
+    std::vector<Id> ids;
+    std::size_t next = 0;
+    void remember(Id id) {
+        if (ids.size() < kRememberedIds) {
+            ids.push_back(id);
+        } else {
+            ids[next] = id;
+            next = (next + 1) % kRememberedIds;
+        }
+    }
+    void clear() {
+        ids.clear();
+        next = 0;
+    }
+};
+
+class Driver {
+public:
+    explicit Driver(const Options& options) : options_(options), random_(options.seed) {}
+
+    Report run() {
+        newWorld();
+        long worldEnd = operation_ + random_.between(500, 20000);
+        for (operation_ = 0; operation_ < options_.operations; ++operation_) {
+            if (operation_ >= worldEnd) {
+                newWorld();
+                worldEnd = operation_ + random_.between(500, 20000);
+            }
+            if (nonFinite_ && worldEnd > nonFiniteSeen_ + 200) worldEnd = nonFiniteSeen_ + 200;
+            hostile_ = random_.chance(0.3f) ? 0.25f : 0.0f;
+            Values values(random_, hostile_, options_.extremes);
+            values_ = &values;
+            if (operation_ == options_.dumpBefore) dump();
+            pickOperation();
+            ++report_.operations;
+            if (options_.checkEveryOperation) checkInvariants("any operation");
+            if (!report_.failures.empty() && options_.stopAtFirstFailure) break;
+        }
+        if (report_.failures.empty() || !options_.stopAtFirstFailure) checkInvariants("the end");
+        return report_;
+    }
+
+private:
+    // --- bookkeeping --------------------------------------------------------------------------
+
+    void failure(const std::string& what) {
+        report_.failures.push_back("operation " + std::to_string(operation_) + ": " + what);
+        writeJournal();
+        if (options_.trace) std::printf("FAILURE: %s\n", report_.failures.back().c_str());
+    }
+
+    // A non-finite number in a world made only of accepted input: a failure if the options ask
+    // for it, otherwise counted once per world.
+    void nonFinite(const std::string& what) {
+        if (options_.requireFinite) {
+            failure(what);
+            return;
+        }
+        if (nonFinite_) return;
+        nonFinite_ = true;
+        nonFiniteSeen_ = operation_;
+        report_.nonFiniteWorlds.push_back(operation_);
+        writeJournal();
+        trace("NON-FINITE: " + what);
+    }
+
+    // The calls that built the current world, for replaying and reducing what just happened.
+    void writeJournal() {
+        if (options_.journalPrefix.empty()) return;
+        std::string path = options_.journalPrefix + "-" + std::to_string(options_.seed) + "-" +
+                           std::to_string(operation_) + ".journal";
+        if (journal_.write(path)) report_.journals.push_back(path);
+    }
+
+    void trace(const std::string& line) {
+        if (options_.trace) std::printf("%ld %s\n", operation_, line.c_str());
+    }
+
+    Snapshot snapshot() const {
+        return {world_->stateHash(), world_->bodyCount(), world_->shapeCount(),
+                world_->jointCount()};
+    }
+
+    /// Makes the call and checks the outcome against the verdict. Returns whether it returned.
+    template <typename Call>
+    bool attempt(const std::string& name, Verdict expected, Call&& call) {
+        OperationCount& count = report_.byOperation[name];
+        Snapshot before = snapshot();
+        try {
+            call();
+        } catch (const Error& e) {
+            ++count.rejected;
+            ++report_.rejected;
+            std::string message = e.what();
+            trace("  -> Error: " + message);
+            if (!(snapshot() == before)) {
+                failure(name + " threw \"" + message + "\" but changed the world");
+            }
+            if (message.compare(0, name.size() + 1, name + ":") != 0) {
+                failure(name + " threw a message that does not name the call: \"" + message + "\"");
+            }
+            if (expected == Verdict::Valid) {
+                failure(name + " refused a valid call: \"" + message + "\"");
+            }
+            return false;
+        } catch (const std::exception& e) {
+            failure(name + " threw " + typeid(e).name() + " (not pivot::Error): " + e.what());
+            return false;
+        } catch (...) {
+            failure(name + " threw something that is not a std::exception");
+            return false;
+        }
+        ++count.accepted;
+        ++report_.accepted;
+        if (expected == Verdict::Bad) failure(name + " accepted an argument it must refuse");
+        return true;
+    }
+
+    void newWorld() {
+        ++report_.worlds;
+        nonFinite_ = false;
+        bodies_.clear();
+        shapes_.clear();
+        joints_.clear();
+        mice_.clear();
+        liveMice_.clear();
+        tag_ = 0;
+        // A WorldDef now and then has a bad field: the constructor must refuse it.
+        Values values(random_, random_.chance(0.2f) ? 0.3f : 0.0f, options_.extremes);
+        WorldDef def;
+        Arg<Vec2> gravity =
+            random_.chance(0.8f) ? Arg<Vec2>{{0.0f, -10.0f}} : values.magnitude2(20);
+        def.gravity = gravity.value;
+        bool bad = gravity.bad;
+        if (random_.chance(0.05f)) {
+            def.defaultPositionSolver = static_cast<PositionSolver>(random_.between(4, 255));
+            bad = true;
+        } else {
+            def.defaultPositionSolver = static_cast<PositionSolver>(random_.below(4));
+        }
+        if (random_.chance(0.05f)) {
+            def.contactCorrection = static_cast<ContactCorrection>(random_.between(2, 255));
+            bad = true;
+        } else {
+            def.contactCorrection = static_cast<ContactCorrection>(random_.below(2));
+        }
+        Arg<float> bias =
+            random_.chance(0.7f) ? Arg<float>{kDefaultContactBias} : values.fraction();
+        def.contactBiasFactor = bias.value;
+        Arg<float> threshold =
+            random_.chance(0.7f) ? Arg<float>{kRestitutionThreshold} : values.nonNegative(5);
+        def.restitutionThreshold = threshold.value;
+        def.warmStarting = random_.chance(0.9f);
+        def.enableSleep = random_.chance(0.8f);
+        bad = bad || bias.bad || threshold.bad;
+        trace("new World gravity=" + text(def.gravity) + " bad=" + std::to_string(bad));
+        world_.reset();
+        try {
+            world_ = std::make_unique<World>(def);
+            if (bad) failure("World::World accepted a bad WorldDef");
+        } catch (const Error& e) {
+            if (!bad) failure(std::string("World::World refused a valid WorldDef: ") + e.what());
+            def = WorldDef{};
+            world_ = std::make_unique<World>(def);
+        }
+        journal_.begin(*world_, def);
+        if (random_.chance(0.7f)) {
+            // Most worlds have ground for things to land, stack and slide on; without it,
+            // bodies fall away and meet nothing.
+            BodyDef ground;
+            ground.position = {0.0f, -12.0f};
+            BodyId id = journal_.createBody(ground);
+            noteTag(id);
+            journal_.createShape(id, ShapeDef{}, Polygon::box(30.0f, 1.0f));
+        }
+        // Another world, whose ids this one must refuse.
+        other_ = std::make_unique<World>(WorldDef{});
+        BodyDef bd;
+        bd.type = BodyType::Dynamic;
+        otherBody_ = other_->createBody(bd);
+        otherShape_ = other_->createShape(otherBody_, ShapeDef{}, Circle{});
+        otherJoint_ = other_->createJoint(
+            RevoluteJointDef::atWorldAnchor(other_->createBody(BodyDef{}), otherBody_, {0, 0}));
+        MouseJointDef md;
+        md.body = otherBody_;
+        otherMouse_ = other_->createMouseJoint(md);
+    }
+
+    // --- picking ids --------------------------------------------------------------------------
+
+    std::vector<ShapeId> liveShapes() const {
+        std::vector<ShapeId> all;
+        for (BodyId b : world_->bodyIds()) {
+            for (ShapeId s : world_->bodyShapes(b)) all.push_back(s);
+        }
+        return all;
+    }
+
+    /// A live id from `live` most of the time; otherwise (or when there is none) a null,
+    /// foreign, remembered (mostly stale) or made-up one. Bad exactly when the world says the
+    /// id is not valid.
+    template <typename Id>
+    Arg<Id> pick(const std::vector<Id>& live, const IdMemory<Id>& memory, Id foreign) {
+        bool wantBad = live.empty() || random_.chance(hostile_ > 0.0f ? 0.3f : 0.02f);
+        Id id{};
+        if (!wantBad) {
+            id = live[random_.below(static_cast<int>(live.size()))];
+        } else {
+            switch (random_.below(4)) {
+                case 0: id = Id{}; break;
+                case 1: id = foreign; break;
+                case 2:
+                    if (!memory.ids.empty()) {
+                        id = memory.ids[random_.below(static_cast<int>(memory.ids.size()))];
+                        break;
+                    }
+                    [[fallthrough]];
+                default:
+                    id.index = random_.chance(0.8f) ? random_.below(80) : -random_.between(1, 5);
+                    id.generation = static_cast<std::uint32_t>(random_.below(4));
+                    id.world = tag_ != 0 ? tag_ : 12345u;
+                    break;
+            }
+        }
+        return {id, !world_->isValid(id)};
+    }
+
+    Arg<BodyId> pickBody() { return pick(world_->bodyIds(), bodies_, otherBody_); }
+    Arg<ShapeId> pickShape() { return pick(liveShapes(), shapes_, otherShape_); }
+    Arg<JointId> pickJoint() { return pick(world_->jointIds(), joints_, otherJoint_); }
+    Arg<MouseJointId> pickMouse() {
+        std::vector<MouseJointId> live;
+        std::vector<LiveMouse> stillLive;
+        for (const LiveMouse& m : liveMice_) {
+            if (!world_->isValid(m.id)) continue;
+            live.push_back(m.id);
+            stillLive.push_back(m);
+        }
+        liveMice_ = stillLive;
+        return pick(live, mice_, otherMouse_);
+    }
+
+    template <typename Id>
+    void noteTag(Id id) {
+        tag_ = id.world;
+    }
+
+    // --- generated arguments --------------------------------------------------------------------
+
+    Filter filter() {
+        Filter f;
+        f.categoryBits = static_cast<std::uint16_t>(1u << random_.below(4));
+        f.maskBits = random_.chance(0.8f) ? 0xFFFF : static_cast<std::uint16_t>(random_.next());
+        f.groupIndex = static_cast<std::int16_t>(random_.chance(0.8f) ? 0 : random_.between(-2, 2));
+        return f;
+    }
+
+    Arg<ShapeDef> shapeDef(bool zeroDensityAllowed) {
+        ShapeDef def;
+        Arg<float> density = values_->density(zeroDensityAllowed);
+        Arg<float> friction = values_->nonNegative(1.0f);
+        Arg<float> restitution = values_->fraction();
+        def.density = density.value;
+        def.friction = friction.value;
+        def.restitution = restitution.value;
+        def.filter = filter();
+        def.userData = random_.next();
+        return {def, density.bad || friction.bad || restitution.bad};
+    }
+
+    /// A polygon and whether it must be refused; Unknown for random point sets.
+    std::pair<Polygon, Verdict> polygon() {
+        Polygon p;
+        int kind = random_.below(100);
+        if (hostile_ > 0.0f && kind < 35) {
+            // Bad on purpose.
+            p = Polygon::box(1.0f, 0.5f);
+            switch (random_.below(7)) {
+                case 0: {
+                    const int counts[] = {-1, 0, 1, 2, kMaxPolygonVertices + 1, 1000000};
+                    p.count = counts[random_.below(6)];
+                    break;
+                }
+                case 1: p.vertices[2] = p.vertices[1]; break;  // repeated
+                case 2:                                        // a vertex in the middle of an edge
+                    p = Polygon::fromPoints(
+                        {{-1.0f, -0.5f}, {0.0f, -0.5f}, {1.0f, -0.5f}, {0.0f, 0.5f}});
+                    break;
+                case 3: p.vertices[1] = {0.0f, 0.2f}; break;  // dent
+                case 4: p.vertices[random_.below(4)].x = values_->garbage(); break;
+                case 5: p.vertices[3] = {-1.0f, 2.0f * kMaxCoordinate}; break;
+                default:  // all in a line
+                    p = Polygon::fromPoints({{0, 0}, {1, 1}, {2, 2}, {3, 3}});
+                    break;
+            }
+            return {p, Verdict::Bad};
+        }
+        if (kind < 45) {
+            // Random points: convex or not, the driver does not judge.
+            p.count = random_.between(3, kMaxPolygonVertices);
+            for (int i = 0; i < p.count; ++i) {
+                p.vertices[i] = {random_.uniform(-1, 1), random_.uniform(-1, 1)};
+            }
+            return {p, Verdict::Unknown};
+        }
+        // A convex polygon: a regular one stretched, turned and moved, in either winding.
+        p.count = random_.between(3, kMaxPolygonVertices);
+        float radius =
+            values_->edge(0.03f) ? random_.uniform(100.0f, 1000.0f) : random_.uniform(0.1f, 2.0f);
+        float sx = random_.uniform(0.4f, 1.0f), sy = random_.uniform(0.4f, 1.0f);
+        Rot turn(random_.uniform(-kPi, kPi));
+        Vec2 offset{random_.uniform(-2, 2), random_.uniform(-2, 2)};
+        bool clockwise = random_.chance(0.5f);
+        for (int i = 0; i < p.count; ++i) {
+            float a = 2.0f * kPi * float(clockwise ? p.count - i : i) / float(p.count);
+            Vec2 v{radius * sx * std::cos(a), radius * sy * std::sin(a)};
+            p.vertices[i] = offset + rotate(turn, v);
+        }
+        return {p, Verdict::Valid};
+    }
+
+    Arg<JointLimit> limit() {
+        JointLimit l;
+        l.enabled = random_.chance(0.5f);
+        Arg<float> lower = values_->magnitude(2.0f);
+        l.lower = lower.value;
+        l.upper = lower.value + random_.uniform(0.0f, 3.0f);
+        bool bad = lower.bad;
+        if (!bad && hostile_ > 0.0f && random_.chance(0.3f)) {
+            // Upper below lower, by enough to show at any magnitude.
+            l.upper = l.lower - random_.uniform(0.1f, 1.0f) - 0.5f * std::fabs(l.lower);
+            bad = true;
+        }
+        if (!bad && hostile_ > 0.0f && random_.chance(0.2f)) {
+            l.upper = values_->garbage();
+            bad = true;
+        }
+        return {l, bad};
+    }
+
+    Arg<JointMotor> motor() {
+        JointMotor m;
+        m.enabled = random_.chance(0.5f);
+        Arg<float> speed = values_->magnitude(10.0f);
+        Arg<float> torque = values_->nonNegative(200.0f);
+        m.speed = speed.value;
+        m.maxTorque = torque.value;
+        return {m, speed.bad || torque.bad};
+    }
+
+    Arg<PositionSolver> solver() {
+        if (hostile_ > 0.0f && random_.chance(0.2f)) {
+            return {static_cast<PositionSolver>(random_.between(kPositionSolverCount, 255)), true};
+        }
+        return {static_cast<PositionSolver>(random_.below(kPositionSolverCount))};
+    }
+
+    bool hasZeroDensityShape(BodyId body) const {
+        for (ShapeId s : world_->bodyShapes(body)) {
+            if (world_->shapeDensity(s) == 0.0f) return true;
+        }
+        return false;
+    }
+
+    bool isDynamic(const Arg<BodyId>& body) const {
+        return !body.bad && world_->bodyType(body.value) == BodyType::Dynamic;
+    }
+    bool isStatic(const Arg<BodyId>& body) const {
+        return !body.bad && world_->bodyType(body.value) == BodyType::Static;
+    }
+
+    // --- operations -----------------------------------------------------------------------------
+
+    void pickOperation() {
+        using Op = void (Driver::*)();
+        struct Entry {
+            int weight;
+            Op op;
+        };
+        static const Entry kOperations[] = {
+            {10, &Driver::createBody},
+            {6, &Driver::createCircle},
+            {8, &Driver::createPolygon},
+            {7, &Driver::createJoint},
+            {2, &Driver::createMouseJoint},
+            {3, &Driver::destroyBody},
+            {2, &Driver::destroyShape},
+            {2, &Driver::destroyJoint},
+            {1, &Driver::destroyMouseJoint},
+            {6, &Driver::moveBody},
+            {6, &Driver::pushBody},
+            {2, &Driver::sleepCalls},
+            {3, &Driver::setBodyType},
+            {2, &Driver::setShapeDensity},
+            {2, &Driver::setShapeFilter},
+            {5, &Driver::changeJoint},
+            {2, &Driver::moveMouse},
+            {1, &Driver::worldSettings},
+            {16, &Driver::step},
+            {8, &Driver::query},
+            {2, &Driver::freeFunctions},
+            {1, &Driver::destroyWhileIterating},
+        };
+        int total = 0;
+        for (const Entry& e : kOperations) total += e.weight;
+        int r = random_.below(total);
+        for (const Entry& e : kOperations) {
+            if (r < e.weight) {
+                (this->*e.op)();
+                return;
+            }
+            r -= e.weight;
+        }
+    }
+
+    void createBody() {
+        if (world_->bodyCount() >= kMaxBodies) {
+            destroyBody();
+            return;
+        }
+        BodyDef def;
+        bool bad = false;
+        if (hostile_ > 0.0f && random_.chance(0.1f)) {
+            def.type = static_cast<BodyType>(random_.between(3, 255));
+            bad = true;
+        } else {
+            int t = random_.below(20);
+            def.type =
+                t < 12 ? BodyType::Dynamic : (t < 17 ? BodyType::Static : BodyType::Kinematic);
+        }
+        Arg<Vec2> position = values_->coordinate(15.0f);
+        Arg<float> angle = values_->magnitude(4.0f);
+        Arg<Vec2> velocity = values_->magnitude2(5.0f);
+        Arg<float> omega = values_->magnitude(3.0f);
+        Arg<float> linearDamping = values_->nonNegative(1.0f);
+        Arg<float> angularDamping = values_->nonNegative(1.0f);
+        Arg<float> gravityScale = values_->magnitude(2.0f);
+        def.position = position.value;
+        def.angle = angle.value;
+        def.linearVelocity = velocity.value;
+        def.angularVelocity = omega.value;
+        def.linearDamping = linearDamping.value;
+        def.angularDamping = angularDamping.value;
+        def.gravityScale = gravityScale.value;
+        def.fixedRotation = random_.chance(0.1f);
+        def.allowSleep = random_.chance(0.85f);
+        def.isAwake = random_.chance(0.9f);
+        def.userData = random_.next();
+        bad = bad || position.bad || angle.bad || velocity.bad || omega.bad || linearDamping.bad ||
+              angularDamping.bad || gravityScale.bad;
+        if (def.type == BodyType::Static && !bad) {
+            // A static body may not move; now and then it is asked to.
+            if (hostile_ > 0.0f && random_.chance(0.3f) &&
+                (def.linearVelocity != Vec2{} || def.angularVelocity != 0.0f)) {
+                bad = true;
+            } else {
+                def.linearVelocity = Vec2{};
+                def.angularVelocity = 0.0f;
+            }
+        }
+        trace("createBody type=" + std::to_string(int(def.type)) + " p=" + text(def.position) +
+              " v=" + text(def.linearVelocity) + " w=" + text(def.angularVelocity));
+        attempt("World::createBody", verdict(bad), [&] {
+            BodyId id = journal_.createBody(def);
+            noteTag(id);
+            bodies_.remember(id);
+            if (world_->bodyType(id) != def.type) failure("createBody made the wrong type");
+        });
+    }
+
+    template <typename Shape>
+    void createShape(const Shape& geometry, Verdict geometryVerdict, const std::string& what) {
+        Arg<BodyId> body = pickBody();
+        if (!body.bad && world_->bodyShapes(body.value).size() >= kMaxShapesPerBody) {
+            destroyShape();
+            return;
+        }
+        Arg<ShapeDef> def = shapeDef(!isDynamic(body));
+        Verdict v = geometryVerdict;
+        if (body.bad || def.bad) v = Verdict::Bad;
+        trace("createShape(" + what + ") body=" + idText(body.value) +
+              " density=" + text(def.value.density));
+        attempt("World::createShape", v, [&] {
+            ShapeId id = journal_.createShape(body.value, def.value, geometry);
+            noteTag(id);
+            shapes_.remember(id);
+            if (world_->shapeBody(id) != body.value) failure("createShape: wrong body");
+            if (isDynamic(body) && !(world_->bodyMass(body.value) > 0.0f)) {
+                failure("createShape: a dynamic body has mass " +
+                        text(world_->bodyMass(body.value)));
+            }
+        });
+    }
+
+    void createCircle() {
+        Arg<Vec2> center = values_->coordinate(1.0f);
+        Arg<float> radius = values_->radius();
+        createShape(Circle{center.value, radius.value}, verdict(center.bad || radius.bad),
+                    "circle r=" + text(radius.value));
+    }
+
+    void createPolygon() {
+        auto [p, v] = polygon();
+        createShape(p, v, "polygon n=" + std::to_string(p.count));
+    }
+
+    void createJoint() {
+        if (world_->jointCount() >= kMaxJoints) {
+            destroyJoint();
+            return;
+        }
+        Arg<BodyId> a = pickBody();
+        Arg<BodyId> b = random_.chance(0.05f) ? a : pickBody();
+        RevoluteJointDef def;
+        def.bodyA = a.value;
+        def.bodyB = b.value;
+        bool bad = a.bad || b.bad || a.value == b.value;
+        if (random_.chance(0.7f)) {
+            Arg<Vec2> anchor = values_->coordinate(15.0f);
+            def.worldAnchor = anchor.value;
+            bad = bad || anchor.bad;
+        }
+        Arg<Vec2> localA = values_->coordinate(2.0f);
+        Arg<Vec2> localB = values_->coordinate(2.0f);
+        Arg<float> reference = values_->magnitude(3.0f);
+        def.localAnchorA = localA.value;
+        def.localAnchorB = localB.value;
+        def.referenceAngle = reference.value;
+        bad = bad || localA.bad || localB.bad || reference.bad;
+        if (random_.chance(0.7f)) {
+            Arg<PositionSolver> s = solver();
+            def.positionSolver = s.value;
+            bad = bad || s.bad;
+        }
+        if (random_.chance(0.4f)) {
+            Arg<float> bias = values_->fraction();
+            def.biasFactor = bias.value;
+            bad = bad || bias.bad;
+        }
+        Arg<JointLimit> l = limit();
+        Arg<JointMotor> m = motor();
+        def.limit = l.value;
+        def.motor = m.value;
+        def.collideConnected = random_.chance(0.3f);
+        def.userData = random_.next();
+        bad = bad || l.bad || m.bad;
+        trace("createJoint a=" + idText(a.value) + " b=" + idText(b.value) +
+              " solver=" + std::to_string(int(def.positionSolver.value_or(PositionSolver(99)))));
+        attempt("World::createJoint", verdict(bad), [&] {
+            JointId id = journal_.createJoint(def);
+            noteTag(id);
+            joints_.remember(id);
+            if (world_->jointBodyA(id) != a.value || world_->jointBodyB(id) != b.value) {
+                failure("createJoint: wrong bodies");
+            }
+        });
+    }
+
+    void createMouseJoint() {
+        if (liveMice_.size() >= kMaxMouseJoints) {
+            destroyMouseJoint();
+            return;
+        }
+        Arg<BodyId> body = pickBody();
+        MouseJointDef def;
+        def.body = body.value;
+        Arg<Vec2> target = values_->coordinate(15.0f);
+        Arg<float> force = values_->positive(1000.0f);
+        Arg<float> hertz = values_->positive(20.0f);
+        Arg<float> damping = values_->nonNegative(2.0f);
+        def.target = target.value;
+        def.maxForce = force.value;
+        def.hertz = hertz.value;
+        def.dampingRatio = damping.value;
+        bool bad =
+            body.bad || !isDynamic(body) || target.bad || force.bad || hertz.bad || damping.bad;
+        trace("createMouseJoint body=" + idText(body.value) + " target=" + text(def.target) +
+              " force=" + text(def.maxForce) + " hertz=" + text(def.hertz));
+        attempt("World::createMouseJoint", verdict(bad), [&] {
+            MouseJointId id = journal_.createMouseJoint(def);
+            noteTag(id);
+            mice_.remember(id);
+            liveMice_.push_back({id, body.value});
+        });
+    }
+
+    void destroyBody() {
+        Arg<BodyId> body = pickBody();
+        std::vector<ShapeId> shapes;
+        std::vector<JointId> joints;
+        if (!body.bad) {
+            shapes = world_->bodyShapes(body.value);
+            for (JointId j : world_->jointIds()) {
+                if (world_->jointBodyA(j) == body.value || world_->jointBodyB(j) == body.value) {
+                    joints.push_back(j);
+                }
+            }
+        }
+        trace("destroyBody " + idText(body.value));
+        int bodyCount = world_->bodyCount(), shapeCount = world_->shapeCount(),
+            jointCount = world_->jointCount();
+        attempt("World::destroyBody", verdict(body.bad), [&] { journal_.destroyBody(body.value); });
+        if (body.bad) return;
+        // Everything the body held went with it.
+        if (world_->isValid(body.value)) failure("destroyBody: the body is still valid");
+        for (ShapeId s : shapes) {
+            if (world_->isValid(s)) failure("destroyBody: a shape of the body is still valid");
+        }
+        for (JointId j : joints) {
+            if (world_->isValid(j)) failure("destroyBody: a joint of the body is still valid");
+        }
+        for (const LiveMouse& m : liveMice_) {
+            if (m.body == body.value && world_->isValid(m.id)) {
+                failure("destroyBody: a mouse joint of the body is still valid");
+            }
+        }
+        if (world_->bodyCount() != bodyCount - 1 ||
+            world_->shapeCount() != shapeCount - static_cast<int>(shapes.size()) ||
+            world_->jointCount() != jointCount - static_cast<int>(joints.size())) {
+            failure("destroyBody: counts do not add up");
+        }
+    }
+
+    void destroyShape() {
+        Arg<ShapeId> shape = pickShape();
+        trace("destroyShape " + idText(shape.value));
+        BodyId body;
+        if (!shape.bad) body = world_->shapeBody(shape.value);
+        attempt("World::destroyShape", verdict(shape.bad), [&] {
+            journal_.destroyShape(shape.value);
+            if (world_->isValid(shape.value)) failure("destroyShape: the shape is still valid");
+            if (world_->bodyType(body) == BodyType::Dynamic && !(world_->bodyMass(body) > 0.0f)) {
+                failure("destroyShape: a dynamic body lost all its mass");
+            }
+        });
+    }
+
+    void destroyJoint() {
+        Arg<JointId> joint = pickJoint();
+        trace("destroyJoint " + idText(joint.value));
+        attempt("World::destroyJoint", verdict(joint.bad), [&] {
+            journal_.destroyJoint(joint.value);
+            if (world_->isValid(joint.value)) failure("destroyJoint: the joint is still valid");
+        });
+    }
+
+    void destroyMouseJoint() {
+        Arg<MouseJointId> mouse = pickMouse();
+        trace("destroyMouseJoint " + idText(mouse.value));
+        attempt("World::destroyMouseJoint", verdict(mouse.bad),
+                [&] { journal_.destroyMouseJoint(mouse.value); });
+    }
+
+    void moveBody() {
+        Arg<BodyId> body = pickBody();
+        switch (random_.below(3)) {
+            case 0: {
+                Arg<Vec2> p = values_->coordinate(15.0f);
+                Arg<float> a = values_->magnitude(4.0f);
+                trace("setBodyTransform " + idText(body.value) + " " + text(p.value));
+                attempt("World::setBodyTransform", verdict(body.bad || p.bad || a.bad),
+                        [&] { journal_.setBodyTransform(body.value, p.value, a.value); });
+                break;
+            }
+            case 1: {
+                Arg<Vec2> v = values_->magnitude2(10.0f);
+                trace("setBodyLinearVelocity " + idText(body.value) + " " + text(v.value));
+                attempt("World::setBodyLinearVelocity",
+                        verdict(body.bad || isStatic(body) || v.bad),
+                        [&] { journal_.setBodyLinearVelocity(body.value, v.value); });
+                break;
+            }
+            default: {
+                Arg<float> w = values_->magnitude(10.0f);
+                trace("setBodyAngularVelocity " + idText(body.value) + " " + text(w.value));
+                attempt("World::setBodyAngularVelocity",
+                        verdict(body.bad || isStatic(body) || w.bad),
+                        [&] { journal_.setBodyAngularVelocity(body.value, w.value); });
+                break;
+            }
+        }
+    }
+
+    void pushBody() {
+        Arg<BodyId> body = pickBody();
+        Arg<Vec2> point = values_->coordinate(15.0f);
+        switch (random_.below(5)) {
+            case 0: {
+                Arg<Vec2> f = values_->magnitude2(200.0f);
+                trace("applyForce " + idText(body.value) + " " + text(f.value));
+                attempt("World::applyForce", verdict(body.bad || f.bad || point.bad),
+                        [&] { journal_.applyForce(body.value, f.value, point.value); });
+                break;
+            }
+            case 1: {
+                Arg<Vec2> f = values_->magnitude2(200.0f);
+                trace("applyForceToCenter " + idText(body.value) + " " + text(f.value));
+                attempt("World::applyForceToCenter", verdict(body.bad || f.bad),
+                        [&] { journal_.applyForceToCenter(body.value, f.value); });
+                break;
+            }
+            case 2: {
+                Arg<float> t = values_->magnitude(100.0f);
+                trace("applyTorque " + idText(body.value) + " " + text(t.value));
+                attempt("World::applyTorque", verdict(body.bad || t.bad),
+                        [&] { journal_.applyTorque(body.value, t.value); });
+                break;
+            }
+            case 3: {
+                Arg<Vec2> j = values_->magnitude2(10.0f);
+                trace("applyLinearImpulse " + idText(body.value) + " " + text(j.value));
+                attempt("World::applyLinearImpulse", verdict(body.bad || j.bad || point.bad),
+                        [&] { journal_.applyLinearImpulse(body.value, j.value, point.value); });
+                break;
+            }
+            default: {
+                Arg<float> j = values_->magnitude(5.0f);
+                trace("applyAngularImpulse " + idText(body.value) + " " + text(j.value));
+                attempt("World::applyAngularImpulse", verdict(body.bad || j.bad),
+                        [&] { journal_.applyAngularImpulse(body.value, j.value); });
+                break;
+            }
+        }
+    }
+
+    void sleepCalls() {
+        Arg<BodyId> body = pickBody();
+        bool flag = random_.chance(0.5f);
+        if (random_.chance(0.5f)) {
+            trace("setBodyAwake " + idText(body.value) + " " + std::to_string(flag));
+            attempt("World::setBodyAwake", verdict(body.bad),
+                    [&] { journal_.setBodyAwake(body.value, flag); });
+        } else {
+            trace("setBodySleepAllowed " + idText(body.value) + " " + std::to_string(flag));
+            attempt("World::setBodySleepAllowed", verdict(body.bad),
+                    [&] { journal_.setBodySleepAllowed(body.value, flag); });
+        }
+    }
+
+    void setBodyType() {
+        Arg<BodyId> body = pickBody();
+        BodyType type;
+        bool bad = body.bad;
+        if (hostile_ > 0.0f && random_.chance(0.15f)) {
+            type = static_cast<BodyType>(random_.between(3, 255));
+            bad = true;
+        } else {
+            type = static_cast<BodyType>(random_.below(3));
+            if (type == BodyType::Dynamic && !body.bad && hasZeroDensityShape(body.value)) {
+                bad = true;
+            }
+        }
+        trace("setBodyType " + idText(body.value) + " " + std::to_string(int(type)));
+        attempt("World::setBodyType", verdict(bad), [&] {
+            journal_.setBodyType(body.value, type);
+            if (world_->bodyType(body.value) != type) failure("setBodyType: type not set");
+            if (type == BodyType::Static && (world_->bodyLinearVelocity(body.value) != Vec2{} ||
+                                             world_->bodyAngularVelocity(body.value) != 0.0f)) {
+                failure("setBodyType: a static body kept a velocity");
+            }
+        });
+    }
+
+    void setShapeDensity() {
+        Arg<ShapeId> shape = pickShape();
+        bool dynamic =
+            !shape.bad && world_->bodyType(world_->shapeBody(shape.value)) == BodyType::Dynamic;
+        Arg<float> density = values_->density(!dynamic);
+        trace("setShapeDensity " + idText(shape.value) + " " + text(density.value));
+        attempt("World::setShapeDensity", verdict(shape.bad || density.bad),
+                [&] { journal_.setShapeDensity(shape.value, density.value); });
+    }
+
+    void setShapeFilter() {
+        Arg<ShapeId> shape = pickShape();
+        Filter f = filter();
+        trace("setShapeFilter " + idText(shape.value));
+        attempt("World::setShapeFilter", verdict(shape.bad),
+                [&] { journal_.setShapeFilter(shape.value, f); });
+    }
+
+    void changeJoint() {
+        Arg<JointId> joint = pickJoint();
+        switch (random_.below(4)) {
+            case 0: {
+                Arg<JointLimit> l = limit();
+                trace("setJointLimit " + idText(joint.value) + " " + text(l.value.lower) + ".." +
+                      text(l.value.upper));
+                attempt("World::setJointLimit", verdict(joint.bad || l.bad),
+                        [&] { journal_.setJointLimit(joint.value, l.value); });
+                break;
+            }
+            case 1: {
+                Arg<JointMotor> m = motor();
+                trace("setJointMotor " + idText(joint.value) + " " + text(m.value.speed));
+                attempt("World::setJointMotor", verdict(joint.bad || m.bad),
+                        [&] { journal_.setJointMotor(joint.value, m.value); });
+                break;
+            }
+            case 2: {
+                Arg<PositionSolver> s = solver();
+                trace("setJointPositionSolver " + idText(joint.value) + " " +
+                      std::to_string(int(s.value)));
+                attempt("World::setJointPositionSolver", verdict(joint.bad || s.bad),
+                        [&] { journal_.setJointPositionSolver(joint.value, s.value); });
+                break;
+            }
+            default: {
+                std::optional<float> bias;
+                bool bad = joint.bad;
+                if (random_.chance(0.7f)) {
+                    Arg<float> b = values_->fraction();
+                    bias = b.value;
+                    bad = bad || b.bad;
+                }
+                trace("setJointBiasFactor " + idText(joint.value));
+                attempt("World::setJointBiasFactor", verdict(bad),
+                        [&] { journal_.setJointBiasFactor(joint.value, bias); });
+                break;
+            }
+        }
+    }
+
+    void moveMouse() {
+        Arg<MouseJointId> mouse = pickMouse();
+        Arg<Vec2> target = values_->coordinate(15.0f);
+        trace("setMouseTarget " + idText(mouse.value) + " " + text(target.value));
+        attempt("World::setMouseTarget", verdict(mouse.bad || target.bad),
+                [&] { journal_.setMouseTarget(mouse.value, target.value); });
+    }
+
+    void worldSettings() {
+        switch (random_.below(3)) {
+            case 0: {
+                Arg<Vec2> g =
+                    random_.chance(0.5f) ? Arg<Vec2>{{0.0f, -10.0f}} : values_->magnitude2(20.0f);
+                trace("setGravity " + text(g.value));
+                attempt("World::setGravity", verdict(g.bad), [&] { journal_.setGravity(g.value); });
+                break;
+            }
+            case 1: {
+                bool bad = hostile_ > 0.0f && random_.chance(0.3f);
+                auto c = static_cast<ContactCorrection>(bad ? random_.between(2, 255)
+                                                            : random_.below(2));
+                trace("setContactCorrection " + std::to_string(int(c)));
+                attempt("World::setContactCorrection", verdict(bad),
+                        [&] { journal_.setContactCorrection(c); });
+                break;
+            }
+            default: {
+                bool on = random_.chance(0.7f);
+                trace("setSleepEnabled " + std::to_string(on));
+                attempt("World::setSleepEnabled", Verdict::Valid,
+                        [&] { journal_.setSleepEnabled(on); });
+                break;
+            }
+        }
+    }
+
+    void step() {
+        float dt = 1.0f / 60.0f;
+        bool bad = false;
+        int r = random_.below(100);
+        if (hostile_ > 0.0f && r < 20) {
+            const float choices[] = {0.0f, -1.0f / 60.0f, 2.0f * kMaxTimeStep, -0.0f};
+            dt = random_.chance(0.5f) ? values_->garbage() : choices[random_.below(4)];
+            bad = true;
+        } else if (r < 30) {
+            const float choices[] = {1.0f / 30.0f, 1.0f / 120.0f, 1.0f / 240.0f, 1.0f / 1000.0f,
+                                     kMaxTimeStep};
+            dt = choices[random_.below(options_.extremes ? 5 : 4)];
+        } else if (r < 40) {
+            dt = random_.uniform(1e-4f, 0.05f);
+        }
+        int velocityIterations = kDefaultVelocityIterations;
+        int positionIterations = kDefaultPositionIterations;
+        if (random_.chance(0.3f)) {
+            velocityIterations = values_->edge(0.02f) ? 200 : random_.between(0, 12);
+            positionIterations = values_->edge(0.02f) ? 200 : random_.between(0, 12);
+        }
+        if (hostile_ > 0.0f && random_.chance(0.15f)) {
+            const int choices[] = {-1, kMaxIterations + 1, std::numeric_limits<int>::min(),
+                                   std::numeric_limits<int>::max()};
+            (random_.chance(0.5f) ? velocityIterations : positionIterations) =
+                choices[random_.below(4)];
+            bad = true;
+        }
+        trace("step dt=" + text(dt) + " " + std::to_string(velocityIterations) + "/" +
+              std::to_string(positionIterations));
+        if (attempt("World::step", verdict(bad),
+                    [&] { journal_.step(dt, velocityIterations, positionIterations); })) {
+            ++report_.steps;
+            checkInvariants("a step");
+        }
+    }
+
+    void query() {
+        Arg<BodyId> body = pickBody();
+        Arg<ShapeId> shape = pickShape();
+        Arg<JointId> joint = pickJoint();
+        Arg<MouseJointId> mouse = pickMouse();
+        Arg<Vec2> point = values_->coordinate(15.0f);
+        World& w = *world_;
+        std::vector<std::pair<const char*, std::function<void()>>> bodyQueries = {
+            {"World::bodyShapes", [&] { w.bodyShapes(body.value); }},
+            {"World::bodyType", [&] { w.bodyType(body.value); }},
+            {"World::bodyPosition", [&] { w.bodyPosition(body.value); }},
+            {"World::bodyAngle", [&] { w.bodyAngle(body.value); }},
+            {"World::bodyTransform", [&] { w.bodyTransform(body.value); }},
+            {"World::bodyWorldCenter", [&] { w.bodyWorldCenter(body.value); }},
+            {"World::bodyLocalCenter", [&] { w.bodyLocalCenter(body.value); }},
+            {"World::bodyLinearVelocity", [&] { w.bodyLinearVelocity(body.value); }},
+            {"World::bodyAngularVelocity", [&] { w.bodyAngularVelocity(body.value); }},
+            {"World::bodyMass", [&] { w.bodyMass(body.value); }},
+            {"World::bodyRotationalInertia", [&] { w.bodyRotationalInertia(body.value); }},
+            {"World::isBodyAwake", [&] { w.isBodyAwake(body.value); }},
+        };
+        std::vector<std::pair<const char*, std::function<void()>>> jointQueries = {
+            {"World::jointBodyA", [&] { w.jointBodyA(joint.value); }},
+            {"World::jointBodyB", [&] { w.jointBodyB(joint.value); }},
+            {"World::jointAnchorA", [&] { w.jointAnchorA(joint.value); }},
+            {"World::jointAnchorB", [&] { w.jointAnchorB(joint.value); }},
+            {"World::jointSeparation", [&] { w.jointSeparation(joint.value); }},
+            {"World::jointAngle", [&] { w.jointAngle(joint.value); }},
+            {"World::jointSpeed", [&] { w.jointSpeed(joint.value); }},
+            {"World::jointReactionForce", [&] { w.jointReactionForce(joint.value); }},
+            {"World::jointReactionTorque", [&] { w.jointReactionTorque(joint.value); }},
+            {"World::jointMotorTorque", [&] { w.jointMotorTorque(joint.value); }},
+            {"World::jointLimit", [&] { w.jointLimit(joint.value); }},
+            {"World::jointMotor", [&] { w.jointMotor(joint.value); }},
+            {"World::jointPositionSolver", [&] { w.jointPositionSolver(joint.value); }},
+            {"World::jointBiasFactor", [&] { w.jointBiasFactor(joint.value); }},
+        };
+        std::vector<std::pair<const char*, std::function<void()>>> shapeQueries = {
+            {"World::shapeBody", [&] { w.shapeBody(shape.value); }},
+            {"World::shapeFilter", [&] { w.shapeFilter(shape.value); }},
+            {"World::shapeType", [&] { w.shapeType(shape.value); }},
+            {"World::shapeDensity", [&] { w.shapeDensity(shape.value); }},
+        };
+        switch (random_.below(7)) {
+            case 0: {
+                auto& q = bodyQueries[random_.below(static_cast<int>(bodyQueries.size()))];
+                attempt(q.first, verdict(body.bad), q.second);
+                break;
+            }
+            case 1: {
+                auto& q = jointQueries[random_.below(static_cast<int>(jointQueries.size()))];
+                attempt(q.first, verdict(joint.bad), q.second);
+                break;
+            }
+            case 2: {
+                auto& q = shapeQueries[random_.below(static_cast<int>(shapeQueries.size()))];
+                attempt(q.first, verdict(shape.bad), q.second);
+                break;
+            }
+            case 3: {
+                bool circle = !shape.bad && w.shapeType(shape.value) == ShapeType::Circle;
+                if (random_.chance(0.5f)) {
+                    attempt("World::shapeCircle", verdict(shape.bad || !circle),
+                            [&] { w.shapeCircle(shape.value); });
+                } else {
+                    attempt("World::shapePolygon", verdict(shape.bad || circle), [&] {
+                        // What comes back must be accepted again as a shape's geometry.
+                        Polygon p = w.shapePolygon(shape.value);
+                        computeMass(p, 1.0f);
+                    });
+                }
+                break;
+            }
+            case 4:
+                attempt("World::bodyWorldPoint", verdict(body.bad || point.bad),
+                        [&] { w.bodyWorldPoint(body.value, point.value); });
+                attempt("World::bodyLocalPoint", verdict(body.bad || point.bad),
+                        [&] { w.bodyLocalPoint(body.value, point.value); });
+                break;
+            case 5:
+                attempt("World::mouseTarget", verdict(mouse.bad),
+                        [&] { w.mouseTarget(mouse.value); });
+                break;
+            default:
+                attempt("World::contacts", Verdict::Valid, [&] {
+                    w.contacts();
+                    w.contactBeginEvents();
+                    w.contactEndEvents();
+                    w.lastStepStats();
+                    w.gravity();
+                    w.defaultPositionSolver();
+                    w.contactCorrection();
+                    w.isSleepEnabled();
+                });
+                break;
+        }
+    }
+
+    void freeFunctions() {
+        switch (random_.below(4)) {
+            case 0: {
+                auto [p, v] = polygon();
+                Arg<float> density = values_->density(true);
+                attempt("computeMass", density.bad ? Verdict::Bad : v, [&] {
+                    MassData m = computeMass(p, density.value);
+                    if (!std::isfinite(m.mass) || !std::isfinite(m.rotationalInertia) ||
+                        !isFinite(m.center)) {
+                        failure("computeMass gave a non-finite result");
+                    }
+                });
+                break;
+            }
+            case 1: {
+                Arg<Vec2> center = values_->coordinate(1.0f);
+                Arg<float> radius = values_->radius();
+                Arg<float> density = values_->density(true);
+                attempt("computeMass", verdict(center.bad || radius.bad || density.bad), [&] {
+                    computeMass(Circle{center.value, radius.value}, density.value);
+                });
+                break;
+            }
+            case 2: {
+                Arg<float> hw = values_->positive(2.0f);
+                Arg<float> hh = values_->positive(2.0f);
+                bool bad =
+                    hw.bad || hh.bad || hw.value > kMaxCoordinate || hh.value > kMaxCoordinate;
+                attempt("Polygon::box", verdict(bad), [&] { Polygon::box(hw.value, hh.value); });
+                break;
+            }
+            default: {
+                bool tooMany = random_.chance(0.5f);
+                attempt("Polygon::fromPoints", verdict(tooMany), [&] {
+                    if (tooMany) {
+                        Polygon::fromPoints({{0, 0},
+                                             {1, 0},
+                                             {2, 0},
+                                             {3, 0},
+                                             {4, 0},
+                                             {5, 0},
+                                             {6, 0},
+                                             {7, 0},
+                                             {8, 0}});
+                    } else {
+                        Polygon::fromPoints({{0, 0}, {1, 0}, {0, 1}});
+                    }
+                });
+                break;
+            }
+        }
+    }
+
+    // The lists the API returns are copies: destroying while iterating them must be safe.
+    void destroyWhileIterating() {
+        switch (random_.below(4)) {
+            case 0:
+                trace("destroy bodies while iterating bodyIds");
+                for (BodyId b : world_->bodyIds()) {
+                    if (random_.chance(0.3f)) {
+                        attempt("World::destroyBody", verdict(!world_->isValid(b)),
+                                [&] { journal_.destroyBody(b); });
+                    }
+                }
+                break;
+            case 1:
+                trace("destroy bodies while iterating contacts");
+                for (const ContactData& c : world_->contacts()) {
+                    if (!random_.chance(0.3f)) continue;
+                    if (!world_->isValid(c.shapeA)) {
+                        // An earlier destruction took this shape: its id is stale.
+                        attempt("World::shapeBody", Verdict::Bad,
+                                [&] { world_->shapeBody(c.shapeA); });
+                        continue;
+                    }
+                    BodyId b = world_->shapeBody(c.shapeA);
+                    attempt("World::destroyBody", Verdict::Valid, [&] { journal_.destroyBody(b); });
+                }
+                break;
+            case 2:
+                trace("destroy joints while iterating jointIds");
+                for (JointId j : world_->jointIds()) {
+                    if (!random_.chance(0.3f)) continue;
+                    if (!world_->isValid(j)) {
+                        // Its body went with an earlier destruction.
+                        attempt("World::destroyJoint", Verdict::Bad,
+                                [&] { journal_.destroyJoint(j); });
+                        continue;
+                    }
+                    BodyId a = world_->jointBodyA(j);
+                    attempt("World::destroyJoint", Verdict::Valid,
+                            [&] { journal_.destroyJoint(j); });
+                    if (random_.chance(0.2f)) {
+                        attempt("World::destroyBody", Verdict::Valid,
+                                [&] { journal_.destroyBody(a); });
+                    }
+                }
+                break;
+            default:
+                trace("destroy shapes while iterating events");
+                for (const ContactEvent& e : world_->contactBeginEvents()) {
+                    if (!random_.chance(0.5f)) continue;
+                    attempt("World::destroyShape", verdict(!world_->isValid(e.shapeB)),
+                            [&] { journal_.destroyShape(e.shapeB); });
+                }
+                break;
+        }
+        checkInvariants("destroying while iterating");
+    }
+
+    void dump() const {
+        const World& w = *world_;
+        std::printf("world before operation %ld: gravity %s, %s contacts, sleep %d\n", operation_,
+                    text(w.gravity()).c_str(),
+                    w.contactCorrection() == ContactCorrection::NGS ? "NGS" : "Baumgarte",
+                    int(w.isSleepEnabled()));
+        for (BodyId b : w.bodyIds()) {
+            std::printf("body %s type %d p %s a %s v %s w %s mass %s I %s awake %d\n",
+                        idText(b).c_str(), int(w.bodyType(b)), text(w.bodyPosition(b)).c_str(),
+                        text(w.bodyAngle(b)).c_str(), text(w.bodyLinearVelocity(b)).c_str(),
+                        text(w.bodyAngularVelocity(b)).c_str(), text(w.bodyMass(b)).c_str(),
+                        text(w.bodyRotationalInertia(b)).c_str(), int(w.isBodyAwake(b)));
+            for (ShapeId s : w.bodyShapes(b)) {
+                std::string geometry;
+                if (w.shapeType(s) == ShapeType::Circle) {
+                    Circle c = w.shapeCircle(s);
+                    geometry = "circle " + text(c.center) + " r " + text(c.radius);
+                } else {
+                    Polygon p = w.shapePolygon(s);
+                    geometry = "polygon";
+                    for (int i = 0; i < p.count; ++i) geometry += " " + text(p.vertices[i]);
+                }
+                std::printf("  shape %s density %s %s\n", idText(s).c_str(),
+                            text(w.shapeDensity(s)).c_str(), geometry.c_str());
+            }
+        }
+        for (JointId j : w.jointIds()) {
+            JointLimit l = w.jointLimit(j);
+            JointMotor m = w.jointMotor(j);
+            std::printf(
+                "joint %s %s-%s anchors %s %s solver %d bias %s limit %d %s %s motor %d %s "
+                "%s\n",
+                idText(j).c_str(), idText(w.jointBodyA(j)).c_str(), idText(w.jointBodyB(j)).c_str(),
+                text(w.jointAnchorA(j)).c_str(), text(w.jointAnchorB(j)).c_str(),
+                int(w.jointPositionSolver(j)), text(w.jointBiasFactor(j)).c_str(), int(l.enabled),
+                text(l.lower).c_str(), text(l.upper).c_str(), int(m.enabled), text(m.speed).c_str(),
+                text(m.maxTorque).c_str());
+        }
+        for (const LiveMouse& m : liveMice_) {
+            if (w.isValid(m.id)) {
+                std::printf("mouse %s on %s target %s\n", idText(m.id).c_str(),
+                            idText(m.body).c_str(), text(w.mouseTarget(m.id)).c_str());
+            }
+        }
+    }
+
+    // --- invariants -----------------------------------------------------------------------------
+
+    void checkInvariants(const char* after) {
+        const World& w = *world_;
+        const std::string where = std::string(" after ") + after;
+        if (w.stateHash() != w.stateHash()) failure("stateHash is not a function of the state");
+        std::vector<BodyId> bodies = w.bodyIds();
+        if (static_cast<int>(bodies.size()) != w.bodyCount()) {
+            failure("bodyIds has " + std::to_string(bodies.size()) + " ids, bodyCount is " +
+                    std::to_string(w.bodyCount()) + where);
+        }
+        report_.maxBodies = std::max<long>(report_.maxBodies, w.bodyCount());
+        int shapes = 0;
+        for (BodyId b : bodies) {
+            if (!w.isValid(b)) failure("bodyIds lists an invalid id" + where);
+            for (ShapeId s : w.bodyShapes(b)) {
+                ++shapes;
+                if (!w.isValid(s) || w.shapeBody(s) != b) {
+                    failure("a body lists a shape that is not its own" + where);
+                }
+            }
+            Vec2 p = w.bodyPosition(b), v = w.bodyLinearVelocity(b), c = w.bodyWorldCenter(b);
+            float a = w.bodyAngle(b), omega = w.bodyAngularVelocity(b);
+            if (!isFinite(p) || !isFinite(v) || !isFinite(c) || !std::isfinite(a) ||
+                !std::isfinite(omega)) {
+                nonFinite("body " + idText(b) + " is not finite: p=" + text(p) + " v=" + text(v) +
+                          " a=" + text(a) + " w=" + text(omega) + where);
+                continue;
+            }
+            float mass = w.bodyMass(b);
+            bool dynamic = w.bodyType(b) == BodyType::Dynamic;
+            if (dynamic ? !(mass > 0.0f && std::isfinite(mass)) : mass != 0.0f) {
+                failure("body " + idText(b) + " has mass " + text(mass) + where);
+            }
+            if (w.bodyType(b) == BodyType::Static && (v != Vec2{} || omega != 0.0f)) {
+                failure("static body " + idText(b) + " moves" + where);
+            }
+        }
+        if (shapes != w.shapeCount()) {
+            failure("bodies list " + std::to_string(shapes) + " shapes, shapeCount is " +
+                    std::to_string(w.shapeCount()) + where);
+        }
+        std::vector<JointId> joints = w.jointIds();
+        if (static_cast<int>(joints.size()) != w.jointCount()) {
+            failure("jointIds does not match jointCount" + where);
+        }
+        for (JointId j : joints) {
+            if (!w.isValid(j) || !w.isValid(w.jointBodyA(j)) || !w.isValid(w.jointBodyB(j)) ||
+                w.jointBodyA(j) == w.jointBodyB(j)) {
+                failure("joint " + idText(j) + " has invalid bodies" + where);
+            }
+            Vec2 force = w.jointReactionForce(j);
+            float torque = w.jointReactionTorque(j);
+            if (!isFinite(force) || !std::isfinite(torque) ||
+                !std::isfinite(w.jointSeparation(j))) {
+                nonFinite("joint " + idText(j) + " is not finite: force=" + text(force) + where);
+            }
+        }
+        std::vector<ContactData> contacts = w.contacts();
+        report_.maxContacts =
+            std::max<long>(report_.maxContacts, static_cast<long>(contacts.size()));
+        for (const ContactData& c : contacts) {
+            if (!w.isValid(c.shapeA) || !w.isValid(c.shapeB)) {
+                failure("a contact names an invalid shape" + where);
+                continue;
+            }
+            if (w.shapeBody(c.shapeA) == w.shapeBody(c.shapeB)) {
+                failure("a contact between two shapes of one body" + where);
+            }
+            if (c.pointCount < 1 || c.pointCount > 2) {
+                failure("a touching contact with " + std::to_string(c.pointCount) + " points" +
+                        where);
+            }
+            if (!isFinite(c.normal)) nonFinite("a contact normal is not finite" + where);
+            for (int i = 0; i < c.pointCount && i < 2; ++i) {
+                if (!isFinite(c.points[i].point) || !std::isfinite(c.points[i].separation) ||
+                    !std::isfinite(c.points[i].normalImpulse)) {
+                    nonFinite("a contact point is not finite" + where);
+                }
+            }
+        }
+        const StepStats& stats = w.lastStepStats();
+        if (stats.touchingCount > stats.contactCount || stats.sleepingBodyCount > w.bodyCount() ||
+            stats.islandCount < 0 || stats.positionIterations < 0) {
+            failure("the step statistics do not add up" + where);
+        }
+        if (std::string(after) == "a step") {
+            for (const auto& events : {w.contactBeginEvents(), w.contactEndEvents()}) {
+                for (const ContactEvent& e : events) {
+                    if (!w.isValid(e.shapeA) || !w.isValid(e.shapeB)) {
+                        failure("an event of the last step names an invalid shape" + where);
+                    }
+                }
+            }
+        }
+    }
+
+    Options options_;
+    Random random_;
+    Values* values_ = nullptr;
+    float hostile_ = 0.0f;
+    long operation_ = 0;
+    bool nonFinite_ = false;  // this world has reported a non-finite number
+    long nonFiniteSeen_ = 0;
+    Report report_;
+    std::unique_ptr<World> world_;
+    Journal journal_;
+    std::unique_ptr<World> other_;
+    std::uint32_t tag_ = 0;  // the world field of this world's ids
+    BodyId otherBody_;
+    ShapeId otherShape_;
+    JointId otherJoint_;
+    MouseJointId otherMouse_;
+    IdMemory<BodyId> bodies_;
+    IdMemory<ShapeId> shapes_;
+    IdMemory<JointId> joints_;
+    IdMemory<MouseJointId> mice_;
+    struct LiveMouse {
+        MouseJointId id;
+        BodyId body;
+    };
+    std::vector<LiveMouse> liveMice_;  // the mouse joints made, and their bodies
+};
+
+}  // namespace
+
+Report run(const Options& options) {
+    Driver driver(options);
+    return driver.run();
+}
+
+}  // namespace pivot::fuzz

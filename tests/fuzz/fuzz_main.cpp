@@ -1,0 +1,126 @@
+// pivot-fuzz: runs the random-operation driver (fuzz_driver.h) and prints what it did.
+//   pivot-fuzz [--seed N] [--operations N] [--trace] [--keep-going] [--check-every-operation]
+//              [--dump-before N] [--no-extremes] [--require-finite] [--journal PREFIX]
+//   pivot-fuzz --replay FILE
+// Exit status 0 when every check held, 1 on a failure, 2 on bad arguments. --replay replays a
+// journal written with --journal and exits with 3 if a body or joint turns non-finite.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "fuzz_driver.h"
+#include "journal.h"
+
+namespace {
+
+bool parseNumber(const char* text, long long& out) {
+    char* end = nullptr;
+    out = std::strtoll(text, &end, 10);
+    return end != text && *end == '\0' && out >= 0;
+}
+
+int replay(const char* path) {
+    std::ifstream in(path);
+    if (!in) {
+        std::fprintf(stderr, "cannot read %s\n", path);
+        return 2;
+    }
+    pivot::fuzz::ReplayResult r = pivot::fuzz::replay(in);
+    if (!r.error.empty()) {
+        std::fprintf(stderr, "%s\n", r.error.c_str());
+        return 2;
+    }
+    std::printf("%d lines: %d calls returned, %d refused, %d skipped\n", r.lines, r.applied,
+                r.refused, r.skipped);
+    if (r.nonFiniteLine > 0) {
+        std::printf("non-finite after the step of line %d: %s\n", r.nonFiniteLine,
+                    r.nonFinite.c_str());
+        return 3;
+    }
+    std::printf("every body and joint finite\n");
+    return 0;
+}
+
+int usage() {
+    std::fprintf(stderr,
+                 "usage: pivot-fuzz [--seed N] [--operations N] [--trace] [--keep-going]\n"
+                 "                  [--check-every-operation] [--dump-before N]\n"
+                 "                  [--no-extremes] [--require-finite] [--journal PREFIX]\n"
+                 "       pivot-fuzz --replay FILE\n");
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    pivot::fuzz::Options options;
+    for (int i = 1; i < argc; ++i) {
+        long long value = 0;
+        if (std::strcmp(argv[i], "--seed") == 0 && i + 1 < argc &&
+            parseNumber(argv[i + 1], value)) {
+            options.seed = static_cast<std::uint64_t>(value);
+            ++i;
+        } else if (std::strcmp(argv[i], "--operations") == 0 && i + 1 < argc &&
+                   parseNumber(argv[i + 1], value)) {
+            options.operations = static_cast<long>(value);
+            ++i;
+        } else if (std::strcmp(argv[i], "--trace") == 0) {
+            options.trace = true;
+        } else if (std::strcmp(argv[i], "--dump-before") == 0 && i + 1 < argc &&
+                   parseNumber(argv[i + 1], value)) {
+            options.dumpBefore = static_cast<long>(value);
+            ++i;
+        } else if (std::strcmp(argv[i], "--journal") == 0 && i + 1 < argc) {
+            options.journalPrefix = argv[++i];
+        } else if (std::strcmp(argv[i], "--replay") == 0 && i + 1 < argc) {
+            return replay(argv[i + 1]);
+        } else if (std::strcmp(argv[i], "--no-extremes") == 0) {
+            options.extremes = false;
+        } else if (std::strcmp(argv[i], "--require-finite") == 0) {
+            options.requireFinite = true;
+        } else if (std::strcmp(argv[i], "--check-every-operation") == 0) {
+            options.checkEveryOperation = true;
+        } else if (std::strcmp(argv[i], "--keep-going") == 0) {
+            options.stopAtFirstFailure = false;
+        } else {
+            return usage();
+        }
+    }
+
+    auto start = std::chrono::steady_clock::now();
+    pivot::fuzz::Report report = pivot::fuzz::run(options);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    std::printf(
+        "pivot-fuzz seed %llu: %ld operations in %.1f s: %ld accepted, %ld rejected "
+        "(each checked to change nothing), %ld steps, %ld worlds, up to %ld bodies and "
+        "%ld touching contacts\n",
+        static_cast<unsigned long long>(options.seed), report.operations, seconds, report.accepted,
+        report.rejected, report.steps, report.worlds, report.maxBodies, report.maxContacts);
+    std::printf("worlds that came to report a non-finite number: %zu",
+                report.nonFiniteWorlds.size());
+    for (std::size_t i = 0; i < report.nonFiniteWorlds.size() && i < 10; ++i) {
+        std::printf("%s%ld", i == 0 ? " (first seen at operations " : ", ",
+                    report.nonFiniteWorlds[i]);
+    }
+    std::printf("%s\n", report.nonFiniteWorlds.empty() ? "" : ")");
+    for (const auto& [name, count] : report.byOperation) {
+        std::printf("  %-32s %9ld accepted %9ld rejected\n", name.c_str(), count.accepted,
+                    count.rejected);
+    }
+    if (report.failures.empty()) {
+        for (const std::string& j : report.journals)
+            std::printf("journal written: %s\n", j.c_str());
+        std::printf("no failures\n");
+        return 0;
+    }
+    std::printf("%zu failure(s); rerun with --trace --operations N to see the calls:\n",
+                report.failures.size());
+    for (const std::string& f : report.failures) std::printf("  %s\n", f.c_str());
+    for (const std::string& j : report.journals) std::printf("journal written: %s\n", j.c_str());
+    return 1;
+}

@@ -1,0 +1,556 @@
+#include "journal.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <istream>
+#include <sstream>
+
+namespace pivot::fuzz {
+
+namespace {
+
+// Nine significant digits read back as the same float.
+std::string num(float v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(v));
+    return buffer;
+}
+std::string num(Vec2 v) {
+    return num(v.x) + " " + num(v.y);
+}
+std::string num(int v) {
+    return std::to_string(v);
+}
+std::string num(bool v) {
+    return v ? "1" : "0";
+}
+std::string num(const Filter& f) {
+    return std::to_string(f.categoryBits) + " " + std::to_string(f.maskBits) + " " +
+           std::to_string(f.groupIndex);
+}
+std::string shapeDefText(const ShapeDef& def) {
+    return num(def.density) + " " + num(def.friction) + " " + num(def.restitution) + " " +
+           num(def.filter);
+}
+
+}  // namespace
+
+void Journal::begin(World& world, const WorldDef& def) {
+    world_ = &world;
+    lines_.clear();
+    names_.clear();
+    created_ = 0;
+    lines_.push_back("world " + num(def.gravity) + " " + num(int(def.defaultPositionSolver)) + " " +
+                     num(int(def.contactCorrection)) + " " + num(def.contactBiasFactor) + " " +
+                     num(def.restitutionThreshold) + " " + num(def.warmStarting) + " " +
+                     num(def.enableSleep));
+}
+
+bool Journal::write(const std::string& path) const {
+    std::ofstream out(path);
+    for (const std::string& line : lines_) out << line << '\n';
+    return static_cast<bool>(out);
+}
+
+template <typename Id>
+std::string Journal::nameOf(char kind, Id id) {
+    auto it = names_.find(Key{kind, id.index, id.generation});
+    return it == names_.end() ? std::string("?") : it->second;
+}
+
+template <typename Id>
+std::string Journal::nameNew(char kind, Id id) {
+    std::string name = kind + std::to_string(created_++);
+    names_[Key{kind, id.index, id.generation}] = name;
+    return name;
+}
+
+BodyId Journal::createBody(const BodyDef& def) {
+    BodyId id = world_->createBody(def);
+    lines_.push_back("body " + nameNew('b', id) + " " + num(int(def.type)) + " " +
+                     num(def.position) + " " + num(def.angle) + " " + num(def.linearVelocity) +
+                     " " + num(def.angularVelocity) + " " + num(def.linearDamping) + " " +
+                     num(def.angularDamping) + " " + num(def.gravityScale) + " " +
+                     num(def.fixedRotation) + " " + num(def.allowSleep) + " " + num(def.isAwake));
+    return id;
+}
+
+ShapeId Journal::createShape(BodyId body, const ShapeDef& def, const Circle& circle) {
+    ShapeId id = world_->createShape(body, def, circle);
+    lines_.push_back("circle " + nameNew('s', id) + " " + nameOf('b', body) + " " +
+                     shapeDefText(def) + " " + num(circle.center) + " " + num(circle.radius));
+    return id;
+}
+
+ShapeId Journal::createShape(BodyId body, const ShapeDef& def, const Polygon& polygon) {
+    ShapeId id = world_->createShape(body, def, polygon);
+    std::string line = "polygon " + nameNew('s', id) + " " + nameOf('b', body) + " " +
+                       shapeDefText(def) + " " + num(polygon.count);
+    for (int i = 0; i < polygon.count; ++i) line += " " + num(polygon.vertices[i]);
+    lines_.push_back(line);
+    return id;
+}
+
+JointId Journal::createJoint(const RevoluteJointDef& def) {
+    JointId id = world_->createJoint(def);
+    lines_.push_back(
+        "joint " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " + nameOf('b', def.bodyB) +
+        " " + num(def.worldAnchor.has_value()) + " " + num(def.worldAnchor.value_or(Vec2{})) + " " +
+        num(def.localAnchorA) + " " + num(def.localAnchorB) + " " + num(def.referenceAngle) + " " +
+        num(def.positionSolver ? int(*def.positionSolver) : -1) + " " +
+        num(def.biasFactor.value_or(-1.0f)) + " " + num(def.limit.enabled) + " " +
+        num(def.limit.lower) + " " + num(def.limit.upper) + " " + num(def.motor.enabled) + " " +
+        num(def.motor.speed) + " " + num(def.motor.maxTorque) + " " + num(def.collideConnected));
+    return id;
+}
+
+MouseJointId Journal::createMouseJoint(const MouseJointDef& def) {
+    MouseJointId id = world_->createMouseJoint(def);
+    lines_.push_back("mouse " + nameNew('m', id) + " " + nameOf('b', def.body) + " " +
+                     num(def.target) + " " + num(def.maxForce) + " " + num(def.hertz) + " " +
+                     num(def.dampingRatio));
+    return id;
+}
+
+void Journal::destroyBody(BodyId id) {
+    std::string name = nameOf('b', id);
+    world_->destroyBody(id);
+    lines_.push_back("destroyBody " + name);
+}
+void Journal::destroyShape(ShapeId id) {
+    std::string name = nameOf('s', id);
+    world_->destroyShape(id);
+    lines_.push_back("destroyShape " + name);
+}
+void Journal::destroyJoint(JointId id) {
+    std::string name = nameOf('j', id);
+    world_->destroyJoint(id);
+    lines_.push_back("destroyJoint " + name);
+}
+void Journal::destroyMouseJoint(MouseJointId id) {
+    std::string name = nameOf('m', id);
+    world_->destroyMouseJoint(id);
+    lines_.push_back("destroyMouse " + name);
+}
+void Journal::setBodyTransform(BodyId id, Vec2 position, float angle) {
+    world_->setBodyTransform(id, position, angle);
+    lines_.push_back("transform " + nameOf('b', id) + " " + num(position) + " " + num(angle));
+}
+void Journal::setBodyLinearVelocity(BodyId id, Vec2 v) {
+    world_->setBodyLinearVelocity(id, v);
+    lines_.push_back("velocity " + nameOf('b', id) + " " + num(v));
+}
+void Journal::setBodyAngularVelocity(BodyId id, float w) {
+    world_->setBodyAngularVelocity(id, w);
+    lines_.push_back("omega " + nameOf('b', id) + " " + num(w));
+}
+void Journal::applyForce(BodyId id, Vec2 force, Vec2 point) {
+    world_->applyForce(id, force, point);
+    lines_.push_back("force " + nameOf('b', id) + " " + num(force) + " " + num(point));
+}
+void Journal::applyForceToCenter(BodyId id, Vec2 force) {
+    world_->applyForceToCenter(id, force);
+    lines_.push_back("forceCenter " + nameOf('b', id) + " " + num(force));
+}
+void Journal::applyTorque(BodyId id, float torque) {
+    world_->applyTorque(id, torque);
+    lines_.push_back("torque " + nameOf('b', id) + " " + num(torque));
+}
+void Journal::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 point) {
+    world_->applyLinearImpulse(id, impulse, point);
+    lines_.push_back("impulse " + nameOf('b', id) + " " + num(impulse) + " " + num(point));
+}
+void Journal::applyAngularImpulse(BodyId id, float impulse) {
+    world_->applyAngularImpulse(id, impulse);
+    lines_.push_back("angularImpulse " + nameOf('b', id) + " " + num(impulse));
+}
+void Journal::setBodyAwake(BodyId id, bool awake) {
+    world_->setBodyAwake(id, awake);
+    lines_.push_back("awake " + nameOf('b', id) + " " + num(awake));
+}
+void Journal::setBodySleepAllowed(BodyId id, bool allowed) {
+    world_->setBodySleepAllowed(id, allowed);
+    lines_.push_back("sleepAllowed " + nameOf('b', id) + " " + num(allowed));
+}
+void Journal::setBodyType(BodyId id, BodyType type) {
+    world_->setBodyType(id, type);
+    lines_.push_back("type " + nameOf('b', id) + " " + num(int(type)));
+}
+void Journal::setShapeDensity(ShapeId id, float density) {
+    world_->setShapeDensity(id, density);
+    lines_.push_back("density " + nameOf('s', id) + " " + num(density));
+}
+void Journal::setShapeFilter(ShapeId id, const Filter& filter) {
+    world_->setShapeFilter(id, filter);
+    lines_.push_back("filter " + nameOf('s', id) + " " + num(filter));
+}
+void Journal::setJointLimit(JointId id, const JointLimit& limit) {
+    world_->setJointLimit(id, limit);
+    lines_.push_back("limit " + nameOf('j', id) + " " + num(limit.enabled) + " " +
+                     num(limit.lower) + " " + num(limit.upper));
+}
+void Journal::setJointMotor(JointId id, const JointMotor& motor) {
+    world_->setJointMotor(id, motor);
+    lines_.push_back("motor " + nameOf('j', id) + " " + num(motor.enabled) + " " +
+                     num(motor.speed) + " " + num(motor.maxTorque));
+}
+void Journal::setJointPositionSolver(JointId id, PositionSolver solver) {
+    world_->setJointPositionSolver(id, solver);
+    lines_.push_back("solver " + nameOf('j', id) + " " + num(int(solver)));
+}
+void Journal::setJointBiasFactor(JointId id, std::optional<float> bias) {
+    world_->setJointBiasFactor(id, bias);
+    lines_.push_back("bias " + nameOf('j', id) + " " + num(bias.value_or(-1.0f)));
+}
+void Journal::setMouseTarget(MouseJointId id, Vec2 target) {
+    world_->setMouseTarget(id, target);
+    lines_.push_back("target " + nameOf('m', id) + " " + num(target));
+}
+void Journal::setGravity(Vec2 gravity) {
+    world_->setGravity(gravity);
+    lines_.push_back("gravity " + num(gravity));
+}
+void Journal::setContactCorrection(ContactCorrection correction) {
+    world_->setContactCorrection(correction);
+    lines_.push_back("correction " + num(int(correction)));
+}
+void Journal::setSleepEnabled(bool enabled) {
+    world_->setSleepEnabled(enabled);
+    lines_.push_back("sleep " + num(enabled));
+}
+void Journal::step(float dt, int velocityIterations, int positionIterations) {
+    world_->step(dt, velocityIterations, positionIterations);
+    lines_.push_back("step " + num(dt) + " " + num(velocityIterations) + " " +
+                     num(positionIterations));
+}
+
+bool worldIsFinite(const World& world, std::string* what) {
+    for (BodyId b : world.bodyIds()) {
+        Vec2 p = world.bodyPosition(b), v = world.bodyLinearVelocity(b);
+        float a = world.bodyAngle(b), w = world.bodyAngularVelocity(b);
+        if (!isFinite(p) || !isFinite(v) || !std::isfinite(a) || !std::isfinite(w)) {
+            if (what) *what = "body " + std::to_string(b.index) + " p " + num(p) + " v " + num(v);
+            return false;
+        }
+    }
+    for (JointId j : world.jointIds()) {
+        if (!isFinite(world.jointReactionForce(j)) ||
+            !std::isfinite(world.jointReactionTorque(j))) {
+            if (what) *what = "joint " + std::to_string(j.index) + " reaction";
+            return false;
+        }
+    }
+    return true;
+}
+
+namespace {
+
+// Reads one journal line's fields in order; any failure marks the line unreadable.
+class Fields {
+public:
+    explicit Fields(const std::string& line) : in_(line) {}
+    std::string word() {
+        std::string w;
+        if (!(in_ >> w)) ok_ = false;
+        return w;
+    }
+    float f() {
+        std::string w = word();
+        return ok_ ? std::strtof(w.c_str(), nullptr) : 0.0f;
+    }
+    Vec2 v() {
+        float x = f();
+        return {x, f()};
+    }
+    int i() {
+        std::string w = word();
+        return ok_ ? std::atoi(w.c_str()) : 0;
+    }
+    bool b() { return i() != 0; }
+    /// An integer if one is left on the line, else `otherwise`.
+    int optionalInt(int otherwise) {
+        std::string w;
+        return (in_ >> w) ? std::atoi(w.c_str()) : otherwise;
+    }
+    Filter filter() {
+        Filter out;
+        out.categoryBits = static_cast<std::uint16_t>(i());
+        out.maskBits = static_cast<std::uint16_t>(i());
+        out.groupIndex = static_cast<std::int16_t>(i());
+        return out;
+    }
+    ShapeDef shapeDef() {
+        ShapeDef def;
+        def.density = f();
+        def.friction = f();
+        def.restitution = f();
+        def.filter = filter();
+        return def;
+    }
+    bool ok() const { return ok_; }
+
+private:
+    std::istringstream in_;
+    bool ok_ = true;
+};
+
+}  // namespace
+
+ReplayResult replay(std::istream& in) {
+    ReplayResult result;
+    std::unique_ptr<World> world;
+    std::map<std::string, BodyId> bodies;
+    std::map<std::string, ShapeId> shapes;
+    std::map<std::string, JointId> joints;
+    std::map<std::string, MouseJointId> mice;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        ++result.lines;
+        Fields f(line);
+        std::string command = f.word();
+        if (command == "world") {
+            WorldDef def;
+            def.gravity = f.v();
+            def.defaultPositionSolver = static_cast<PositionSolver>(f.i());
+            def.contactCorrection = static_cast<ContactCorrection>(f.i());
+            def.contactBiasFactor = f.f();
+            def.restitutionThreshold = f.f();
+            def.warmStarting = f.b();
+            def.enableSleep = f.b();
+            world = std::make_unique<World>(def);
+            continue;
+        }
+        if (!world) world = std::make_unique<World>(WorldDef{});
+        World& w = *world;
+        // Looks a name up; a missing one skips the line.
+        bool missing = false;
+        auto body = [&](const std::string& name) {
+            auto it = bodies.find(name);
+            if (it == bodies.end()) missing = true;
+            return it == bodies.end() ? BodyId{} : it->second;
+        };
+        auto shape = [&](const std::string& name) {
+            auto it = shapes.find(name);
+            if (it == shapes.end()) missing = true;
+            return it == shapes.end() ? ShapeId{} : it->second;
+        };
+        auto joint = [&](const std::string& name) {
+            auto it = joints.find(name);
+            if (it == joints.end()) missing = true;
+            return it == joints.end() ? JointId{} : it->second;
+        };
+        auto mouse = [&](const std::string& name) {
+            auto it = mice.find(name);
+            if (it == mice.end()) missing = true;
+            return it == mice.end() ? MouseJointId{} : it->second;
+        };
+        std::function<void()> call;
+        if (command == "body") {
+            std::string name = f.word();
+            BodyDef def;
+            def.type = static_cast<BodyType>(f.i());
+            def.position = f.v();
+            def.angle = f.f();
+            def.linearVelocity = f.v();
+            def.angularVelocity = f.f();
+            def.linearDamping = f.f();
+            def.angularDamping = f.f();
+            def.gravityScale = f.f();
+            def.fixedRotation = f.b();
+            def.allowSleep = f.b();
+            def.isAwake = f.b();
+            call = [&w, &bodies, name, def] { bodies[name] = w.createBody(def); };
+        } else if (command == "circle" || command == "polygon") {
+            std::string name = f.word();
+            BodyId b = body(f.word());
+            ShapeDef def = f.shapeDef();
+            if (command == "circle") {
+                Circle c;
+                c.center = f.v();
+                c.radius = f.f();
+                call = [&w, &shapes, name, b, def, c] { shapes[name] = w.createShape(b, def, c); };
+            } else {
+                Polygon p;
+                p.count = f.i();
+                for (int i = 0; i < p.count && i < kMaxPolygonVertices; ++i) p.vertices[i] = f.v();
+                call = [&w, &shapes, name, b, def, p] { shapes[name] = w.createShape(b, def, p); };
+            }
+        } else if (command == "joint") {
+            std::string name = f.word();
+            RevoluteJointDef def;
+            def.bodyA = body(f.word());
+            def.bodyB = body(f.word());
+            bool hasWorld = f.b();
+            Vec2 anchor = f.v();
+            if (hasWorld) def.worldAnchor = anchor;
+            def.localAnchorA = f.v();
+            def.localAnchorB = f.v();
+            def.referenceAngle = f.f();
+            int solver = f.i();
+            if (solver >= 0) def.positionSolver = static_cast<PositionSolver>(solver);
+            float bias = f.f();
+            if (bias >= 0.0f) def.biasFactor = bias;
+            def.limit.enabled = f.b();
+            def.limit.lower = f.f();
+            def.limit.upper = f.f();
+            def.motor.enabled = f.b();
+            def.motor.speed = f.f();
+            def.motor.maxTorque = f.f();
+            def.collideConnected = f.b();
+            call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "mouse") {
+            std::string name = f.word();
+            MouseJointDef def;
+            def.body = body(f.word());
+            def.target = f.v();
+            def.maxForce = f.f();
+            def.hertz = f.f();
+            def.dampingRatio = f.f();
+            call = [&w, &mice, name, def] { mice[name] = w.createMouseJoint(def); };
+        } else if (command == "destroyBody") {
+            BodyId b = body(f.word());
+            call = [&w, b] { w.destroyBody(b); };
+        } else if (command == "destroyShape") {
+            ShapeId s = shape(f.word());
+            call = [&w, s] { w.destroyShape(s); };
+        } else if (command == "destroyJoint") {
+            JointId j = joint(f.word());
+            call = [&w, j] { w.destroyJoint(j); };
+        } else if (command == "destroyMouse") {
+            MouseJointId m = mouse(f.word());
+            call = [&w, m] { w.destroyMouseJoint(m); };
+        } else if (command == "transform") {
+            BodyId b = body(f.word());
+            Vec2 p = f.v();
+            float a = f.f();
+            call = [&w, b, p, a] { w.setBodyTransform(b, p, a); };
+        } else if (command == "velocity") {
+            BodyId b = body(f.word());
+            Vec2 v = f.v();
+            call = [&w, b, v] { w.setBodyLinearVelocity(b, v); };
+        } else if (command == "omega") {
+            BodyId b = body(f.word());
+            float v = f.f();
+            call = [&w, b, v] { w.setBodyAngularVelocity(b, v); };
+        } else if (command == "force" || command == "impulse") {
+            BodyId b = body(f.word());
+            Vec2 v = f.v();
+            Vec2 p = f.v();
+            if (command == "force") {
+                call = [&w, b, v, p] { w.applyForce(b, v, p); };
+            } else {
+                call = [&w, b, v, p] { w.applyLinearImpulse(b, v, p); };
+            }
+        } else if (command == "forceCenter") {
+            BodyId b = body(f.word());
+            Vec2 v = f.v();
+            call = [&w, b, v] { w.applyForceToCenter(b, v); };
+        } else if (command == "torque" || command == "angularImpulse") {
+            BodyId b = body(f.word());
+            float v = f.f();
+            if (command == "torque") {
+                call = [&w, b, v] { w.applyTorque(b, v); };
+            } else {
+                call = [&w, b, v] { w.applyAngularImpulse(b, v); };
+            }
+        } else if (command == "awake" || command == "sleepAllowed") {
+            BodyId b = body(f.word());
+            bool v = f.b();
+            if (command == "awake") {
+                call = [&w, b, v] { w.setBodyAwake(b, v); };
+            } else {
+                call = [&w, b, v] { w.setBodySleepAllowed(b, v); };
+            }
+        } else if (command == "type") {
+            BodyId b = body(f.word());
+            auto t = static_cast<BodyType>(f.i());
+            call = [&w, b, t] { w.setBodyType(b, t); };
+        } else if (command == "density") {
+            ShapeId s = shape(f.word());
+            float d = f.f();
+            call = [&w, s, d] { w.setShapeDensity(s, d); };
+        } else if (command == "filter") {
+            ShapeId s = shape(f.word());
+            Filter filter = f.filter();
+            call = [&w, s, filter] { w.setShapeFilter(s, filter); };
+        } else if (command == "limit") {
+            JointId j = joint(f.word());
+            JointLimit l;
+            l.enabled = f.b();
+            l.lower = f.f();
+            l.upper = f.f();
+            call = [&w, j, l] { w.setJointLimit(j, l); };
+        } else if (command == "motor") {
+            JointId j = joint(f.word());
+            JointMotor m;
+            m.enabled = f.b();
+            m.speed = f.f();
+            m.maxTorque = f.f();
+            call = [&w, j, m] { w.setJointMotor(j, m); };
+        } else if (command == "solver") {
+            JointId j = joint(f.word());
+            auto s = static_cast<PositionSolver>(f.i());
+            call = [&w, j, s] { w.setJointPositionSolver(j, s); };
+        } else if (command == "bias") {
+            JointId j = joint(f.word());
+            float b = f.f();
+            std::optional<float> bias;
+            if (b >= 0.0f) bias = b;
+            call = [&w, j, bias] { w.setJointBiasFactor(j, bias); };
+        } else if (command == "target") {
+            MouseJointId m = mouse(f.word());
+            Vec2 t = f.v();
+            call = [&w, m, t] { w.setMouseTarget(m, t); };
+        } else if (command == "gravity") {
+            Vec2 g = f.v();
+            call = [&w, g] { w.setGravity(g); };
+        } else if (command == "correction") {
+            auto c = static_cast<ContactCorrection>(f.i());
+            call = [&w, c] { w.setContactCorrection(c); };
+        } else if (command == "sleep") {
+            bool on = f.b();
+            call = [&w, on] { w.setSleepEnabled(on); };
+        } else if (command == "step") {
+            // An optional fourth field repeats the step (hand-written reproductions).
+            float dt = f.f();
+            int vi = f.i();
+            int pi = f.i();
+            int repeat = f.optionalInt(1);
+            std::string* what = &result.nonFinite;
+            call = [&w, dt, vi, pi, repeat, what] {
+                for (int k = 0; k < repeat; ++k) {
+                    w.step(dt, vi, pi);
+                    if (!worldIsFinite(w, what)) return;
+                }
+            };
+        } else {
+            result.error = "line " + std::to_string(result.lines) + ": unknown command " + command;
+            return result;
+        }
+        if (!f.ok()) {
+            result.error =
+                "line " + std::to_string(result.lines) + ": cannot read \"" + line + "\"";
+            return result;
+        }
+        if (missing) {
+            ++result.skipped;
+            continue;
+        }
+        try {
+            call();
+            ++result.applied;
+        } catch (const Error&) {
+            ++result.refused;
+        }
+        if (command == "step" && !worldIsFinite(w, &result.nonFinite)) {
+            result.nonFiniteLine = result.lines;
+            return result;
+        }
+    }
+    return result;
+}
+
+}  // namespace pivot::fuzz

@@ -1,0 +1,93 @@
+// A journal of the calls that changed a world, one line each, and its replay. The fuzz driver
+// makes its changing calls through a Journal, so that when a world goes wrong the calls that
+// built it can be written out, replayed, and cut down (tests/fuzz/reduce.py) to a short
+// reproduction. Refused calls change nothing (the driver checks that), so only accepted ones
+// are written. Objects are named by kind and creation number (b3, s7, j2, m0); a replayed line
+// naming an object whose creating line was cut is skipped. A step line may end with a repeat
+// count, for reproductions written by hand.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <map>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "pivot/pivot.h"
+
+namespace pivot::fuzz {
+
+class Journal {
+public:
+    /// Starts a new journal for `world`, made from `def`.
+    void begin(World& world, const WorldDef& def);
+    const std::vector<std::string>& lines() const { return lines_; }
+    /// Writes the journal to a file; false if it cannot.
+    bool write(const std::string& path) const;
+
+    // The world's changing calls: each makes the call and, if it returns, writes its line.
+    BodyId createBody(const BodyDef& def);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    JointId createJoint(const RevoluteJointDef& def);
+    MouseJointId createMouseJoint(const MouseJointDef& def);
+    void destroyBody(BodyId id);
+    void destroyShape(ShapeId id);
+    void destroyJoint(JointId id);
+    void destroyMouseJoint(MouseJointId id);
+    void setBodyTransform(BodyId id, Vec2 position, float angle);
+    void setBodyLinearVelocity(BodyId id, Vec2 v);
+    void setBodyAngularVelocity(BodyId id, float w);
+    void applyForce(BodyId id, Vec2 force, Vec2 point);
+    void applyForceToCenter(BodyId id, Vec2 force);
+    void applyTorque(BodyId id, float torque);
+    void applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 point);
+    void applyAngularImpulse(BodyId id, float impulse);
+    void setBodyAwake(BodyId id, bool awake);
+    void setBodySleepAllowed(BodyId id, bool allowed);
+    void setBodyType(BodyId id, BodyType type);
+    void setShapeDensity(ShapeId id, float density);
+    void setShapeFilter(ShapeId id, const Filter& filter);
+    void setJointLimit(JointId id, const JointLimit& limit);
+    void setJointMotor(JointId id, const JointMotor& motor);
+    void setJointPositionSolver(JointId id, PositionSolver solver);
+    void setJointBiasFactor(JointId id, std::optional<float> bias);
+    void setMouseTarget(MouseJointId id, Vec2 target);
+    void setGravity(Vec2 gravity);
+    void setContactCorrection(ContactCorrection correction);
+    void setSleepEnabled(bool enabled);
+    void step(float dt, int velocityIterations, int positionIterations);
+
+private:
+    using Key = std::tuple<char, std::int32_t, std::uint32_t>;
+    template <typename Id>
+    std::string nameOf(char kind, Id id);
+    template <typename Id>
+    std::string nameNew(char kind, Id id);
+
+    World* world_ = nullptr;
+    std::vector<std::string> lines_;
+    std::map<Key, std::string> names_;
+    int created_ = 0;
+};
+
+struct ReplayResult {
+    int lines = 0;
+    int applied = 0;  ///< calls that returned
+    int refused = 0;  ///< calls that threw pivot::Error
+    int skipped = 0;  ///< lines naming an object that does not exist (its creation was cut)
+    /// The first line (1-based) after whose step a body or joint reported a non-finite number.
+    int nonFiniteLine = 0;
+    std::string nonFinite;  ///< what was not finite
+    std::string error;      ///< a line that could not be read
+};
+
+/// Replays a journal into a fresh world, stopping at the first non-finite number.
+ReplayResult replay(std::istream& in);
+
+/// Whether every body and joint of the world reports finite numbers; if not, what did not.
+bool worldIsFinite(const World& world, std::string* what = nullptr);
+
+}  // namespace pivot::fuzz
