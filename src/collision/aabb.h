@@ -23,6 +23,11 @@ inline bool contains(const AABB& outer, const AABB& inner) {
            inner.upper.x <= outer.upper.x && inner.upper.y <= outer.upper.y;
 }
 
+/// Whether `box` contains the point `p`.
+inline bool contains(const AABB& box, Vec2 p) {
+    return box.lower.x <= p.x && box.lower.y <= p.y && p.x <= box.upper.x && p.y <= box.upper.y;
+}
+
 inline AABB combine(const AABB& a, const AABB& b) {
     return {{std::min(a.lower.x, b.lower.x), std::min(a.lower.y, b.lower.y)},
             {std::max(a.upper.x, b.upper.x), std::max(a.upper.y, b.upper.y)}};

@@ -73,10 +73,30 @@ bool DynamicTree::needsMove(std::int32_t proxyId, const AABB& tightBox, Vec2 dis
 
 bool DynamicTree::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) {
     if (!needsMove(proxyId, tightBox, displacement)) return false;
+    const AABB box = fatBoxFor(tightBox, displacement);
+    // A proxy whose new box is centred inside its old one has only shifted (a swinging grid, a
+    // settling pile): it keeps its place in the tree, and its ancestors' boxes are refitted, a
+    // walk to the root instead of a removal and a search for the best sibling. One that went
+    // further is re-inserted, so the tree keeps grouping proxies that are near each other. The
+    // tree's shape never changes which pairs are found, nor their order (they are sorted).
+    if (contains(nodes_[proxyId].box, 0.5f * (box.lower + box.upper))) {
+        nodes_[proxyId].box = box;
+        refitBoxesUpwards(nodes_[proxyId].parent);
+        return true;
+    }
     removeLeaf(proxyId);
-    nodes_[proxyId].box = fatBoxFor(tightBox, displacement);
+    nodes_[proxyId].box = box;
     insertLeaf(proxyId);
     return true;
+}
+
+void DynamicTree::refitBoxesUpwards(std::int32_t nodeId) {
+    for (; nodeId != kNullNode; nodeId = nodes_[nodeId].parent) {
+        Node& node = nodes_[nodeId];
+        const AABB box = combine(nodes_[node.child1].box, nodes_[node.child2].box);
+        if (box.lower == node.box.lower && box.upper == node.box.upper) return;  // nor above
+        node.box = box;
+    }
 }
 
 const AABB& DynamicTree::fatBox(std::int32_t proxyId) const {

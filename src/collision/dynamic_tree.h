@@ -108,6 +108,9 @@ private:
     void insertLeaf(std::int32_t leaf);
     void removeLeaf(std::int32_t leaf);
     std::int32_t chooseSibling(const AABB& leafBox) const;
+    /// Recomputes the boxes from `nodeId` up to the root (heights unchanged), stopping where a
+    /// box does not change.
+    void refitBoxesUpwards(std::int32_t nodeId);
     /// Refits boxes and heights from `nodeId` to the root, rotating where a node is unbalanced.
     void refitUpwards(std::int32_t nodeId);
     /// Rotates `nodeId`'s subtree until its children's heights differ by at most one and refits
