@@ -125,7 +125,7 @@ void BroadPhase::updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayP
     for (std::vector<ProxyPair>& pairs : workerPairs_) pairs.clear();
     markBuffered(1);
     pool.parallelFor(
-        static_cast<int>(moveBuffer_.size()), 128, [&](int begin, int end, int worker) {
+        static_cast<int>(moveBuffer_.size()), 256, [&](int begin, int end, int worker) {
             std::vector<ProxyPair>& pairs = workerPairs_[worker];
             for (int i = begin; i < end; ++i) {
                 const std::int32_t proxy = moveBuffer_[i];
