@@ -58,7 +58,34 @@ struct Options {
     int repeats = 3;
     int workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     std::string only;
+    std::string profileEngine;  // --profile: step one engine, untimed, for a profiler
+    int profileSteps = 0;
 };
+
+// --profile ENGINE STEPS: build the --scene in one engine and step it STEPS times on one thread,
+// nothing else, so that a profiler (perf, callgrind) sees only the engine. Instructions per
+// step are the difference of two such runs over their difference in steps.
+int profileRun(const Options& options) {
+    for (const bench::BenchScene& scene : bench::benchScenes()) {
+        if (scene.name != options.only) continue;
+        bench::Stepper step;
+        if (options.profileEngine == "box2d") {
+            step = scene.buildBox2d();
+        } else if (options.profileEngine == "full_ngs") {
+            step = scene.buildPivot(PositionSolver::FullNGS, 1);
+        } else if (options.profileEngine == "baumgarte") {
+            step = scene.buildPivot(PositionSolver::Baumgarte, 1);
+        } else {
+            std::cerr << "pivot-bench: --profile takes full_ngs, baumgarte or box2d (got '"
+                      << options.profileEngine << "')\n";
+            return 2;
+        }
+        for (int i = 0; i < options.profileSteps; ++i) step(i);
+        return 0;
+    }
+    std::cerr << "pivot-bench: --profile needs --scene NAME (see --list)\n";
+    return 2;
+}
 
 double millisecondsPerStep(const bench::Stepper& step, int steps) {
     Clock::time_point start = Clock::now();
@@ -194,6 +221,9 @@ int main(int argc, char** argv) {
             options.workers = std::max(1, std::min(64, std::atoi(argv[++i])));
         } else if (arg == "--scene" && i + 1 < argc) {
             options.only = argv[++i];
+        } else if (arg == "--profile" && i + 2 < argc) {
+            options.profileEngine = argv[++i];
+            options.profileSteps = std::max(0, std::atoi(argv[++i]));
         } else if (arg == "--list") {
             for (const bench::BenchScene& scene : bench::benchScenes()) {
                 std::printf("%-15s %s\n", scene.name.c_str(), scene.description.c_str());
@@ -201,7 +231,7 @@ int main(int argc, char** argv) {
             return 0;
         } else {
             std::cerr << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] "
-                         "[--scene NAME] [--list]\n"
+                         "[--scene NAME] [--list] [--profile ENGINE STEPS]\n"
                          "  Times each scene in pivot2d (FullNGS and Baumgarte joints) and in\n"
                          "  Box2D 2.4.1, sleeping and continuous collision off, 1/60 s steps\n"
                          "  with 8 velocity and 3 position iterations, and prints the median\n"
@@ -210,7 +240,10 @@ int main(int argc, char** argv) {
                          "  comparison, on one thread; Box2D 2.4.1 is single-threaded.\n"
                          "  --quick    a smoke run: a twentieth of the steps, one repeat\n"
                          "  --csv      print scene,solver,pivot_ms,box2d_ms,speedup lines only\n"
-                         "  --list     name and describe the scenes\n";
+                         "  --list     name and describe the scenes\n"
+                         "  --profile ENGINE STEPS  step --scene STEPS times in one engine\n"
+                         "             (full_ngs, baumgarte or box2d) on one thread, untimed,\n"
+                         "             for perf or callgrind\n";
             return arg == "--help" ? 0 : 2;
         }
     }
@@ -223,6 +256,8 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
+
+    if (!options.profileEngine.empty()) return profileRun(options);
 
     std::vector<Result> results;
     for (const bench::BenchScene& scene : bench::benchScenes()) {
