@@ -35,6 +35,8 @@ int replay(const char* path) {
     }
     std::printf("%d lines: %d calls returned, %d refused, %d skipped\n", r.lines, r.applied,
                 r.refused, r.skipped);
+    std::printf("blown-up joints reported: %ld; discarded body states: %ld\n", r.blownUpJoints,
+                r.discardedBodies);
     if (r.nonFiniteLine > 0) {
         std::printf("non-finite after the step of line %d: %s\n", r.nonFiniteLine,
                     r.nonFinite.c_str());

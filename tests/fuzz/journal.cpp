@@ -520,9 +520,12 @@ ReplayResult replay(std::istream& in) {
             int pi = f.i();
             int repeat = f.optionalInt(1);
             std::string* what = &result.nonFinite;
-            call = [&w, dt, vi, pi, repeat, what] {
+            ReplayResult* counts = &result;
+            call = [&w, dt, vi, pi, repeat, what, counts] {
                 for (int k = 0; k < repeat; ++k) {
                     w.step(dt, vi, pi);
+                    counts->blownUpJoints += w.lastStepStats().blownUpJointCount;
+                    counts->discardedBodies += w.lastStepStats().discardedBodyCount;
                     if (!worldIsFinite(w, what)) return;
                 }
             };

@@ -81,6 +81,10 @@ struct ReplayResult {
     /// The first line (1-based) after whose step a body or joint reported a non-finite number.
     int nonFiniteLine = 0;
     std::string nonFinite;  ///< what was not finite
+    /// Joints the world reported blown up, and body-steps whose non-finite solved state it
+    /// discarded (StepStats), over the whole replay.
+    long blownUpJoints = 0;
+    long discardedBodies = 0;
     std::string error;      ///< a line that could not be read
 };
 

@@ -2,7 +2,9 @@
 // went wrong that a long game session would hit:
 //   - every body's pose and velocity and every joint's reaction are finite;
 //   - every body stays within kPositionBound of the origin;
-//   - no run blows up (scenes::isBlownUp);
+//   - a run that blows up (scenes::isBlownUp: a runaway speed) passes only if the world
+//     reported the blown-up joints (World::jointBlownUp, StepStats::blownUpJointCount) and
+//     every body stayed finite and within the bound: the engine contains a blow-up;
 //   - the heap does not grow once the scene has settled: the live bytes allocated through
 //     operator new (counted by the replacement below) never exceed what was live at the end of
 //     the warm-up by more than the slack (kHeapSlackBytes). The warm-up is the first
@@ -107,6 +109,8 @@ struct RunResult {
     long long allocationsAfterWarmup = 0;
     float farthest = 0.0f;     // m, largest |position| seen
     long lastGrowthStep = -1;  // the last step after which the heap held more than ever before
+    long blownUpJoints = 0;    // joints the world reported blown up
+    long discardedBodies = 0;  // body-steps whose non-finite solved state the world discarded
 };
 
 // What the checks look at, refreshed when the scene adds or removes bodies or joints (which
@@ -173,11 +177,12 @@ RunResult soak(const SceneInfo& info, PositionSolver solver, long steps, long wa
                 result.problem = "non-finite joint " + std::to_string(j.index);
             }
         }
-        // TODO(blow-up API): the solver is to report a blown-up joint (a query or callback,
-        // being added with the solver work). Once it exists, a run that blows up passes only
-        // if the world reported the joint and every other body stayed finite; until then no
-        // scene blows up and a blow-up is a failure.
-        if (result.problem.empty() && isBlownUp(scene)) result.problem = "the scene blew up";
+        const StepStats& stats = world.lastStepStats();
+        result.blownUpJoints += stats.blownUpJointCount;
+        result.discardedBodies += stats.discardedBodyCount;
+        if (result.problem.empty() && isBlownUp(scene) && result.blownUpJoints == 0) {
+            result.problem = "the scene blew up and the world reported no blown-up joint";
+        }
         if (!result.problem.empty()) {
             result.ok = false;
             result.problem += " after step " + std::to_string(i);
@@ -264,18 +269,19 @@ int main(int argc, char** argv) {
         "or 1/%lld\n",
         options.steps, warmup, static_cast<double>(kPositionBound), kHeapSlackBytes,
         kHeapSlackFraction);
-    std::printf("%-18s %-16s %8s %8s %12s %12s %12s %10s %10s %10s  %s\n", "scene", "solver",
-                "steps", "seconds", "heap@warmup", "heap peak", "heap@end", "allocs", "growth@",
-                "farthest", "result");
+    std::printf("%-18s %-16s %8s %8s %12s %12s %12s %10s %10s %10s %8s %9s  %s\n", "scene",
+                "solver", "steps", "seconds", "heap@warmup", "heap peak", "heap@end", "allocs",
+                "growth@", "farthest", "blown-up", "discarded", "result");
     int failures = 0;
     for (const SceneInfo* info : scenes) {
         for (PositionSolver solver : solvers) {
             RunResult r = soak(*info, solver, options.steps, warmup);
-            std::printf("%-18s %-16s %8ld %8.1f %12lld %12lld %12lld %10lld %10ld %10.1f  %s\n",
-                        info->name, positionSolverName(solver), r.stepsTaken, r.seconds,
-                        r.bytesAfterWarmup, r.peakAfterWarmup, r.bytesAtEnd,
-                        r.allocationsAfterWarmup, r.lastGrowthStep, static_cast<double>(r.farthest),
-                        r.ok ? "ok" : r.problem.c_str());
+            std::printf(
+                "%-18s %-16s %8ld %8.1f %12lld %12lld %12lld %10lld %10ld %10.1f %8ld %9ld  %s\n",
+                info->name, positionSolverName(solver), r.stepsTaken, r.seconds,
+                r.bytesAfterWarmup, r.peakAfterWarmup, r.bytesAtEnd, r.allocationsAfterWarmup,
+                r.lastGrowthStep, static_cast<double>(r.farthest), r.blownUpJoints,
+                r.discardedBodies, r.ok ? "ok" : r.problem.c_str());
             std::fflush(stdout);
             if (!r.ok) ++failures;
         }
