@@ -950,6 +950,8 @@ private:
         if (attempt("World::step", verdict(bad),
                     [&] { journal_.step(dt, velocityIterations, positionIterations); })) {
             ++report_.steps;
+            report_.blownUpJoints += world_->lastStepStats().blownUpJointCount;
+            report_.discardedBodies += world_->lastStepStats().discardedBodyCount;
             checkInvariants("a step");
         }
     }

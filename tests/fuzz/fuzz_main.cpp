@@ -110,6 +110,8 @@ int main(int argc, char** argv) {
                     report.nonFiniteWorlds[i]);
     }
     std::printf("%s\n", report.nonFiniteWorlds.empty() ? "" : ")");
+    std::printf("contained: %ld blown-up joints reported, %ld non-finite body states discarded\n",
+                report.blownUpJoints, report.discardedBodies);
     for (const auto& [name, count] : report.byOperation) {
         std::printf("  %-32s %9ld accepted %9ld rejected\n", name.c_str(), count.accepted,
                     count.rejected);
