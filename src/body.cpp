@@ -13,10 +13,12 @@ void updateBodyMass(Body& body, const SlotPool<Shape>& shapes) {
 
     if (body.type != BodyType::Dynamic) {
         // Without mass the centre is the origin. When it moves there (a dynamic body made
-        // kinematic), the velocity follows the origin, so the body's motion does not jump.
+        // kinematic), a kinematic body's velocity follows the origin, so its motion does not
+        // jump. A static body has no velocity to adjust, and must not get one from a centre
+        // that a diverged solver left non-finite.
         Vec2 oldCenter = body.center;
         body.center = body.xf.p;
-        if (body.center != oldCenter) {
+        if (body.type == BodyType::Kinematic && body.center != oldCenter) {
             body.linearVelocity += cross(body.angularVelocity, body.center - oldCenter);
         }
         return;

@@ -273,9 +273,12 @@ public:
     Vec2 mouseTarget(MouseJointId id) const;
 
     // --- inspection -------------------------------------------------------------------------
-    /// A 64-bit hash of the exact bits of every body's pose, velocity, pending force and mass,
-    /// every shape's owner and density, and every joint's bodies, solver, bias and impulse:
-    /// equal hashes mean a bit-for-bit equal simulation state.
+    /// A 64-bit hash of the exact bits of everything a call can change: the world's settings,
+    /// every body (pose, velocities, pending forces, mass properties, damping, sleep state),
+    /// shape (geometry, material, filter, broad-phase box), joint (anchors, limit, motor,
+    /// solver, bias, impulses) and mouse joint, the contacts with their manifolds, the last
+    /// step's events and statistics. Equal hashes mean a bit-for-bit equal world; a refused
+    /// call leaves it unchanged. Values are not promised across compilers or CPUs.
     std::uint64_t stateHash() const;
 
     struct Impl;

@@ -1291,12 +1291,15 @@ private:
                 }
             }
         }
-        const StepStats& stats = w.lastStepStats();
-        if (stats.touchingCount > stats.contactCount || stats.sleepingBodyCount > w.bodyCount() ||
-            stats.islandCount < 0 || stats.positionIterations < 0) {
-            failure("the step statistics do not add up" + where);
-        }
         if (std::string(after) == "a step") {
+            // Only right after a step: destroying bodies since leaves the statistics of a
+            // larger world.
+            const StepStats& stats = w.lastStepStats();
+            if (stats.touchingCount > stats.contactCount ||
+                stats.sleepingBodyCount > w.bodyCount() || stats.islandCount < 0 ||
+                stats.positionIterations < 0) {
+                failure("the step statistics do not add up" + where);
+            }
             for (const auto& events : {w.contactBeginEvents(), w.contactEndEvents()}) {
                 for (const ContactEvent& e : events) {
                     if (!w.isValid(e.shapeA) || !w.isValid(e.shapeB)) {
