@@ -64,7 +64,10 @@ struct RevoluteJointDef {
     BodyId bodyA;
     BodyId bodyB;
     Vec2 localAnchorA;  ///< m, the pin in body A's frame (origin-relative)
-    Vec2 localAnchorB;  ///< m, the pin in body B's frame
+    /// m, the pin in body B's frame. Anchors that are more than kJointBlowUpSeparation apart
+    /// when a step reaches the joint make it blown up (World::jointBlownUp): it is let go
+    /// rather than yanking the bodies together.
+    Vec2 localAnchorB;
     /// rad, angleB - angleA when the joint angle is zero.
     float referenceAngle = 0.0f;
     /// When set, the pin is this world point: the local anchors and the reference angle are
