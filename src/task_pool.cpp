@@ -63,7 +63,7 @@ void TaskPool::barrier() {
     // The others are usually a few microseconds behind: spin that long. If they are not (the
     // machine has more busy threads than cores, and one of ours is waiting for a core), sleep
     // and give the core away rather than burn the time slice it needs.
-    for (int spin = 0; spin < kBarrierSpins; ++spin) {
+    for (int spin = 0; spin < kWaitSpins; ++spin) {
         if (round_.load(std::memory_order_acquire) != round) return;
         relaxCpu();
     }
@@ -81,28 +81,41 @@ void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline
         const int target = std::max(1, count / (4 * workerCount()));
         chunk_ = std::max(minChunk, target);
         next_.store(0, std::memory_order_relaxed);
-        busy_ = static_cast<int>(threads_.size());
-        ++generation_;
+        busy_.store(static_cast<int>(threads_.size()), std::memory_order_relaxed);
+        generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
     takeChunks(0);
+    for (int spin = 0; spin < kWaitSpins; ++spin) {
+        if (busy_.load(std::memory_order_acquire) == 0) return;
+        relaxCpu();
+    }
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return busy_ == 0; });
+    done_.wait(lock, [this] { return busy_.load(std::memory_order_acquire) == 0; });
 }
 
 void TaskPool::workerLoop(int worker) {
     std::uint64_t seen = 0;
     for (;;) {
+        // The next stage of a step usually starts within microseconds: watch for it before
+        // sleeping, so that most hand-offs cost no wake-up.
+        for (int spin = 0; spin < kWaitSpins; ++spin) {
+            if (generation_.load(std::memory_order_acquire) != seen) break;
+            relaxCpu();
+        }
         {
             std::unique_lock<std::mutex> lock(mutex_);
-            wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+            wake_.wait(lock, [&] {
+                return stopping_ || generation_.load(std::memory_order_relaxed) != seen;
+            });
             if (stopping_) return;
-            seen = generation_;
+            seen = generation_.load(std::memory_order_relaxed);
         }
         takeChunks(worker);
-        {
+        if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+            // Under the lock, so a caller between its last check and its wait cannot miss it.
             std::lock_guard<std::mutex> lock(mutex_);
-            if (--busy_ == 0) done_.notify_one();
+            done_.notify_one();
         }
     }
 }

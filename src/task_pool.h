@@ -67,18 +67,23 @@ private:
     std::condition_variable wake_;
     std::condition_variable done_;
     // The current job. generation_ counts jobs, so a worker can tell a new job from a spurious
-    // wake-up; busy_ counts workers still inside the job.
-    std::uint64_t generation_ = 0;
-    int busy_ = 0;
+    // wake-up; busy_ counts workers still inside the job. Both are atomic so that a worker can
+    // watch for the next job, and the caller for the end of this one, without the lock.
+    std::atomic<std::uint64_t> generation_{0};
+    std::atomic<int> busy_{0};
     bool stopping_ = false;
     void* context_ = nullptr;
     Trampoline trampoline_ = nullptr;
     int count_ = 0;
     int chunk_ = 1;
     std::atomic<int> next_{0};
+    // How long a waiting thread spins before it sleeps: a worker waiting for the next job, the
+    // caller waiting for the end of one, a member at a barrier. The stages of a step follow each
+    // other within microseconds, less than a wake-up costs; after about that long, the wait is
+    // likely a long one (the game between two steps, or more busy threads than cores).
+    static constexpr int kWaitSpins = 2000;
     // The region barrier: arrivals in this round, the round number, and where members sleep
-    // once they have spun kBarrierSpins times.
-    static constexpr int kBarrierSpins = 2000;
+    // once they have spun kWaitSpins times.
     std::atomic<int> arrived_{0};
     std::atomic<std::uint64_t> round_{0};
     std::mutex barrierMutex_;

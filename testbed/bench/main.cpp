@@ -57,24 +57,26 @@ struct Options {
     bool csv = false;
     int repeats = 3;
     int workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    bool workersGiven = false;  // --workers on the command line (--profile then uses it)
     std::string only;
     std::string profileEngine;  // --profile: step one engine, untimed, for a profiler
     int profileSteps = 0;
 };
 
-// --profile ENGINE STEPS: build the --scene in one engine and step it STEPS times on one thread,
-// nothing else, so that a profiler (perf, callgrind) sees only the engine. Instructions per
+// --profile ENGINE STEPS: build the --scene in one engine and step it STEPS times on one thread
+// (or --workers threads, if given), nothing else, so that a profiler (perf, callgrind) sees only the engine. Instructions per
 // step are the difference of two such runs over their difference in steps.
 int profileRun(const Options& options) {
+    const int workers = options.workersGiven ? options.workers : 1;
     for (const bench::BenchScene& scene : bench::benchScenes()) {
         if (scene.name != options.only) continue;
         bench::Stepper step;
         if (options.profileEngine == "box2d") {
             step = scene.buildBox2d();
         } else if (options.profileEngine == "full_ngs") {
-            step = scene.buildPivot(PositionSolver::FullNGS, 1);
+            step = scene.buildPivot(PositionSolver::FullNGS, workers);
         } else if (options.profileEngine == "baumgarte") {
-            step = scene.buildPivot(PositionSolver::Baumgarte, 1);
+            step = scene.buildPivot(PositionSolver::Baumgarte, workers);
         } else {
             std::cerr << "pivot-bench: --profile takes full_ngs, baumgarte or box2d (got '"
                       << options.profileEngine << "')\n";
@@ -219,6 +221,7 @@ int main(int argc, char** argv) {
             options.repeats = std::max(1, std::atoi(argv[++i]));
         } else if (arg == "--workers" && i + 1 < argc) {
             options.workers = std::max(1, std::min(64, std::atoi(argv[++i])));
+            options.workersGiven = true;
         } else if (arg == "--scene" && i + 1 < argc) {
             options.only = argv[++i];
         } else if (arg == "--profile" && i + 2 < argc) {
@@ -242,8 +245,9 @@ int main(int argc, char** argv) {
                          "  --csv      print scene,solver,pivot_ms,box2d_ms,speedup lines only\n"
                          "  --list     name and describe the scenes\n"
                          "  --profile ENGINE STEPS  step --scene STEPS times in one engine\n"
-                         "             (full_ngs, baumgarte or box2d) on one thread, untimed,\n"
-                         "             for perf or callgrind\n";
+                         "             (full_ngs, baumgarte or box2d) on one thread (pivot2d:\n"
+                         "             --workers threads if given), untimed, for perf or\n"
+                         "             callgrind\n";
             return arg == "--help" ? 0 : 2;
         }
     }
