@@ -19,6 +19,22 @@ inline void relaxCpu() {
 #endif
 }
 
+// Spins until ready() or until about `limit` has passed, and returns ready(). The clock is read
+// once every few dozen pauses: a pause lasts from about 10 to about 150 cycles depending on the
+// processor, so counting pauses would make the wait vary tenfold.
+template <typename Ready>
+bool spinUntil(std::chrono::microseconds limit, Ready&& ready) {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point until = Clock::now() + limit;
+    for (;;) {
+        for (int i = 0; i < 32; ++i) {
+            if (ready()) return true;
+            relaxCpu();
+        }
+        if (Clock::now() >= until) return ready();
+    }
+}
+
 }  // namespace
 
 TaskPool::TaskPool(int workers) {
@@ -63,9 +79,8 @@ void TaskPool::barrier() {
     // The others are usually a few microseconds behind: spin that long. If they are not (the
     // machine has more busy threads than cores, and one of ours is waiting for a core), sleep
     // and give the core away rather than burn the time slice it needs.
-    for (int spin = 0; spin < kWaitSpins; ++spin) {
-        if (round_.load(std::memory_order_acquire) != round) return;
-        relaxCpu();
+    if (spinUntil(kBarrierSpin, [&] { return round_.load(std::memory_order_acquire) != round; })) {
+        return;
     }
     std::unique_lock<std::mutex> lock(barrierMutex_);
     barrierWake_.wait(lock, [&] { return round_.load(std::memory_order_acquire) != round; });
@@ -86,10 +101,7 @@ void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline
     }
     wake_.notify_all();
     takeChunks(0);
-    for (int spin = 0; spin < kWaitSpins; ++spin) {
-        if (busy_.load(std::memory_order_acquire) == 0) return;
-        relaxCpu();
-    }
+    if (spinUntil(kJobSpin, [this] { return busy_.load(std::memory_order_acquire) == 0; })) return;
     std::unique_lock<std::mutex> lock(mutex_);
     done_.wait(lock, [this] { return busy_.load(std::memory_order_acquire) == 0; });
 }
@@ -99,10 +111,7 @@ void TaskPool::workerLoop(int worker) {
     for (;;) {
         // The next stage of a step usually starts within microseconds: watch for it before
         // sleeping, so that most hand-offs cost no wake-up.
-        for (int spin = 0; spin < kWaitSpins; ++spin) {
-            if (generation_.load(std::memory_order_acquire) != seen) break;
-            relaxCpu();
-        }
+        spinUntil(kJobSpin, [&] { return generation_.load(std::memory_order_acquire) != seen; });
         {
             std::unique_lock<std::mutex> lock(mutex_);
             wake_.wait(lock, [&] {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
@@ -77,13 +78,15 @@ private:
     int count_ = 0;
     int chunk_ = 1;
     std::atomic<int> next_{0};
-    // How long a waiting thread spins before it sleeps: a worker waiting for the next job, the
-    // caller waiting for the end of one, a member at a barrier. The stages of a step follow each
-    // other within microseconds, less than a wake-up costs; after about that long, the wait is
-    // likely a long one (the game between two steps, or more busy threads than cores).
-    static constexpr int kWaitSpins = 2000;
+    // How long a waiting thread spins before it sleeps. The stages of a step follow each other
+    // within tens of microseconds, less than a wake-up costs, so a worker waiting for the next
+    // job, or the caller for the end of one, watches for about kJobSpin. Members at a barrier
+    // wait for each other only a few microseconds when all have a core; when one has not (more
+    // busy threads than cores), spinning holds the core it needs, so kBarrierSpin is short.
+    static constexpr std::chrono::microseconds kJobSpin{100};
+    static constexpr std::chrono::microseconds kBarrierSpin{25};
     // The region barrier: arrivals in this round, the round number, and where members sleep
-    // once they have spun kWaitSpins times.
+    // once they have spun for kBarrierSpin.
     std::atomic<int> arrived_{0};
     std::atomic<std::uint64_t> round_{0};
     std::mutex barrierMutex_;

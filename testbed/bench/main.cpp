@@ -64,8 +64,9 @@ struct Options {
 };
 
 // --profile ENGINE STEPS: build the --scene in one engine and step it STEPS times on one thread
-// (or --workers threads, if given), nothing else, so that a profiler (perf, callgrind) sees only the engine. Instructions per
-// step are the difference of two such runs over their difference in steps.
+// (or --workers threads, if given), nothing else, so that a profiler (perf, callgrind) sees only
+// the engine. Instructions per step are the difference of two such runs over their difference in
+// steps.
 int profileRun(const Options& options) {
     const int workers = options.workersGiven ? options.workers : 1;
     for (const bench::BenchScene& scene : bench::benchScenes()) {
@@ -254,7 +255,8 @@ int main(int argc, char** argv) {
 
     if (!options.only.empty()) {
         bool known = false;
-        for (const bench::BenchScene& scene : bench::benchScenes()) known |= scene.name == options.only;
+        for (const bench::BenchScene& scene : bench::benchScenes())
+            known |= scene.name == options.only;
         if (!known) {
             std::cerr << "pivot-bench: no scene named '" << options.only << "' (see --list)\n";
             return 2;
