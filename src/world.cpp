@@ -273,10 +273,9 @@ std::uint64_t World::stateHash() const {
         }
     }
     const StepStats& s = w.stats;
-    for (int value :
-         {s.islandCount, s.bodyCount, s.jointCount, s.translationClamps, s.rotationClamps,
-          s.positionIterations, s.contactCount, s.touchingCount, s.sleepingBodyCount,
-          s.blownUpJointCount, s.discardedBodyCount}) {
+    for (int value : {s.islandCount, s.bodyCount, s.jointCount, s.translationClamps,
+                      s.rotationClamps, s.positionIterations, s.contactCount, s.touchingCount,
+                      s.sleepingBodyCount, s.blownUpJointCount, s.discardedBodyCount}) {
         h.add(static_cast<std::int32_t>(value));
     }
     return h.value();

@@ -86,7 +86,8 @@ void IslandScheduler::giveFixedBodiesPrivateSlots(const IslandView& island,
             for (std::int32_t& index : pair) {
                 if (index < island.bodyCount && fixed_[index]) {
                     schedule.fixedCopies.push_back(index);
-                    index = island.bodyCount + static_cast<std::int32_t>(schedule.fixedCopies.size()) - 1;
+                    index = island.bodyCount +
+                            static_cast<std::int32_t>(schedule.fixedCopies.size()) - 1;
                 }
             }
         }

@@ -58,16 +58,11 @@ struct IslandSet {
 
     IslandView view(int index) const {
         const Range& r = ranges[index];
-        return {bodies.data() + r.bodyBegin,
-                r.bodyEnd - r.bodyBegin,
-                contacts.data() + r.contactBegin,
-                contactBodies.data() + r.contactBegin,
-                r.contactEnd - r.contactBegin,
-                joints.data() + r.jointBegin,
-                jointBodies.data() + r.jointBegin,
-                r.jointEnd - r.jointBegin,
-                mouseJoints.data() + r.mouseBegin,
-                mouseBodies.data() + r.mouseBegin,
+        return {bodies.data() + r.bodyBegin,       r.bodyEnd - r.bodyBegin,
+                contacts.data() + r.contactBegin,  contactBodies.data() + r.contactBegin,
+                r.contactEnd - r.contactBegin,     joints.data() + r.jointBegin,
+                jointBodies.data() + r.jointBegin, r.jointEnd - r.jointBegin,
+                mouseJoints.data() + r.mouseBegin, mouseBodies.data() + r.mouseBegin,
                 r.mouseEnd - r.mouseBegin};
     }
 };

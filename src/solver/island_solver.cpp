@@ -59,8 +59,7 @@ void makeInert(RevoluteConstraint& c) {
 // Build each joint's solver constraint in its strategy's group (no velocity is touched: the
 // warm start comes after, in warmStartJoints).
 void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
-                   SlotPool<RevoluteJoint>& joints, const StepContext& step,
-                   IslandReport& report) {
+                   SlotPool<RevoluteJoint>& joints, const StepContext& step, IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
     for (int g = 0; g < kPositionSolverCount; ++g) {
         RevoluteConstraints& group = work.groups[g];
@@ -264,8 +263,8 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     work.memberReports.resize(static_cast<std::size_t>(teamSize));
 }
 
-IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
-                         IslandWorkspace& work, SolverStorage& storage, const StepContext& step) {
+IslandReport solveIsland(const Team& team, const IslandSet& set, int index, IslandWorkspace& work,
+                         SolverStorage& storage, const StepContext& step) {
     const IslandView island = set.view(index);
     const IslandSchedule& schedule = work.schedule;
     SlotPool<Body>& bodies = storage.bodies;
@@ -317,9 +316,8 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
     team.sync();
 
     PositionPhaseResult phase =
-        solvePositionPhase(team, work.groups, schedule, work.contactSolver,
-                           work.positions.data(), work.positionScratch, step.positionIterations,
-                           step.dt);
+        solvePositionPhase(team, work.groups, schedule, work.contactSolver, work.positions.data(),
+                           work.positionScratch, step.positionIterations, step.dt);
     writeBack(team, island, work, bodies, mine);
     team.sync();
     if (!team.leader()) return IslandReport{};

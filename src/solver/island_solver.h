@@ -37,8 +37,8 @@ struct IslandReport {
     int translationClamps = 0;
     int rotationClamps = 0;
     int positionIterations = 0;
-    int blownUpJoints = 0;     // joints found blown up this step
-    int discardedBodies = 0;   // bodies whose solved state was non-finite, kept where they were
+    int blownUpJoints = 0;    // joints found blown up this step
+    int discardedBodies = 0;  // bodies whose solved state was non-finite, kept where they were
     bool fellAsleep = false;
 };
 

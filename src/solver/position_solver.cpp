@@ -27,8 +27,7 @@ void prepareBaumgarteBias(RevoluteConstraints& group, IndexRange range,
 }
 
 template <bool withBias>
-void solveVelocityRange(RevoluteConstraints& group, IndexRange range,
-                        SolverVelocity* velocities) {
+void solveVelocityRange(RevoluteConstraints& group, IndexRange range, SolverVelocity* velocities) {
     for (int k = range.begin; k < range.end; ++k) {
         RevoluteConstraint& c = group[k];
         solveRevoluteVelocity(c, velocities, withBias ? c.point.bias : Vec2{});
@@ -80,8 +79,7 @@ void solvePseudoVelocityPass(const Team& team, RevoluteConstraints& group,
 // NGS: one sweep of position-level solves over a range. Returns whether every joint was within
 // slop.
 template <bool rebuildMass>
-bool solveNgsRange(const RevoluteConstraints& group, IndexRange range,
-                   SolverPosition* positions) {
+bool solveNgsRange(const RevoluteConstraints& group, IndexRange range, SolverPosition* positions) {
     bool withinSlop = true;
     for (int k = range.begin; k < range.end; ++k) {
         // Evaluated for every joint: each solve moves the bodies, whatever the others report.
@@ -108,8 +106,8 @@ void warmStartJoints(const Team& team, const ConstraintGroups& groups,
     }
 }
 
-void solveVelocitySweep(const Team& team, ConstraintGroups& groups,
-                        const IslandSchedule& schedule, SolverVelocity* velocities) {
+void solveVelocitySweep(const Team& team, ConstraintGroups& groups, const IslandSchedule& schedule,
+                        SolverVelocity* velocities) {
     forEachBatch(team, schedule.jointBatches[kBaumgarte], [&](IndexRange range) {
         solveVelocityRange<true>(groups[kBaumgarte], range, velocities);
     });

@@ -43,8 +43,8 @@ void warmStartJoints(const Team& team, const ConstraintGroups& groups,
                      const IslandSchedule& schedule, SolverVelocity* velocities);
 
 /// One velocity iteration over every group, accumulating impulses.
-void solveVelocitySweep(const Team& team, ConstraintGroups& groups,
-                        const IslandSchedule& schedule, SolverVelocity* velocities);
+void solveVelocitySweep(const Team& team, ConstraintGroups& groups, const IslandSchedule& schedule,
+                        SolverVelocity* velocities);
 
 struct PositionPhaseResult {
     int sweeps = 0;       ///< NGS sweeps run
@@ -60,7 +60,7 @@ struct SweepTally {
 /// The position phase's scratch. Tallies alternate between two rounds, so that a member can
 /// publish one sweep's tally while another still reads the previous sweep's.
 struct PositionPhaseScratch {
-    std::vector<SolverVelocity> pseudo;  // one per solver slot
+    std::vector<SolverVelocity> pseudo;              // one per solver slot
     std::array<std::vector<SweepTally>, 2> tallies;  // one per member
 };
 

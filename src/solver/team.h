@@ -51,7 +51,8 @@ public:
     IndexRange share(const Batch& batch) const {
         const int count = batch.end - batch.begin;
         if (size_ == 1 || batch.serial || count < kMinSplit) {
-            return leader() ? IndexRange{batch.begin, batch.end} : IndexRange{batch.begin, batch.begin};
+            return leader() ? IndexRange{batch.begin, batch.end}
+                            : IndexRange{batch.begin, batch.begin};
         }
         const auto at = [&](int m) {
             return batch.begin + static_cast<int>(static_cast<std::int64_t>(count) * m / size_);

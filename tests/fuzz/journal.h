@@ -85,7 +85,7 @@ struct ReplayResult {
     /// discarded (StepStats), over the whole replay.
     long blownUpJoints = 0;
     long discardedBodies = 0;
-    std::string error;      ///< a line that could not be read
+    std::string error;  ///< a line that could not be read
 };
 
 /// Replays a journal into a fresh world, stopping at the first non-finite number.

@@ -95,7 +95,8 @@ float box2dWorstSeparation() {
     float worst = 0.0f;
     for (int i = 0; i < kSteps; ++i) {
         world.Step(kDt, 8, 3);
-        for (b2Joint* j : joints) worst = std::max(worst, (j->GetAnchorB() - j->GetAnchorA()).Length());
+        for (b2Joint* j : joints)
+            worst = std::max(worst, (j->GetAnchorB() - j->GetAnchorA()).Length());
     }
     return worst;
 }

@@ -278,10 +278,10 @@ int main(int argc, char** argv) {
             RunResult r = soak(*info, solver, options.steps, warmup);
             std::printf(
                 "%-18s %-16s %8ld %8.1f %12lld %12lld %12lld %10lld %10ld %10.1f %8ld %9ld  %s\n",
-                info->name, positionSolverName(solver), r.stepsTaken, r.seconds,
-                r.bytesAfterWarmup, r.peakAfterWarmup, r.bytesAtEnd, r.allocationsAfterWarmup,
-                r.lastGrowthStep, static_cast<double>(r.farthest), r.blownUpJoints,
-                r.discardedBodies, r.ok ? "ok" : r.problem.c_str());
+                info->name, positionSolverName(solver), r.stepsTaken, r.seconds, r.bytesAfterWarmup,
+                r.peakAfterWarmup, r.bytesAtEnd, r.allocationsAfterWarmup, r.lastGrowthStep,
+                static_cast<double>(r.farthest), r.blownUpJoints, r.discardedBodies,
+                r.ok ? "ok" : r.problem.c_str());
             std::fflush(stdout);
             if (!r.ok) ++failures;
         }

@@ -146,7 +146,8 @@ TEST(RevoluteJoint, AJointTornFurtherThanTheBlowUpSeparationIsReportedAndLetGo) 
             bd.position = {float(i) + 0.5f, 10.0f};
             BodyId box = world.createBody(bd);
             world.createShape(box, ShapeDef{}, Polygon::box(0.5f, 0.1f));
-            RevoluteJointDef def = RevoluteJointDef::atWorldAnchor(previous, box, {float(i), 10.0f});
+            RevoluteJointDef def =
+                RevoluteJointDef::atWorldAnchor(previous, box, {float(i), 10.0f});
             def.positionSolver = solver;
             joints.push_back(world.createJoint(def));
             boxes.push_back(box);

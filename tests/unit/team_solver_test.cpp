@@ -116,8 +116,8 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers) {
     for (int row = 0; row < n; ++row) {
         for (int col = 0; col < n; ++col) {
             BodyDef def;
-            def.type = row == 0 && std::abs(col - n / 2) <= 1 ? BodyType::Static
-                                                                : BodyType::Dynamic;
+            def.type =
+                row == 0 && std::abs(col - n / 2) <= 1 ? BodyType::Static : BodyType::Dynamic;
             def.position = {float(col), -float(row)};
             BodyId body = world.createBody(def);
             world.createShape(body, shape, Circle{{0.0f, 0.0f}, 0.4f});
