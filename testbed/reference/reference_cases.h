@@ -27,9 +27,9 @@ const std::vector<ReferenceCase>& referenceCases();
 /// How far a pivot2d run strays from Box2D's, stepping both together.
 struct TrajectoryDifference {
     int steps = 0;
-    double position = 0.0;  ///< m, largest centre-of-mass distance over bodies and steps
-    double angle = 0.0;     ///< rad, largest angle difference
-    int identicalSteps = 0; ///< leading steps after which every pose was bit-identical
+    double position = 0.0;   ///< m, largest centre-of-mass distance over bodies and steps
+    double angle = 0.0;      ///< rad, largest angle difference
+    int identicalSteps = 0;  ///< leading steps after which every pose was bit-identical
     bool bodyCountsMatch = true;
 };
 

@@ -1,9 +1,9 @@
 // A ragdoll, the seed note's suggested use of FullNGS ("especially motorized ragdolls where
 // joint separation can be problematic"): ten bodies (head, torso, upper and lower arms, thighs,
 // shins; density 100) joined by revolute joints with angle limits, thrown at 8.5 m/s and
-// spinning against a wall (hit in flight, about 0.7 s after the throw) and onto the ground. Its parts never collide with each other (a
-// shared negative filter group). The motorized variant adds to every joint a motor holding
-// speed 0 with up to 20 N m, like muscles keeping a pose.
+// spinning against a wall (hit in flight, about 0.7 s after the throw) and onto the ground. Its
+// parts never collide with each other (a shared negative filter group). The motorized variant adds
+// to every joint a motor holding speed 0 with up to 20 N m, like muscles keeping a pose.
 #include "ground.h"
 #include "scene.h"
 
