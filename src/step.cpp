@@ -4,6 +4,7 @@
 //   3. build and solve islands (solver/island_solver.cpp), sleeping those at rest;
 //   4. move the broad-phase boxes of the bodies that moved and find new pairs;
 //   5. clear forces, count, remember dt for the next warm start.
+#include "buffer.h"
 #include "world_impl.h"
 
 namespace pivot {
@@ -12,6 +13,19 @@ namespace {
 // Below this many island bodies in a step, the islands are solved on the calling thread.
 constexpr std::size_t kParallelBodies = 512;
 }  // namespace
+
+void World::Impl::reserveStepBuffers() {
+    const auto count = [](std::int32_t n) { return static_cast<std::size_t>(n); };
+    const BufferBounds bound{count(bodies.capacity()), count(joints.capacity()),
+                             count(contacts.capacity()), count(mouseJoints.capacity())};
+    if (bound == reservedFor) return;
+    reservedFor = bound;
+    islands.reserve(bound);
+    islandBuilder.reserve(bound);
+    reports.reserve(bound.bodies);
+    smallIslands.reserve(bound.bodies);
+    for (IslandWorkspace& workspace : workspaces) reserveWorkspace(workspace, bound);
+}
 
 void World::Impl::step(float dt, int velocityIterations, int positionIterations) {
     StepContext context;
@@ -36,10 +50,11 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     updateContacts();
 
     stats = StepStats{};
+    reserveStepBuffers();
     SolverStorage storage{bodies, shapes, joints, contacts, mouseJoints};
     islandBuilder.build(storage, islands);
     const int islandCount = static_cast<int>(islands.ranges.size());
-    reports.resize(static_cast<std::size_t>(islandCount));
+    resizeBuffer(reports, static_cast<std::size_t>(islandCount));
     // A coloured island is solved by every worker together, one island at a time; the others
     // are shared out among the workers whole. Sharing out costs a hand-off per step: worth it
     // only with enough bodies to solve.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "body.h"
+#include "buffer.h"
 #include "collision/broad_phase.h"
 #include "contact.h"
 #include "joints/mouse_joint.h"
@@ -62,6 +63,9 @@ struct World::Impl {
     std::vector<IslandReport> reports;          // one per island of the current step
     std::vector<int> smallIslands;              // islands solved whole by one worker
     std::vector<std::uint8_t> contactOutcomes;  // updateContacts' first phase, per contact slot
+    BufferBounds reservedFor;                   // the pool capacities the buffers were sized for
+    /// Sizes the island buffers for the world's pool capacities (see buffer.h), when they grew.
+    void reserveStepBuffers();
 
     void step(float dt, int velocityIterations, int positionIterations);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "buffer.h"
 #include "pivot/constants.h"
 
 namespace pivot {
@@ -164,8 +165,8 @@ MeasuredPoint measure(const ContactPositionConstraint& pc, const Transform& xfA,
 void ContactSolver::reset(int count, const StepContext& step) {
     positionBias_ = step.contactBiasFactor;
     baumgarte_ = step.contactCorrection == ContactCorrection::Baumgarte;
-    velocity_.resize(static_cast<std::size_t>(count));
-    position_.resize(baumgarte_ ? 0 : static_cast<std::size_t>(count));
+    resizeBuffer(velocity_, static_cast<std::size_t>(count));
+    resizeBuffer(position_, baumgarte_ ? 0 : static_cast<std::size_t>(count));
 }
 
 void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,

@@ -76,6 +76,11 @@ class ContactSolver {
 public:
     /// Sizes the arrays for `count` contacts. On one thread, before prepare.
     void reset(int count, const StepContext& step);
+    /// Room for `count` contacts, so that reset does not allocate up to that many.
+    void reserve(std::size_t count) {
+        velocity_.reserve(count);
+        position_.reserve(count);
+    }
     /// Builds constraints [range) from the contacts ids[k], whose solver bodies are pairs[k], at
     /// the solver arrays' poses (the start of the step); writes no velocity. Restitution
     /// measures the approach speed from the bodies' velocities before this step's forces.

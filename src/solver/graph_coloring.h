@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "buffer.h"
 #include "solver/team.h"
 
 namespace pivot {
@@ -41,8 +42,10 @@ void GraphColoring::color(const std::int32_t* items, int count, const Pairs& pai
                           std::vector<std::int32_t>& order, std::vector<Batch>& batches,
                           std::int32_t base) {
     constexpr std::uint64_t kAllColors = (std::uint64_t{1} << kMaxColors) - 1;
-    if (masks_.size() < static_cast<std::size_t>(bodyCount)) masks_.resize(bodyCount, 0);
-    colorOf_.resize(static_cast<std::size_t>(count));
+    if (masks_.size() < static_cast<std::size_t>(bodyCount)) {
+        resizeBuffer(masks_, static_cast<std::size_t>(bodyCount), std::uint64_t{0});
+    }
+    resizeBuffer(colorOf_, static_cast<std::size_t>(count));
     std::int32_t sizes[kMaxColors + 1] = {};
 
     for (int i = 0; i < count; ++i) {
@@ -71,7 +74,7 @@ void GraphColoring::color(const std::int32_t* items, int count, const Pairs& pai
         at += sizes[c];
     }
     const std::size_t first = order.size();
-    order.resize(first + static_cast<std::size_t>(count));
+    resizeBuffer(order, first + static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i) order[first + next[colorOf_[i]]++] = items[i];
 
     // Leave the masks zeroed for the next call.

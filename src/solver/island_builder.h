@@ -21,6 +21,8 @@ public:
     /// Finds every island of the awake bodies and records them in `set` (cleared first), in
     /// seed order.
     void build(SolverStorage& storage, IslandSet& set);
+    /// Room for a search over every body of the world.
+    void reserve(const BufferBounds& bound) { stack_.reserve(bound.bodies); }
 
 private:
     void collect(std::int32_t seed, SolverStorage& storage, IslandSet& set);

@@ -1,5 +1,7 @@
 #include "solver/island_schedule.h"
 
+#include "buffer.h"
+
 namespace pivot {
 
 void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodies,
@@ -7,7 +9,7 @@ void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodie
     schedule.colored = isColored(island);
     schedule.fixedCopies.clear();
     if (schedule.colored) {
-        fixed_.resize(static_cast<std::size_t>(island.bodyCount));
+        resizeBuffer(fixed_, static_cast<std::size_t>(island.bodyCount));
         for (int i = 0; i < island.bodyCount; ++i) {
             fixed_[i] = bodies[island.bodies[i]].type != BodyType::Dynamic;
         }
@@ -47,8 +49,8 @@ void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Revolu
         }
     }
 
-    schedule.jointIds.resize(order_.size());
-    schedule.jointPairs.resize(order_.size());
+    resizeBuffer(schedule.jointIds, order_.size());
+    resizeBuffer(schedule.jointPairs, order_.size());
     for (std::size_t k = 0; k < order_.size(); ++k) {
         schedule.jointIds[k] = island.joints[order_[k]];
         schedule.jointPairs[k] = island.jointBodies[order_[k]];
@@ -58,8 +60,8 @@ void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Revolu
 void IslandScheduler::planContacts(const IslandView& island, IslandSchedule& schedule) {
     const int count = island.contactCount;
     schedule.contactBatches.clear();
-    schedule.contactIds.resize(static_cast<std::size_t>(count));
-    schedule.contactPairs.resize(static_cast<std::size_t>(count));
+    resizeBuffer(schedule.contactIds, static_cast<std::size_t>(count));
+    resizeBuffer(schedule.contactPairs, static_cast<std::size_t>(count));
     if (!schedule.colored) {
         for (int k = 0; k < count; ++k) {
             schedule.contactIds[k] = island.contacts[k];
@@ -68,7 +70,7 @@ void IslandScheduler::planContacts(const IslandView& island, IslandSchedule& sch
         if (count > 0) schedule.contactBatches.push_back({0, count, true});
         return;
     }
-    items_.resize(static_cast<std::size_t>(count));
+    resizeBuffer(items_, static_cast<std::size_t>(count));
     for (int k = 0; k < count; ++k) items_[k] = k;
     order_.clear();
     coloring_.color(items_.data(), count, island.contactBodies, fixed_.data(), island.bodyCount,

@@ -17,11 +17,13 @@
 // a different order than Box2D 2.4.1 would, so it agrees with Box2D in behaviour, not in bits.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include "body.h"
+#include "buffer.h"
 #include "joints/revolute_joint.h"
 #include "pivot/joint.h"
 #include "slot_pool.h"
@@ -50,6 +52,14 @@ struct IslandSchedule {
     /// Extra solver slots after the island's bodies: the island body each one copies.
     std::vector<std::int32_t> fixedCopies;
 
+    /// Room for an island holding every joint and contact of the world.
+    void reserve(const BufferBounds& bound) {
+        jointIds.reserve(bound.joints);
+        jointPairs.reserve(bound.joints);
+        contactIds.reserve(bound.contacts);
+        contactPairs.reserve(bound.contacts);
+    }
+
     int slotCount(const IslandView& island) const {
         return island.bodyCount + static_cast<int>(fixedCopies.size());
     }
@@ -60,6 +70,12 @@ public:
     /// Plans `island` into `schedule`. Allocates only while its buffers grow.
     void plan(const IslandView& island, const SlotPool<Body>& bodies,
               const SlotPool<RevoluteJoint>& joints, IslandSchedule& schedule);
+    /// Room to plan an island holding every body, joint and contact of the world.
+    void reserve(const BufferBounds& bound) {
+        fixed_.reserve(bound.bodies);
+        items_.reserve(std::max(bound.joints, bound.contacts));
+        order_.reserve(std::max(bound.joints, bound.contacts));
+    }
 
 private:
     void planJoints(const IslandView& island, const SlotPool<RevoluteJoint>& joints,

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "buffer.h"
+
 namespace pivot {
 
 /// The solver indices of a constraint's two bodies within its island.
@@ -44,6 +46,19 @@ struct IslandSet {
     std::vector<std::int32_t> mouseJoints;
     std::vector<std::int32_t> mouseBodies;  // solver index of each mouse joint's body
     std::vector<Range> ranges;
+
+    /// Room for every island the world could form: a static body is listed once in each island
+    /// it touches, so the bodies of all islands are at most the bodies plus the constraints.
+    void reserve(const BufferBounds& bound) {
+        bodies.reserve(bound.bodies + bound.joints + bound.contacts);
+        contacts.reserve(bound.contacts);
+        contactBodies.reserve(bound.contacts);
+        joints.reserve(bound.joints);
+        jointBodies.reserve(bound.joints);
+        mouseJoints.reserve(bound.mouseJoints);
+        mouseBodies.reserve(bound.mouseJoints);
+        ranges.reserve(bound.bodies);
+    }
 
     void clear() {
         bodies.clear();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "buffer.h"
 #include "pivot/constants.h"
 
 namespace pivot {
@@ -242,25 +243,35 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
 
 }  // namespace
 
+void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
+    work.scheduler.reserve(bound);
+    work.schedule.reserve(bound);
+    work.velocities.reserve(bound.bodies);
+    work.positions.reserve(bound.bodies);
+    work.positionScratch.pseudo.reserve(bound.bodies);
+    work.mouseConstraints.reserve(bound.mouseJoints);
+    work.contactSolver.reserve(bound.contacts);
+}
+
 void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
                 const SolverStorage& storage, const StepContext& step, int teamSize) {
     const IslandView island = set.view(index);
     IslandSchedule& schedule = work.schedule;
     work.scheduler.plan(island, storage.bodies, storage.joints, schedule);
     const std::size_t slots = static_cast<std::size_t>(schedule.slotCount(island));
-    work.velocities.resize(slots);
-    work.positions.resize(slots);
+    resizeBuffer(work.velocities, slots);
+    resizeBuffer(work.positions, slots);
     for (int g = 0; g < kPositionSolverCount; ++g) {
-        work.groups[g].resize(
-            static_cast<std::size_t>(schedule.groupStart[g + 1] - schedule.groupStart[g]));
+        resizeBuffer(work.groups[g], static_cast<std::size_t>(schedule.groupStart[g + 1] -
+                                                              schedule.groupStart[g]));
     }
     work.contactSolver.reset(island.contactCount, step);
-    work.mouseConstraints.resize(static_cast<std::size_t>(island.mouseCount));
-    work.positionScratch.pseudo.resize(slots);
+    resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
+    resizeBuffer(work.positionScratch.pseudo, slots);
     for (std::vector<SweepTally>& round : work.positionScratch.tallies) {
-        round.resize(static_cast<std::size_t>(teamSize));
+        resizeBuffer(round, static_cast<std::size_t>(teamSize));
     }
-    work.memberReports.resize(static_cast<std::size_t>(teamSize));
+    resizeBuffer(work.memberReports, static_cast<std::size_t>(teamSize));
 }
 
 IslandReport solveIsland(const Team& team, const IslandSet& set, int index, IslandWorkspace& work,

@@ -56,6 +56,10 @@ struct IslandWorkspace {
     std::vector<IslandReport> memberReports;  // one per team member
 };
 
+/// Makes room in `workspace` for an island holding every body, contact and mouse joint of the
+/// world (joint constraints, larger and rarely churning, grow as needed, at least twofold).
+void reserveWorkspace(IslandWorkspace& workspace, const BufferBounds& bound);
+
 /// Before a team solves island `index`, on one thread: plans its schedule and sizes every
 /// array of `workspace` for a team of `teamSize`.
 void planIsland(const IslandSet& set, int index, IslandWorkspace& workspace,

@@ -120,3 +120,61 @@ TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
         EXPECT_EQ(gAllocations.load() - before, 0) << workers << " workers";
     }
 }
+
+// Contacts that never settle: 200 elastic balls bouncing in a closed box without gravity or
+// sleep, so pairs begin and end every step for ever. Every container must reach its working
+// size during the warm-up and keep it; in particular the contact pair map must not re-create
+// its table as pairs come and go. Counts the steps that allocated, not only the allocations, so
+// a failure says how often it happens.
+TEST(ChurningContacts, StepWithoutAllocatingOnceWarm) {
+    for (int workers : {1, 2}) {
+        WorldDef def;
+        def.gravity = {0.0f, 0.0f};
+        def.enableSleep = false;
+        def.workerCount = workers;
+        World world(def);
+        BodyId walls = world.createBody(BodyDef{});
+        ShapeDef wall;
+        wall.density = 0.0f;
+        wall.friction = 0.0f;
+        wall.restitution = 1.0f;
+        world.createShape(walls, wall, Polygon::box(21.0f, 1.0f, {0.0f, -21.0f}, 0.0f));
+        world.createShape(walls, wall, Polygon::box(21.0f, 1.0f, {0.0f, 21.0f}, 0.0f));
+        world.createShape(walls, wall, Polygon::box(1.0f, 21.0f, {-21.0f, 0.0f}, 0.0f));
+        world.createShape(walls, wall, Polygon::box(1.0f, 21.0f, {21.0f, 0.0f}, 0.0f));
+        ShapeDef ball;
+        ball.friction = 0.0f;
+        ball.restitution = 1.0f;
+        std::uint32_t seed = 12345;
+        auto unit = [&seed] {  // a small fixed generator: the scene is the same everywhere
+            seed = seed * 1664525u + 1013904223u;
+            return float(seed >> 8) * (1.0f / 16777216.0f);
+        };
+        for (int i = 0; i < 200; ++i) {
+            BodyDef body;
+            body.type = BodyType::Dynamic;
+            body.position = {-18.0f + 1.8f * float(i % 20), -18.0f + 1.8f * float(i / 20)};
+            body.linearVelocity = {20.0f * unit() - 10.0f, 20.0f * unit() - 10.0f};
+            world.createShape(world.createBody(body), ball, Circle{{0.0f, 0.0f}, 0.5f});
+        }
+        for (int i = 0; i < 600; ++i) world.step(1.0f / 60.0f);
+        int stepsThatAllocated = 0;
+        long total = 0;
+        std::size_t begins = 0, ends = 0;
+        for (int i = 0; i < 10000; ++i) {
+            long before = gAllocations.load();
+            world.step(1.0f / 60.0f);
+            long made = gAllocations.load() - before;
+            total += made;
+            if (made > 0) ++stepsThatAllocated;
+            // After the count: the event lists are returned as copies, which allocate.
+            begins += world.contactBeginEvents().size();
+            ends += world.contactEndEvents().size();
+        }
+        EXPECT_EQ(total, 0) << workers << " workers: " << stepsThatAllocated
+                            << " of 10000 warm steps allocated";
+        // The scene really churns: on average a ball starts and ends a touch every few steps.
+        EXPECT_GT(begins, 10000u);
+        EXPECT_GT(ends, 10000u);
+    }
+}

@@ -1,0 +1,44 @@
+// Growing the step's reusable buffers so that a warm step does not allocate.
+//
+// The step reuses its arrays from one step to the next, so it allocates only when one must hold
+// more than ever before. Two habits keep that from happening over and over:
+//  - resizeBuffer grows capacity at least twofold. std::vector::resize grows from the current
+//    size, not the capacity: an array last used for a small island and resized for a slightly
+//    larger one than ever would get exactly that size, and allocate again at the next record;
+//  - arrays bounded by the number of objects in the world are reserved for that number at the
+//    start of the step (World::Impl::reserveStepBuffers), so while the world holds no more
+//    bodies, joints and contacts than it ever did, islands may merge, split and churn freely.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace pivot {
+
+template <typename T>
+void resizeBuffer(std::vector<T>& buffer, std::size_t size) {
+    if (size > buffer.capacity()) buffer.reserve(std::max(size, 2 * buffer.capacity()));
+    buffer.resize(size);
+}
+template <typename T>
+void resizeBuffer(std::vector<T>& buffer, std::size_t size, const T& value) {
+    if (size > buffer.capacity()) buffer.reserve(std::max(size, 2 * buffer.capacity()));
+    buffer.resize(size, value);
+}
+
+/// The most objects an island or a step can involve, from the world's pool capacities.
+struct BufferBounds {
+    std::size_t bodies = 0;
+    std::size_t joints = 0;
+    std::size_t contacts = 0;
+    std::size_t mouseJoints = 0;
+
+    friend bool operator==(const BufferBounds& a, const BufferBounds& b) {
+        return a.bodies == b.bodies && a.joints == b.joints && a.contacts == b.contacts &&
+               a.mouseJoints == b.mouseJoints;
+    }
+    friend bool operator!=(const BufferBounds& a, const BufferBounds& b) { return !(a == b); }
+};
+
+}  // namespace pivot
