@@ -1,19 +1,27 @@
 // Generational slot storage behind BodyId, ShapeId and JointId: objects live in one vector,
 // freed slots are reused last-in first-out (deterministic), and each slot counts how often it
 // was freed so a handle to a previous occupant is recognised as stale.
+//
+// A generation never wraps: a slot freed at the last generation its counter can hold is
+// retired, never reused, because a wrapped counter would make every handle to its earliest
+// occupants valid again. With 32-bit generations that costs one slot per 2^32 - 1 objects
+// created in it. The counter's width is a parameter so that the tests can reach the end of it.
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace pivot {
 
-template <typename T>
+template <typename T, typename Generation = std::uint32_t>
 class SlotPool {
 public:
+    static constexpr Generation kLastGeneration = std::numeric_limits<Generation>::max();
+
     struct Slot {
         T item{};
-        std::uint32_t generation = 1;
+        Generation generation = 1;
         bool alive = false;
     };
 
@@ -33,20 +41,27 @@ public:
         return index;
     }
 
-    /// Frees the slot; its generation moves on so existing handles go stale.
+    /// Frees the slot; its generation moves on so existing handles go stale. A slot at its
+    /// last generation is retired instead.
     void erase(std::int32_t index) {
         Slot& slot = slots_[index];
         slot.item = T{};
         slot.alive = false;
+        --size_;
+        if (slot.generation == kLastGeneration) {
+            ++retired_;
+            return;
+        }
         ++slot.generation;
         free_.push_back(index);
-        --size_;
     }
 
     bool isAlive(std::int32_t index) const {
         return index >= 0 && index < capacity() && slots_[index].alive;
     }
-    std::uint32_t generation(std::int32_t index) const { return slots_[index].generation; }
+    Generation generation(std::int32_t index) const { return slots_[index].generation; }
+    /// Slots retired because their generation reached kLastGeneration.
+    std::int32_t retiredCount() const { return retired_; }
     std::int32_t capacity() const { return static_cast<std::int32_t>(slots_.size()); }
     std::int32_t size() const { return size_; }
 
@@ -71,6 +86,7 @@ private:
     std::vector<Slot> slots_;
     std::vector<std::int32_t> free_;
     std::int32_t size_ = 0;
+    std::int32_t retired_ = 0;
 };
 
 }  // namespace pivot
