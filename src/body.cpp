@@ -4,7 +4,37 @@
 
 namespace pivot {
 
+namespace {
+
+// Calls f(shape) for each shape the body would have after `change`, in list order (a shape
+// being attached first, as it becomes the head of the list): the order the mass sums are formed
+// in, so that a change checked beforehand gives the bits the change itself will.
+template <typename F>
+void forEachShapeAfter(const Body& body, const SlotPool<Shape>& shapes, const MassChange& change,
+                       F&& f) {
+    if (change.added) f(*change.added);
+    for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
+        if (s == change.removed) continue;
+        if (s == change.reweighed) {
+            Shape reweighed = shapes[s];
+            reweighed.density = change.density;
+            f(reweighed);
+        } else {
+            f(shapes[s]);
+        }
+    }
+}
+
+}  // namespace
+
 void updateBodyMass(Body& body, const SlotPool<Shape>& shapes) {
+    body = bodyAfterMassChange(body, shapes, MassChange{body.type});
+}
+
+Body bodyAfterMassChange(const Body& before, const SlotPool<Shape>& shapes,
+                         const MassChange& change) {
+    Body body = before;
+    body.type = change.type;
     body.mass = 0.0f;
     body.invMass = 0.0f;
     body.inertia = 0.0f;
@@ -21,20 +51,19 @@ void updateBodyMass(Body& body, const SlotPool<Shape>& shapes) {
         if (body.type == BodyType::Kinematic && body.center != oldCenter) {
             body.linearVelocity += cross(body.angularVelocity, body.center - oldCenter);
         }
-        return;
+        return body;
     }
 
     // Sum the shapes' mass and their second moments about the body origin.
     float inertiaAboutOrigin = 0.0f;
     Vec2 weightedCenter;
-    for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
-        const Shape& shape = shapes[s];
-        if (shape.density == 0.0f) continue;
+    forEachShapeAfter(before, shapes, change, [&](const Shape& shape) {
+        if (shape.density == 0.0f) return;
         OriginMass m = shapeMassAboutOrigin(shape);
         body.mass += m.mass;
         weightedCenter += m.mass * m.center;
         inertiaAboutOrigin += m.inertia;
-    }
+    });
 
     if (body.mass > 0.0f) {
         body.invMass = 1.0f / body.mass;
@@ -55,13 +84,12 @@ void updateBodyMass(Body& body, const SlotPool<Shape>& shapes) {
         // cancellation; it replaces the reference's value when the two disagree.
         float shifted = inertiaAboutOrigin - body.mass * dot(body.localCenter, body.localCenter);
         float direct = 0.0f;
-        for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
-            const Shape& shape = shapes[s];
-            if (shape.density == 0.0f) continue;
+        forEachShapeAfter(before, shapes, change, [&](const Shape& shape) {
+            if (shape.density == 0.0f) return;
             OriginMass m = shapeMassAboutOrigin(shape);
             Vec2 offset = m.center - body.localCenter;
             direct += m.centroidInertia + m.mass * dot(offset, offset);
-        }
+        });
         const float tolerance = 1e-4f;  // far above rounding in the reference's own scenes
         bool accurate = shifted > 0.0f && std::fabs(shifted - direct) <= tolerance * direct;
         body.inertia = accurate ? shifted : direct;
@@ -75,6 +103,24 @@ void updateBodyMass(Body& body, const SlotPool<Shape>& shapes) {
     Vec2 oldCenter = body.center;
     body.center = transformPoint(body.xf, body.localCenter);
     body.linearVelocity += cross(body.angularVelocity, body.center - oldCenter);
+    return body;
+}
+
+bool holdAtWorldEdge(Body& body) {
+    const Vec2 origin = body.xf.p;
+    const Vec2 held{std::fmin(std::fmax(origin.x, -kMaxCoordinate), kMaxCoordinate),
+                    std::fmin(std::fmax(origin.y, -kMaxCoordinate), kMaxCoordinate)};
+    if (held.x == origin.x && held.y == origin.y) return false;
+    // The origin is set exactly on the edge and the centre follows it, so that reading the
+    // position back gives a value the API accepts.
+    body.xf.p = held;
+    body.center = flushDenormal(held + rotate(body.xf.q, body.localCenter));
+    Vec2& v = body.linearVelocity;
+    if ((held.x < origin.x && v.x > 0.0f) || (held.x > origin.x && v.x < 0.0f)) v.x = 0.0f;
+    if ((held.y < origin.y && v.y > 0.0f) || (held.y > origin.y && v.y < 0.0f)) v.y = 0.0f;
+    body.heldAtEdge = true;
+    body.edgeReached = origin;
+    return true;
 }
 
 }  // namespace pivot

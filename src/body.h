@@ -2,9 +2,12 @@
 // derived from it after each step, because users place bodies by their origin.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "pivot/body.h"
+#include "pivot/constants.h"
 #include "pivot/math.h"
 #include "shape.h"
 #include "slot_pool.h"
@@ -45,6 +48,11 @@ struct Body {
     bool awake = true;
     bool allowSleep = true;
     float sleepTime = 0.0f;
+
+    // Set by the step that held the body at the world's edge (holdAtWorldEdge), with the origin
+    // it would have reached; the step lists it in World::worldEdgeEvents and clears it.
+    bool heldAtEdge = false;
+    Vec2 edgeReached;
 };
 
 /// Recompute the origin frame from the centre of mass and angle.
@@ -52,6 +60,29 @@ inline void synchronizeTransform(Body& body) {
     body.xf.q = Rot(body.angle);
     body.xf.p = body.center - rotate(body.xf.q, body.localCenter);
 }
+
+/// Flushes a denormal to zero: the API refuses denormals, so the engine must not produce any in
+/// a state the caller can read back and set again.
+inline float flushDenormal(float value) {
+    return std::fabs(value) < std::numeric_limits<float>::min() ? 0.0f : value;
+}
+inline Vec2 flushDenormal(Vec2 value) {
+    return {flushDenormal(value.x), flushDenormal(value.y)};
+}
+
+/// An angle beyond +-kMaxMagnitude reduced by whole turns to (-pi, pi]: the same rotation as an
+/// angle the API accepts. Position corrections of a light body on a long lever can turn it by
+/// more than kMaxMagnitude rad in a step, where a float angle no longer resolves a turn anyway.
+inline float angleWithinLimits(float angle) {
+    if (std::fabs(angle) <= kMaxMagnitude) return angle;
+    return static_cast<float>(
+        std::remainder(static_cast<double>(angle), 2.0 * 3.14159265358979323846));
+}
+
+/// Keeps the body's origin within +-kMaxCoordinate, the limit setBodyTransform checks: a body
+/// that went further is put back on the edge it crossed (its centre of mass with it), and its
+/// velocity outwards across that edge is stopped. Returns whether it had to.
+bool holdAtWorldEdge(Body& body);
 
 /// Sleep: no motion and no pending push until something wakes the body.
 inline void putToSleep(Body& body) {
@@ -73,5 +104,18 @@ inline void wakeUp(Body& body) {
 /// Recompute mass, centre of mass and inertia from the body's type and shapes. Moving the
 /// centre of mass keeps the velocity of the centre consistent with the body's rotation.
 void updateBodyMass(Body& body, const SlotPool<Shape>& shapes);
+
+/// A change to a body's type or shapes that has not been made yet: what updateBodyMass would
+/// make of the body after it can then be checked before anything changes.
+struct MassChange {
+    BodyType type;
+    const Shape* added = nullptr;  // a shape about to be attached (at the head of the list)
+    std::int32_t removed = -1;     // a shape about to be destroyed
+    std::int32_t reweighed = -1;   // a shape about to get `density`
+    float density = 0.0f;
+};
+
+/// The body as updateBodyMass would leave it after `change`; nothing is changed.
+Body bodyAfterMassChange(const Body& body, const SlotPool<Shape>& shapes, const MassChange& change);
 
 }  // namespace pivot

@@ -80,6 +80,10 @@ std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out) {
         if (!isFinite(v)) {
             return "polygon." + vertexName(i) + " must be finite (got " + formatVec2(v) + ")";
         }
+        if (std::fpclassify(v.x) == FP_SUBNORMAL || std::fpclassify(v.y) == FP_SUBNORMAL) {
+            return "polygon." + vertexName(i) + " must be 0 or normal floats, not denormals (got " +
+                   formatVec2(v) + ")";
+        }
         if (std::fabs(v.x) > kMaxCoordinate || std::fabs(v.y) > kMaxCoordinate) {
             return "polygon." + vertexName(i) + " must be within +-kMaxCoordinate (" +
                    formatFloat(kMaxCoordinate) + " m) (got " + formatVec2(v) + ")";
@@ -94,13 +98,17 @@ std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out) {
         poly.vertices[i] = area >= 0.0f ? input.vertices[i] : input.vertices[n - 1 - i];
     }
 
+    // Messages name the vertices as the caller numbered them, before any reversal.
+    const auto given = [&](int i) { return area >= 0.0f ? i : n - 1 - i; };
     for (int i = 0; i < n; ++i) {
         Vec2 edge = poly.vertices[(i + 1) % n] - poly.vertices[i];
         float len = length(edge);
         if (len < kLinearSlop) {
-            return "polygon has repeated vertices: " + vertexName(i) + " and " +
-                   vertexName((i + 1) % n) + " are " + formatFloat(len) +
-                   " m apart, less than kLinearSlop";
+            const int a = std::min(given(i), given((i + 1) % n));
+            const int b = std::max(given(i), given((i + 1) % n));
+            return "polygon edge from " + vertexName(a) + " to " + vertexName(b) + " is " +
+                   formatFloat(len) + " m long; every edge must be at least kLinearSlop (" +
+                   formatFloat(kLinearSlop) + " m)" + (len == 0.0f ? " (repeated vertex)" : "");
         }
         poly.normals[i] = (1.0f / len) * Vec2{edge.y, -edge.x};
     }

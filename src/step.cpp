@@ -4,6 +4,8 @@
 //   3. build and solve islands (solver/island_solver.cpp), sleeping those at rest;
 //   4. move the broad-phase boxes of the bodies that moved and find new pairs;
 //   5. clear forces, count, remember dt for the next warm start.
+#include <algorithm>
+
 #include "buffer.h"
 #include "world_impl.h"
 
@@ -27,11 +29,32 @@ void World::Impl::reserveStepBuffers() {
     for (IslandWorkspace& workspace : workspaces) reserveWorkspace(workspace, bound);
 }
 
+// Every joint of this step's islands was solvable when the islands were built (the builder
+// skips let-go joints), so the let-go ones among them were let go by this step: listed in
+// island order, which is the same for any number of workers.
+void World::Impl::recordLetGoJoints(const IslandSet::Range& island) {
+    for (std::int32_t k = island.jointBegin; k < island.jointEnd; ++k) {
+        const std::int32_t index = islands.joints[static_cast<std::size_t>(k)];
+        const RevoluteJoint& joint = joints[index];
+        if (joint.letGo) letGoEvents.push_back({jointId(index), joint.letGoReason, joint.letGoAt});
+    }
+}
+
+void World::Impl::recordEdgeBodies(const IslandSet::Range& island) {
+    for (std::int32_t k = island.bodyBegin; k < island.bodyEnd; ++k) {
+        const std::int32_t index = islands.bodies[static_cast<std::size_t>(k)];
+        Body& body = bodies[index];
+        if (!body.heldAtEdge) continue;
+        body.heldAtEdge = false;
+        edgeEvents.push_back({bodyId(index), body.edgeReached});
+    }
+}
+
 void World::Impl::step(float dt, int velocityIterations, int positionIterations) {
     StepContext context;
     context.dt = dt;
     context.invDt = 1.0f / dt;
-    context.dtRatio = previousInvDt * dt;
+    context.dtRatio = std::min(previousInvDt * dt, 1.0f);
     context.gravity = gravity;
     context.velocityIterations = velocityIterations;
     context.positionIterations = positionIterations;
@@ -40,9 +63,12 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     context.contactCorrection = contactCorrection;
     context.contactBiasFactor = contactBiasFactor;
     context.restitutionThreshold = restitutionThreshold;
+    context.jointLetGoSeparation = jointLetGoSeparation;
 
     beginEvents.clear();
     endEvents.clear();
+    letGoEvents.clear();
+    edgeEvents.clear();
     if (newShapes) {
         findNewContacts();
         newShapes = false;
@@ -89,7 +115,10 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
         stats.jointCount += r.jointEnd - r.jointBegin;
         stats.translationClamps += report.translationClamps;
         stats.rotationClamps += report.rotationClamps;
-        stats.blownUpJointCount += report.blownUpJoints;
+        stats.letGoJointCount += report.letGoJoints;
+        if (report.letGoJoints > 0) recordLetGoJoints(r);
+        stats.edgeBodyCount += report.edgeBodies;
+        if (report.edgeBodies > 0) recordEdgeBodies(r);
         stats.discardedBodyCount += report.discardedBodies;
         if (report.positionIterations > stats.positionIterations) {
             stats.positionIterations = report.positionIterations;

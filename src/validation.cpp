@@ -29,15 +29,29 @@ void fail(const char* call, const std::string& problem) {
     throw Error(std::string(call) + ": " + problem);
 }
 
+namespace {
+bool isDenormal(float value) {
+    return std::fpclassify(value) == FP_SUBNORMAL;
+}
+}  // namespace
+
 void requireFinite(const char* call, const char* field, float value) {
     if (!std::isfinite(value)) {
         fail(call, std::string(field) + " must be finite (got " + formatFloat(value) + ")");
+    }
+    if (isDenormal(value)) {
+        fail(call, std::string(field) + " must be 0 or a normal float, not a denormal (got " +
+                       formatFloat(value) + ")");
     }
 }
 
 void requireFinite(const char* call, const char* field, Vec2 value) {
     if (!isFinite(value)) {
         fail(call, std::string(field) + " must be finite (got " + formatVec2(value) + ")");
+    }
+    if (isDenormal(value.x) || isDenormal(value.y)) {
+        fail(call, std::string(field) + " must be 0 or a normal float, not a denormal (got " +
+                       formatVec2(value) + ")");
     }
 }
 
@@ -54,6 +68,24 @@ void requireMagnitude(const char* call, const char* field, Vec2 value) {
     if (std::fabs(value.x) > kMaxMagnitude || std::fabs(value.y) > kMaxMagnitude) {
         fail(call, std::string(field) + " must be within +-kMaxMagnitude (" +
                        formatFloat(kMaxMagnitude) + ") (got " + formatVec2(value) + ")");
+    }
+}
+
+void requireWithin(const char* call, const char* field, float value, float limit,
+                   const char* limitName) {
+    requireFinite(call, field, value);
+    if (std::fabs(value) > limit) {
+        fail(call, std::string(field) + " must be within +-" + limitName + " (" +
+                       formatFloat(limit) + ") (got " + formatFloat(value) + ")");
+    }
+}
+
+void requireWithin(const char* call, const char* field, Vec2 value, float limit,
+                   const char* limitName) {
+    requireFinite(call, field, value);
+    if (std::fabs(value.x) > limit || std::fabs(value.y) > limit) {
+        fail(call, std::string(field) + " must be within +-" + limitName + " (" +
+                       formatFloat(limit) + ") (got " + formatVec2(value) + ")");
     }
 }
 

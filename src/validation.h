@@ -17,6 +17,8 @@ std::string formatVec2(Vec2 value);
 
 [[noreturn]] void fail(const char* call, const std::string& problem);
 
+/// Finite, and 0 or a normal float: denormals (below 1.2e-38 in magnitude) are refused, since
+/// arithmetic on them is slow on most CPUs and no physical quantity needs them.
 void requireFinite(const char* call, const char* field, float value);
 void requireFinite(const char* call, const char* field, Vec2 value);
 /// Finite and |value| <= kMaxMagnitude (speeds, forces, angles, ...).
@@ -28,6 +30,11 @@ void requireCoordinate(const char* call, const char* field, Vec2 value);
 void requireNonNegative(const char* call, const char* field, float value);
 /// Finite, > 0 and <= kMaxMagnitude.
 void requirePositive(const char* call, const char* field, float value);
+/// Finite and every component within [-limit, limit]; `limitName` names the constant.
+void requireWithin(const char* call, const char* field, float value, float limit,
+                   const char* limitName);
+void requireWithin(const char* call, const char* field, Vec2 value, float limit,
+                   const char* limitName);
 /// Finite and within [lo, hi].
 void requireInRange(const char* call, const char* field, float value, float lo, float hi);
 /// 0, or within [kMinDensity, kMaxDensity].

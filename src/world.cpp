@@ -2,6 +2,7 @@
 // Every public call checks its input completely before it changes anything, and a failed
 // check throws pivot::Error.
 #include <atomic>
+#include <cmath>
 #include <string>
 
 #include "state_hash.h"
@@ -28,6 +29,7 @@ World::Impl::Impl(const WorldDef& def)
       contactBiasFactor(def.contactBiasFactor),
       restitutionThreshold(def.restitutionThreshold),
       enableSleep(def.enableSleep),
+      jointLetGoSeparation(def.jointLetGoSeparation),
       pool(def.workerCount),
       workspaces(static_cast<std::size_t>(def.workerCount)) {}
 
@@ -50,11 +52,12 @@ void World::Impl::wakeAll() {
 
 World::World(const WorldDef& def) {
     const char* call = "World::World";
-    requireMagnitude(call, "def.gravity", def.gravity);
+    requireWithin(call, "def.gravity", def.gravity, kMaxGravity, "kMaxGravity");
     checkSolver(call, "def.defaultPositionSolver", def.defaultPositionSolver);
     checkContactCorrection(call, "def.contactCorrection", def.contactCorrection);
     requireInRange(call, "def.contactBiasFactor", def.contactBiasFactor, 0.0f, 1.0f);
     requireNonNegative(call, "def.restitutionThreshold", def.restitutionThreshold);
+    requireNonNegative(call, "def.jointLetGoSeparation", def.jointLetGoSeparation);
     if (def.workerCount < 1 || def.workerCount > 64) {
         fail(call,
              "def.workerCount must be in [1, 64] (got " + std::to_string(def.workerCount) + ")");
@@ -67,8 +70,12 @@ World::~World() = default;
 
 void World::step(float dt, int velocityIterations, int positionIterations) {
     const char* call = "World::step";
-    requireFinite(call, "dt", dt);
-    if (dt <= 0.0f) fail(call, "dt must be > 0 (got " + formatFloat(dt) + ")");
+    // Not requireFinite: a denormal dt is one more step too short, and is told so.
+    if (!std::isfinite(dt)) fail(call, "dt must be finite (got " + formatFloat(dt) + ")");
+    if (dt < kMinTimeStep) {
+        fail(call, "dt must be >= kMinTimeStep (" + formatFloat(kMinTimeStep) +
+                       " s); skip the step or carry the time over (got " + formatFloat(dt) + ")");
+    }
     if (dt > kMaxTimeStep) {
         fail(call, "dt must be <= kMaxTimeStep (" + formatFloat(kMaxTimeStep) + " s) (got " +
                        formatFloat(dt) + ")");
@@ -88,12 +95,16 @@ const StepStats& World::lastStepStats() const {
     return impl_->stats;
 }
 
+std::vector<WorldEdgeEvent> World::worldEdgeEvents() const {
+    return impl_->edgeEvents;
+}
+
 Vec2 World::gravity() const {
     return impl_->gravity;
 }
 
 void World::setGravity(Vec2 gravity) {
-    requireMagnitude("World::setGravity", "gravity", gravity);
+    requireWithin("World::setGravity", "gravity", gravity, kMaxGravity, "kMaxGravity");
     impl_->gravity = gravity;
     impl_->wakeAll();
 }
@@ -135,6 +146,7 @@ std::uint64_t World::stateHash() const {
     h.add(w.contactBiasFactor);
     h.add(w.restitutionThreshold);
     h.add(w.enableSleep);
+    h.add(w.jointLetGoSeparation);
     h.add(w.previousInvDt);
     h.add(w.newShapes);
 
@@ -222,7 +234,11 @@ std::uint64_t World::stateHash() const {
         h.add(j.lowerImpulse);
         h.add(j.upperImpulse);
         h.add(j.impulseInvDt);
-        h.add(j.blownUp);
+        h.add(j.letGo);
+        h.add(static_cast<std::int32_t>(j.letGoReason));
+        h.add(j.letGoAt);
+        h.add(j.hasLetGoOverride);
+        h.add(j.letGoOverride);
     });
     h.add(w.mouseJoints.size());
     w.mouseJoints.forEach([&](std::int32_t index, const MouseJoint& m) {
@@ -272,10 +288,24 @@ std::uint64_t World::stateHash() const {
             h.add(static_cast<std::int32_t>(e.shapeB.generation));
         }
     }
+    h.add(static_cast<std::int32_t>(w.letGoEvents.size()));
+    for (const JointLetGoEvent& e : w.letGoEvents) {
+        h.add(e.joint.index);
+        h.add(static_cast<std::int32_t>(e.joint.generation));
+        h.add(static_cast<std::int32_t>(e.reason));
+        h.add(e.separation);
+    }
+    h.add(static_cast<std::int32_t>(w.edgeEvents.size()));
+    for (const WorldEdgeEvent& e : w.edgeEvents) {
+        h.add(e.body.index);
+        h.add(static_cast<std::int32_t>(e.body.generation));
+        h.add(e.reached);
+    }
     const StepStats& s = w.stats;
-    for (int value : {s.islandCount, s.bodyCount, s.jointCount, s.translationClamps,
-                      s.rotationClamps, s.positionIterations, s.contactCount, s.touchingCount,
-                      s.sleepingBodyCount, s.blownUpJointCount, s.discardedBodyCount}) {
+    for (int value :
+         {s.islandCount, s.bodyCount, s.jointCount, s.translationClamps, s.rotationClamps,
+          s.positionIterations, s.contactCount, s.touchingCount, s.sleepingBodyCount,
+          s.letGoJointCount, s.discardedBodyCount, s.edgeBodyCount}) {
         h.add(static_cast<std::int32_t>(value));
     }
     return h.value();

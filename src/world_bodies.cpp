@@ -9,16 +9,22 @@ BodyId World::createBody(const BodyDef& def) {
     checkBodyType(call, "def.type", def.type);
     requireCoordinate(call, "def.position", def.position);
     requireMagnitude(call, "def.angle", def.angle);
-    requireMagnitude(call, "def.linearVelocity", def.linearVelocity);
-    requireMagnitude(call, "def.angularVelocity", def.angularVelocity);
+    requireWithin(call, "def.linearVelocity", def.linearVelocity, kMaxSpeed, "kMaxSpeed");
+    requireWithin(call, "def.angularVelocity", def.angularVelocity, kMaxAngularSpeed,
+                  "kMaxAngularSpeed");
     requireNonNegative(call, "def.linearDamping", def.linearDamping);
     requireNonNegative(call, "def.angularDamping", def.angularDamping);
-    requireMagnitude(call, "def.gravityScale", def.gravityScale);
+    requireWithin(call, "def.gravityScale", def.gravityScale, kMaxGravityScale, "kMaxGravityScale");
     if (def.type == BodyType::Static &&
         (def.linearVelocity != Vec2{} || def.angularVelocity != 0.0f)) {
         fail(call, "a static body cannot move: def.linearVelocity " +
                        formatVec2(def.linearVelocity) + " and def.angularVelocity " +
                        formatFloat(def.angularVelocity) + " must be zero");
+    }
+    if (def.fixedRotation && def.angularVelocity != 0.0f) {
+        fail(call,
+             "a body with def.fixedRotation never turns: def.angularVelocity must be 0 (got " +
+                 formatFloat(def.angularVelocity) + ")");
     }
 
     Body body;
@@ -27,7 +33,7 @@ BodyId World::createBody(const BodyDef& def) {
     body.center = def.position;
     body.angle = def.angle;
     body.linearVelocity = def.linearVelocity;
-    body.angularVelocity = def.fixedRotation ? 0.0f : def.angularVelocity;
+    body.angularVelocity = def.angularVelocity;
     body.linearDamping = def.linearDamping;
     body.angularDamping = def.angularDamping;
     body.gravityScale = def.gravityScale;
@@ -92,6 +98,7 @@ void World::setBodyType(BodyId id, BodyType type) {
         }
     }
     if (body.type == type) return;
+    requireMotionAfterMassChange(call, bodyAfterMassChange(body, w.shapes, MassChange{type}), body);
 
     body.type = type;
     body.force = Vec2{};
@@ -136,6 +143,9 @@ float World::bodyMass(BodyId id) const {
 float World::bodyRotationalInertia(BodyId id) const {
     return impl_->bodies[impl_->bodyIndex("World::bodyRotationalInertia", id)].inertia;
 }
+bool World::bodyFixedRotation(BodyId id) const {
+    return impl_->bodies[impl_->bodyIndex("World::bodyFixedRotation", id)].fixedRotation;
+}
 Vec2 World::bodyWorldPoint(BodyId id, Vec2 localPoint) const {
     const char* call = "World::bodyWorldPoint";
     const Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
@@ -169,6 +179,14 @@ void World::setBodySleepAllowed(BodyId id, bool allowed) {
     if (!allowed) wakeUp(b);
 }
 
+std::uint64_t World::bodyUserData(BodyId id) const {
+    return impl_->bodies[impl_->bodyIndex("World::bodyUserData", id)].userData;
+}
+
+void World::setBodyUserData(BodyId id, std::uint64_t userData) {
+    impl_->bodies[impl_->bodyIndex("World::setBodyUserData", id)].userData = userData;
+}
+
 void World::setBodyTransform(BodyId id, Vec2 position, float angle) {
     const char* call = "World::setBodyTransform";
     Impl& w = *impl_;
@@ -185,78 +203,154 @@ void World::setBodyTransform(BodyId id, Vec2 position, float angle) {
     wakeUp(b);
 }
 
+// What calls may do to a body's motion. One rule for the velocity setters and for forces,
+// torques and impulses: a call that could have no effect is refused rather than silently
+// dropped. A static body never moves, so it takes none of them; forces, torques and impulses
+// move dynamic bodies only (a kinematic body has infinite mass: set its velocity instead); a
+// body with fixed rotation never turns, so it takes no torque, angular impulse or non-zero
+// angular velocity. And what calls accumulate between steps stays within the input limits: the
+// velocities impulses add up to, which can then be read back and set again; the pending force
+// and torque; and the accelerations they give the body (force / mass, torque / inertia, at most
+// kMaxMagnitude m/s^2 and rad/s^2, like gravity times gravity scale), whose products in the
+// step must stay inside float range: 1e10 N on a 1e-11 kg sliver was 1e21 m/s^2.
 namespace {
-Body& movableBody(World::Impl& w, const char* call, BodyId id) {
+
+const char* typeName(BodyType type) {
+    switch (type) {
+        case BodyType::Static: return "static";
+        case BodyType::Kinematic: return "kinematic";
+        case BodyType::Dynamic: return "dynamic";
+    }
+    return "invalid";
+}
+
+Body& bodyTakingVelocity(World::Impl& w, const char* call, BodyId id) {
     Body& b = w.bodies[w.bodyIndex(call, id)];
     if (b.type == BodyType::Static) fail(call, "body is static and cannot be given a velocity");
     return b;
 }
+
+Body& bodyTakingForce(World::Impl& w, const char* call, BodyId id) {
+    Body& b = w.bodies[w.bodyIndex(call, id)];
+    if (b.type != BodyType::Dynamic) {
+        fail(call, std::string("body is ") + typeName(b.type) +
+                       ": forces, torques and impulses move dynamic bodies only" +
+                       (b.type == BodyType::Kinematic ? " (set a kinematic body's velocity)" : ""));
+    }
+    return b;
+}
+
+void requireTurning(const char* call, const Body& b) {
+    if (b.fixedRotation) {
+        fail(call, "body has fixed rotation: a torque or angular impulse cannot turn it");
+    }
+}
+
+// What a call would leave accumulated on the body, checked before it is stored.
+void requireAccumulated(const char* call, const char* what, float value,
+                        float limit = kMaxMagnitude, const char* limitName = "kMaxMagnitude") {
+    if (!(std::fabs(value) <= limit)) {
+        fail(call, std::string("this call would take the body's ") + what + " to " +
+                       formatFloat(value) + ", beyond +-" + limitName + " (" + formatFloat(limit) +
+                       ")");
+    }
+}
+void requireAccumulated(const char* call, const char* what, Vec2 value, float limit = kMaxMagnitude,
+                        const char* limitName = "kMaxMagnitude") {
+    if (!(std::fabs(value.x) <= limit && std::fabs(value.y) <= limit)) {
+        fail(call, std::string("this call would take the body's ") + what + " to " +
+                       formatVec2(value) + ", beyond +-" + limitName + " (" + formatFloat(limit) +
+                       ")");
+    }
+}
+
 }  // namespace
 
 void World::setBodyLinearVelocity(BodyId id, Vec2 velocity) {
     const char* call = "World::setBodyLinearVelocity";
-    Body& b = movableBody(*impl_, call, id);
-    requireMagnitude(call, "velocity", velocity);
+    Body& b = bodyTakingVelocity(*impl_, call, id);
+    requireWithin(call, "velocity", velocity, kMaxSpeed, "kMaxSpeed");
     b.linearVelocity = velocity;
     wakeUp(b);
 }
 
 void World::setBodyAngularVelocity(BodyId id, float omega) {
     const char* call = "World::setBodyAngularVelocity";
-    Body& b = movableBody(*impl_, call, id);
-    requireMagnitude(call, "omega", omega);
-    b.angularVelocity = b.fixedRotation ? 0.0f : omega;
+    Body& b = bodyTakingVelocity(*impl_, call, id);
+    requireWithin(call, "omega", omega, kMaxAngularSpeed, "kMaxAngularSpeed");
+    if (b.fixedRotation && omega != 0.0f) {
+        fail(call, "body has fixed rotation: its angular velocity stays 0 (got omega " +
+                       formatFloat(omega) + ")");
+    }
+    b.angularVelocity = omega;
     wakeUp(b);
 }
 
-// Forces and impulses move dynamic bodies only; static and kinematic bodies ignore them by
-// definition (infinite mass), as BodyType documents.
 void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
     const char* call = "World::applyForce";
-    Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
+    Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "force", force);
     requireCoordinate(call, "worldPoint", worldPoint);
-    if (b.type != BodyType::Dynamic) return;
-    b.force += force;
-    b.torque += cross(worldPoint - b.center, force);
+    const Vec2 total = b.force + force;
+    // A body with fixed rotation keeps no torque: it could never turn it.
+    const float torque =
+        b.fixedRotation ? b.torque : b.torque + cross(worldPoint - b.center, force);
+    requireAccumulated(call, "pending force", total);
+    requireAccumulated(call, "pending torque", torque);
+    requireAccumulated(call, "linear acceleration (pending force / mass)", b.invMass * total);
+    requireAccumulated(call, "angular acceleration (pending torque / inertia)",
+                       b.invInertia * torque);
+    b.force = total;
+    b.torque = torque;
     wakeUp(b);
 }
 
 void World::applyForceToCenter(BodyId id, Vec2 force) {
     const char* call = "World::applyForceToCenter";
-    Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
+    Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "force", force);
-    if (b.type != BodyType::Dynamic) return;
-    b.force += force;
+    const Vec2 total = b.force + force;
+    requireAccumulated(call, "pending force", total);
+    requireAccumulated(call, "linear acceleration (pending force / mass)", b.invMass * total);
+    b.force = total;
     wakeUp(b);
 }
 
 void World::applyTorque(BodyId id, float torque) {
     const char* call = "World::applyTorque";
-    Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
+    Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "torque", torque);
-    if (b.type != BodyType::Dynamic) return;
-    b.torque += torque;
+    requireTurning(call, b);
+    const float total = b.torque + torque;
+    requireAccumulated(call, "pending torque", total);
+    requireAccumulated(call, "angular acceleration (pending torque / inertia)",
+                       b.invInertia * total);
+    b.torque = total;
     wakeUp(b);
 }
 
 void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
     const char* call = "World::applyLinearImpulse";
-    Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
+    Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "impulse", impulse);
     requireCoordinate(call, "worldPoint", worldPoint);
-    if (b.type != BodyType::Dynamic) return;
-    b.linearVelocity += b.invMass * impulse;
-    b.angularVelocity += b.invInertia * cross(worldPoint - b.center, impulse);
+    const Vec2 v = b.linearVelocity + b.invMass * impulse;
+    const float w = b.angularVelocity + b.invInertia * cross(worldPoint - b.center, impulse);
+    requireAccumulated(call, "linear velocity", v, kMaxSpeed, "kMaxSpeed");
+    requireAccumulated(call, "angular velocity", w, kMaxAngularSpeed, "kMaxAngularSpeed");
+    b.linearVelocity = v;
+    b.angularVelocity = w;
     wakeUp(b);
 }
 
 void World::applyAngularImpulse(BodyId id, float impulse) {
     const char* call = "World::applyAngularImpulse";
-    Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
+    Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "impulse", impulse);
-    if (b.type != BodyType::Dynamic) return;
-    b.angularVelocity += b.invInertia * impulse;
+    requireTurning(call, b);
+    const float w = b.angularVelocity + b.invInertia * impulse;
+    requireAccumulated(call, "angular velocity", w, kMaxAngularSpeed, "kMaxAngularSpeed");
+    b.angularVelocity = w;
     wakeUp(b);
 }
 

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "body.h"
 #include "pivot/joint.h"
 #include "pivot/world.h"
 #include "validation.h"
@@ -43,8 +44,25 @@ inline void checkLimit(const char* call, const std::string& field, const JointLi
 }
 
 inline void checkMotor(const char* call, const std::string& field, const JointMotor& motor) {
-    requireMagnitude(call, (field + ".speed").c_str(), motor.speed);
+    requireWithin(call, (field + ".speed").c_str(), motor.speed, kMaxAngularSpeed,
+                  "kMaxAngularSpeed");
     requireNonNegative(call, (field + ".maxTorque").c_str(), motor.maxTorque);
+}
+
+/// A call that changes a body's mass moves its centre of mass, and the centre's velocity moves
+/// with it (w x the shift): a body spinning with a shape 1e5 m out can end past kMaxSpeed. Such
+/// a call is refused, so that the body's velocity stays one the API accepts.
+inline void requireMotionAfterMassChange(const char* call, const Body& after, const Body& before) {
+    const Vec2 v = after.linearVelocity;
+    if (!(std::fabs(v.x) <= kMaxSpeed && std::fabs(v.y) <= kMaxSpeed)) {
+        fail(call, "this call would move the body's centre of mass by " +
+                       formatVec2(after.center - before.center) +
+                       " m, which at its angular velocity of " +
+                       formatFloat(before.angularVelocity) +
+                       " rad/s would give the centre a velocity of " + formatVec2(v) +
+                       " m/s, beyond +-kMaxSpeed (" + formatFloat(kMaxSpeed) +
+                       "); slow its rotation first");
+    }
 }
 
 inline void checkBiasFactor(const char* call, const char* field, float bias) {

@@ -36,6 +36,7 @@ struct World::Impl {
     float contactBiasFactor;
     float restitutionThreshold;
     bool enableSleep;
+    float jointLetGoSeparation;  // m; 0: never
 
     SlotPool<Body> bodies;
     SlotPool<Shape> shapes;
@@ -53,6 +54,8 @@ struct World::Impl {
 
     std::vector<ContactEvent> beginEvents;
     std::vector<ContactEvent> endEvents;
+    std::vector<JointLetGoEvent> letGoEvents;  // joints let go by the last step
+    std::vector<WorldEdgeEvent> edgeEvents;    // bodies held at the world's edge by it
 
     float previousInvDt = 0.0f;  // 1/dt of the last step; 0 before the first
     StepStats stats;
@@ -68,6 +71,8 @@ struct World::Impl {
     void reserveStepBuffers();
 
     void step(float dt, int velocityIterations, int positionIterations);
+    void recordLetGoJoints(const IslandSet::Range& island);
+    void recordEdgeBodies(const IslandSet::Range& island);
 
     // Handle checks: the slot index of a live object this world issued, or pivot::Error.
     std::int32_t bodyIndex(const char* call, BodyId id) const;

@@ -27,7 +27,18 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     if (def.worldAnchor) requireCoordinate(call, "def.worldAnchor", *def.worldAnchor);
     PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
     checkSolver(call, "def.positionSolver", solver);
+    if (def.worldAnchor &&
+        (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{} || def.referenceAngle != 0.0f)) {
+        fail(call, "def.worldAnchor " + formatVec2(*def.worldAnchor) +
+                       " is set together with def.localAnchorA " + formatVec2(def.localAnchorA) +
+                       ", def.localAnchorB " + formatVec2(def.localAnchorB) +
+                       " or def.referenceAngle " + formatFloat(def.referenceAngle) +
+                       "; the world anchor would replace them: set one or the other");
+    }
     if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
+    if (def.letGoSeparation) {
+        requireNonNegative(call, "def.letGoSeparation", *def.letGoSeparation);
+    }
     checkLimit(call, "def.limit", def.limit);
     checkMotor(call, "def.motor", def.motor);
 
@@ -55,6 +66,8 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     joint.motorSpeed = def.motor.speed;
     joint.maxMotorTorque = def.motor.maxTorque;
     joint.collideConnected = def.collideConnected;
+    joint.hasLetGoOverride = def.letGoSeparation.has_value();
+    joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
     joint.userData = def.userData;
     std::int32_t index = w.joints.insert(joint);
     linkEdges(w.joints, w.bodies, &Body::jointList, index);
@@ -98,8 +111,33 @@ float World::jointSeparation(JointId id) const {
     Vec2 pB = transformPoint(impl_->bodies[j.bodyB()].xf, j.localAnchorB);
     return distance(pA, pB);
 }
-bool World::jointBlownUp(JointId id) const {
-    return impl_->joints[impl_->jointIndex("World::jointBlownUp", id)].blownUp;
+bool World::isJointLetGo(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::isJointLetGo", id)].letGo;
+}
+
+void World::rearmJoint(JointId id) {
+    RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::rearmJoint", id)];
+    if (!j.letGo) return;
+    j.letGo = false;  // letGoFor cleared its impulses
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+float World::jointLetGoSeparation(JointId id) const {
+    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointLetGoSeparation", id)];
+    return j.letGoSeparation(impl_->jointLetGoSeparation);
+}
+
+void World::setJointLetGoSeparation(JointId id, std::optional<float> separation) {
+    const char* call = "World::setJointLetGoSeparation";
+    RevoluteJoint& j = impl_->joints[impl_->jointIndex(call, id)];
+    if (separation) requireNonNegative(call, "separation", *separation);
+    j.hasLetGoOverride = separation.has_value();
+    j.letGoOverride = separation.value_or(0.0f);
+}
+
+std::vector<JointLetGoEvent> World::jointLetGoEvents() const {
+    return impl_->letGoEvents;
 }
 Vec2 World::jointReactionForce(JointId id) const {
     const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointReactionForce", id)];
@@ -179,6 +217,14 @@ void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     j.biasOverride = biasFactor.value_or(0.0f);
     wakeUp(impl_->bodies[j.bodyA()]);
     wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+std::uint64_t World::jointUserData(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointUserData", id)].userData;
+}
+
+void World::setJointUserData(JointId id, std::uint64_t userData) {
+    impl_->joints[impl_->jointIndex("World::setJointUserData", id)].userData = userData;
 }
 
 std::vector<JointId> World::jointIds() const {

@@ -12,19 +12,23 @@ void checkShapeDef(const char* call, const ShapeDef& def, const Body& body) {
         fail(call,
              "def.density must be > 0 on a dynamic body (got " + formatFloat(def.density) + ")");
     }
+    requireWithin(call, "def.friction", def.friction, kMaxFriction, "kMaxFriction");
     requireNonNegative(call, "def.friction", def.friction);
     requireInRange(call, "def.restitution", def.restitution, 0.0f, 1.0f);
 }
 
-ShapeId attachShape(World::Impl& w, std::int32_t bodyIndex, const ShapeDef& def, Shape shape) {
+ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, const ShapeDef& def,
+                    Shape shape) {
     shape.body = bodyIndex;
     shape.density = def.density;
     shape.friction = def.friction;
     shape.restitution = def.restitution;
     shape.filter = def.filter;
     shape.userData = def.userData;
-    w.countCategories(shape.filter, +1);
     Body& body = w.bodies[bodyIndex];
+    requireMotionAfterMassChange(
+        call, bodyAfterMassChange(body, w.shapes, MassChange{body.type, &shape}), body);
+    w.countCategories(shape.filter, +1);
     shape.next = body.shapeList;
     std::int32_t index = w.shapes.insert(shape);
     if (body.shapeList != -1) w.shapes[body.shapeList].prev = index;
@@ -69,7 +73,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Circle& cir
     Shape shape;
     shape.type = ShapeType::Circle;
     shape.circle = circle;
-    return attachShape(*impl_, bodyIndex, def, shape);
+    return attachShape(call, *impl_, bodyIndex, def, shape);
 }
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& polygon) {
@@ -80,13 +84,18 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& po
     shape.type = ShapeType::Polygon;
     std::string problem = makeConvexPolygon(polygon, shape.polygon);
     if (!problem.empty()) fail(call, problem);
-    return attachShape(*impl_, bodyIndex, def, shape);
+    return attachShape(call, *impl_, bodyIndex, def, shape);
 }
 
 void World::destroyShape(ShapeId id) {
+    const char* call = "World::destroyShape";
     Impl& w = *impl_;
-    std::int32_t index = w.shapeIndex("World::destroyShape", id);
+    std::int32_t index = w.shapeIndex(call, id);
     std::int32_t bodyIndex = w.shapes[index].body;
+    MassChange change{w.bodies[bodyIndex].type};
+    change.removed = index;
+    requireMotionAfterMassChange(call, bodyAfterMassChange(w.bodies[bodyIndex], w.shapes, change),
+                                 w.bodies[bodyIndex]);
     w.removeShape(index);
     updateBodyMass(w.bodies[bodyIndex], w.shapes);
     wakeUp(w.bodies[bodyIndex]);
@@ -140,6 +149,10 @@ void World::setShapeDensity(ShapeId id, float density) {
     if (body.type == BodyType::Dynamic && density == 0.0f) {
         fail(call, "density must be > 0 on a dynamic body (got 0)");
     }
+    MassChange change{body.type};
+    change.reweighed = index;
+    change.density = density;
+    requireMotionAfterMassChange(call, bodyAfterMassChange(body, w.shapes, change), body);
     shape.density = density;
     updateBodyMass(body, w.shapes);
     wakeUp(body);
@@ -147,6 +160,14 @@ void World::setShapeDensity(ShapeId id, float density) {
 
 Filter World::shapeFilter(ShapeId id) const {
     return impl_->shapes[impl_->shapeIndex("World::shapeFilter", id)].filter;
+}
+
+std::uint64_t World::shapeUserData(ShapeId id) const {
+    return impl_->shapes[impl_->shapeIndex("World::shapeUserData", id)].userData;
+}
+
+void World::setShapeUserData(ShapeId id, std::uint64_t userData) {
+    impl_->shapes[impl_->shapeIndex("World::setShapeUserData", id)].userData = userData;
 }
 
 void World::setShapeFilter(ShapeId id, const Filter& filter) {

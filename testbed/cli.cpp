@@ -64,7 +64,7 @@ std::string usage() {
     std::ostringstream out;
     out << "usage: pivot-testbed [options]\n"
            "       pivot-testbed reference [--csv FILE]\n"
-           "       pivot-testbed report [--docs DIR] [--steps N]\n"
+           "       pivot-testbed report [--docs DIR] [--steps N] [--check]\n"
            "\n"
            "Runs pivot2d's test scenes headless and prints, for each run, how far the joints\n"
            "came apart, the energy drift, whether the run blew up, and the cost per step.\n"
@@ -80,6 +80,8 @@ std::string usage() {
            "and pseudo_velocity and a position-iteration sweep, and writes DIR/results.md with\n"
            "SVG plots in DIR/results/, and the measured observations of the seed note into\n"
            "DIR/position-correction.md (DIR defaults to docs: run it from the repository root).\n"
+           "With --check it writes nothing: it regenerates the report in a scratch folder and\n"
+           "fails if anything but a timing differs from DIR's (what CI runs).\n"
            "\n"
            "options:\n"
            "  --scene NAME      run only this scene: "
@@ -176,6 +178,9 @@ CliOptions parseCli(const std::vector<std::string>& args) {
             options.csvPath = value();
         } else if (arg == "--docs") {
             options.docsDir = value();
+        } else if (arg == "--check") {
+            if (options.command != Command::Report) throw CliError("--check goes with report");
+            options.check = true;
         } else if (arg == "--html") {
             options.htmlPath = value();
         } else {

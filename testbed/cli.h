@@ -25,6 +25,8 @@ struct CliOptions {
     std::optional<std::string> csvPath;
     std::optional<std::string> htmlPath;  ///< write the browser replay here
     std::string docsDir = "docs";         ///< report: where results.md goes
+    /// report: regenerate into a scratch folder and compare with docsDir, timings masked.
+    bool check = false;
     bool help = false;
     bool list = false;
 };

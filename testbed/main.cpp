@@ -5,6 +5,7 @@
 #include "cli.h"
 #include "replay/html_replay.h"
 #include "report/report.h"
+#include "report/report_check.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
 #include "table.h"
@@ -62,6 +63,18 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (options.command == testbed::Command::Report) {
+            if (options.check) {
+                const std::string differences =
+                    report::checkReport(options.docsDir, options.steps, std::cout);
+                if (!differences.empty()) {
+                    std::cerr << "pivot-testbed: the committed report no longer says what the code "
+                                 "does; regenerate it with `pivot-testbed report`:\n"
+                              << differences;
+                    return 1;
+                }
+                std::cout << "the committed report matches the code (timings aside)\n";
+                return 0;
+            }
             report::ReportSettings settings;
             settings.docsDir = options.docsDir;
             settings.steps = options.steps;

@@ -33,13 +33,6 @@ constexpr float kMaxRotation = 0.5f * kPi;
 /// is resolved over several steps instead of launching bodies apart.
 constexpr float kMaxLinearCorrection = 0.2f;
 
-/// Metres. A joint whose two anchors are further apart than this at the start of a step, or
-/// whose state has become non-finite, has blown up: the solver stops solving it (so it cannot
-/// pump energy into, or spread NaN through, everything it touches) and World::jointBlownUp
-/// reports it. Far beyond anything a working joint reaches: the seed note's fast pendulum comes
-/// apart by 3 m under Modified NGS and still recovers.
-constexpr float kJointBlowUpSeparation = 10.0f;
-
 /// Metres. Every polygon collides as if rounded by this skin (twice the linear slop), so that
 /// resting polygons keep a small gap and contacts exist before the shapes' cores touch. It does
 /// not change mass properties.
@@ -106,14 +99,44 @@ constexpr float kMaxCoordinate = 1.0e5f;
 constexpr float kMinDensity = 1.0e-6f;
 constexpr float kMaxDensity = 1.0e6f;
 
-/// The largest magnitude of every other number the API takes: speeds (m/s, rad/s), forces (N),
-/// torques (N m), impulses (N s, N m s), angles (rad), gravity (m/s^2), gravity scale, damping
-/// (1/s), friction, the restitution threshold (m/s), joint limits, motor speed and torque,
-/// and the mouse joint's force, frequency and damping ratio.
+/// The largest magnitude of every other number the API takes: forces (N),
+/// torques (N m), impulses (N s, N m s), angles (rad), damping (1/s), the restitution
+/// threshold (m/s), joint limits, motor speed and torque, let-go separations (m), and the mouse
+/// joint's force, frequency and damping ratio. It also bounds what calls accumulate on a body
+/// between steps: the velocity that impulses add up to, and the pending force and torque.
 constexpr float kMaxMagnitude = 1.0e10f;
+
+/// m/s and rad/s. The largest linear and angular speed the API takes (a body's velocities, a
+/// motor's speed), and the most that impulses may add up to. They bound momentum: the heaviest
+/// shape (kMaxDensity over a kMaxCoordinate box, 4e16 kg) at this speed, over the shortest step,
+/// is a force of 4e27 N, and times the longest lever arm a torque of 1e33 N m, both well inside
+/// float range; at kMaxMagnitude m/s and a 1e-6 s step a joint's reaction overflowed. Both
+/// are above anything the engine produces (kMaxTranslation and kMaxRotation per kMinTimeStep:
+/// 2e5 m/s, 1.6e5 rad/s), so every velocity the engine reports can be set again.
+constexpr float kMaxSpeed = 1.0e6f;
+constexpr float kMaxAngularSpeed = 1.0e6f;
+
+/// The largest friction coefficient (real materials stay below 2). The friction impulse is up
+/// to this times the normal impulse, and the larger limit of kMaxMagnitude let it overflow.
+constexpr float kMaxFriction = 100.0f;
+
+/// m/s^2 and a factor. Gravity and a body's gravity scale are bounded separately so that their
+/// product, the acceleration a step gives the body, stays within kMaxMagnitude like every
+/// other rate: at 1e10 x 1e10 a heavy body's momentum overflowed within a step. 1e5 m/s^2 is
+/// ten thousand g.
+constexpr float kMaxGravity = 1.0e5f;
+constexpr float kMaxGravityScale = 1.0e5f;
 
 /// Seconds. The longest time step World::step accepts. A longer one is a unit mistake (ms for
 /// s): kMaxTranslation per step would cap every body below 2 m/s.
 constexpr float kMaxTimeStep = 1.0f;
+
+/// Seconds. The shortest time step World::step accepts (a hundred thousand steps per simulated
+/// second). A step forms 1/dt: in joint and contact reactions (impulse / dt), in Baumgarte's
+/// bias (error / dt) and in the per-step clamps (kMaxTranslation / dt, the fastest the engine
+/// moves a body). Above this they stay far inside float range for every accepted input (see
+/// kMaxSpeed); at 1e-40 s, 1/dt was infinite. A shorter step is a mistake (the remainder of a
+/// fixed-step accumulator, a unit slip): skip the step, or carry the time over to the next one.
+constexpr float kMinTimeStep = 1.0e-5f;
 
 }  // namespace pivot

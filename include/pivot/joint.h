@@ -59,19 +59,38 @@ struct JointMotor {
     float maxTorque = 0.0f;  ///< N m, >= 0
 };
 
+/// Why the engine let go of a joint.
+enum class JointLetGoReason : std::uint8_t {
+    /// Its anchors were further apart than its let-go separation when a step reached it (only
+    /// when one is set: WorldDef::jointLetGoSeparation, RevoluteJointDef::letGoSeparation).
+    Separation,
+    /// Its impulses, or the force and torque they stand for, stopped being finite floats: the
+    /// solver diverged on it (constraints that contradict each other, extreme lever arms).
+    /// Always on: it keeps NaN and infinity out of the world and out of jointReactionForce.
+    NonFinite,
+};
+
+/// A joint the engine let go during the last step. A let-go joint is not solved (its bodies
+/// move as if it were not there) until World::rearmJoint; it still keeps its bodies from
+/// colliding unless its def allowed that.
+struct JointLetGoEvent {
+    JointId joint;
+    JointLetGoReason reason = JointLetGoReason::Separation;
+    float separation = 0.0f;  ///< m, |anchorB - anchorA| when the step let it go
+};
+
 /// Everything needed to create a revolute joint.
 struct RevoluteJointDef {
     BodyId bodyA;
     BodyId bodyB;
     Vec2 localAnchorA;  ///< m, the pin in body A's frame (origin-relative)
-    /// m, the pin in body B's frame. Anchors that are more than kJointBlowUpSeparation apart
-    /// when a step reaches the joint make it blown up (World::jointBlownUp): it is let go
-    /// rather than yanking the bodies together.
-    Vec2 localAnchorB;
+    Vec2 localAnchorB;  ///< m, the pin in body B's frame
     /// rad, angleB - angleA when the joint angle is zero.
     float referenceAngle = 0.0f;
     /// When set, the pin is this world point: the local anchors and the reference angle are
-    /// taken from the bodies' poses when the joint is created, overriding the fields above.
+    /// taken from the bodies' poses when the joint is created. Set it or the three fields above,
+    /// not both: a def with a world anchor and a non-zero local anchor or reference angle is
+    /// refused (World::createJoint throws pivot::Error), rather than one of them being ignored.
     std::optional<Vec2> worldAnchor;
     /// Unset: the world's default (WorldDef::defaultPositionSolver, FullNGS unless changed).
     std::optional<PositionSolver> positionSolver;
@@ -79,6 +98,10 @@ struct RevoluteJointDef {
     std::optional<float> biasFactor;
     JointLimit limit;
     JointMotor motor;
+    /// m, in [0, kMaxMagnitude]: let the joint go when its anchors are further apart than this
+    /// when a step reaches it (World::jointLetGoEvents); 0: never. Unset: the world's setting
+    /// (WorldDef::jointLetGoSeparation, never unless changed).
+    std::optional<float> letGoSeparation;
     /// Whether the two bodies' shapes may collide with each other.
     bool collideConnected = false;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it

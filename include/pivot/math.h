@@ -126,23 +126,50 @@ struct Mat22 {
 
     /// Solve A x = b by Cramer's rule; a singular matrix gives x = 0, which to a constraint
     /// means "no impulse" (both bodies immovable along that direction).
-    constexpr Vec2 solve(Vec2 b) const {
+    Vec2 solve(Vec2 b) const {
         float a11 = cx.x, a12 = cy.x, a21 = cx.y, a22 = cy.y;
-        float det = a11 * a22 - a12 * a21;
+        const float p = a11 * a22, q = a12 * a21;
+        float det = p - q;
+        float scale = 1.0f;
+        if (!isFiniteValue(p) || !isFiniteValue(q)) {
+            scale = 1.0f / largestEntry();
+            a11 *= scale, a12 *= scale, a21 *= scale, a22 *= scale;
+            det = a11 * a22 - a12 * a21;
+        }
         if (det != 0.0f) {
-            det = 1.0f / det;
+            det = scale / det;
         }
         return {det * (a22 * b.x - a12 * b.y), det * (a11 * b.y - a21 * b.x)};
     }
 
     /// The inverse; a singular matrix gives the zero matrix (see solve).
-    constexpr Mat22 inverse() const {
+    Mat22 inverse() const {
         float a = cx.x, b = cy.x, c = cx.y, d = cy.y;
-        float det = a * d - b * c;
+        const float p = a * d, q = b * c;
+        float det = p - q;
+        float scale = 1.0f;
+        if (!isFiniteValue(p) || !isFiniteValue(q)) {
+            scale = 1.0f / largestEntry();
+            a *= scale, b *= scale, c *= scale, d *= scale;
+            det = a * d - b * c;
+        }
         if (det != 0.0f) {
-            det = 1.0f / det;
+            det = scale / det;
         }
         return {{det * d, -det * c}, {-det * b, det * a}};
+    }
+
+    // Entries of 1e19 and more (a light body's inverse inertia times a long lever arm squared)
+    // overflow the determinant. The matrix is then divided by its largest entry s first:
+    // K^-1 = (K/s)^-1 / s, and (K/s) has entries of at most 1, so its determinant is finite. An
+    // ordinary matrix never takes that path (scale stays 1, and x / 1 is x), so its results
+    // keep their bits.
+    static bool isFiniteValue(float x) { return std::isfinite(x); }
+    constexpr float largestEntry() const {
+        const float a = cx.x < 0.0f ? -cx.x : cx.x, b = cy.x < 0.0f ? -cy.x : cy.x;
+        const float c = cx.y < 0.0f ? -cx.y : cx.y, d = cy.y < 0.0f ? -cy.y : cy.y;
+        const float ab = a > b ? a : b, cd = c > d ? c : d;
+        return ab > cd ? ab : cd;
     }
 };
 

@@ -50,6 +50,11 @@ struct WorldDef {
     /// contact updates and broad-phase queries are shared among them; results are bit-for-bit
     /// the same for every count.
     int workerCount = 1;
+    /// m, in [0, kMaxMagnitude]. Opt-in breaking: a joint whose anchors are further apart than
+    /// this when a step reaches it is let go (World::jointLetGoEvents, JointLetGoReason). 0, the
+    /// default: joints are never let go for their separation, however far they are pulled
+    /// apart, as in Box2D. A joint's RevoluteJointDef::letGoSeparation overrides it.
+    float jointLetGoSeparation = 0.0f;
 };
 
 /// A touching contact as seen from outside, measured at the bodies' current poses.
@@ -74,6 +79,15 @@ struct ContactEvent {
     ShapeId shapeB;
 };
 
+/// A body the last step held at the edge of the world: its origin would have left
+/// +-kMaxCoordinate, the range every position the API takes must be in. It was put back on the
+/// edge it crossed and its velocity outwards across that edge was stopped, so that every
+/// position the engine reports is one the API accepts (setBodyTransform, anchors, targets).
+struct WorldEdgeEvent {
+    BodyId body;
+    Vec2 reached;  ///< m, where the step would have put the body's origin
+};
+
 /// What the last call to World::step did.
 struct StepStats {
     int islandCount = 0;
@@ -88,10 +102,12 @@ struct StepStats {
     int contactCount = 0;       ///< contacts in the world (broad-phase boxes overlapping)
     int touchingCount = 0;      ///< of which touching (manifold with points)
     int sleepingBodyCount = 0;  ///< dynamic and kinematic bodies asleep after the step
-    /// Joints found blown up this step (see kJointBlowUpSeparation and World::jointBlownUp).
-    int blownUpJointCount = 0;
+    /// Joints let go this step (World::jointLetGoEvents lists them).
+    int letGoJointCount = 0;
     /// Bodies whose solved state this step was not finite: each kept its pose, at rest.
     int discardedBodyCount = 0;
+    /// Bodies held at the world's edge this step (World::worldEdgeEvents lists them).
+    int edgeBodyCount = 0;
 };
 
 class World {
@@ -104,8 +120,11 @@ public:
     World& operator=(const World&) = delete;
 
     // --- simulation -------------------------------------------------------------------------
-    /// Advance by dt seconds, in (0, kMaxTimeStep], with the given iteration counts, in
-    /// [0, kMaxIterations].
+    /// Advance by dt seconds, in [kMinTimeStep, kMaxTimeStep], with the given iteration counts,
+    /// in [0, kMaxIterations]. Contact and joint impulses of the previous step warm-start this
+    /// one scaled by the ratio of the steps, but never scaled up: after a step much shorter than
+    /// this one its impulses say little about this step's forces (see
+    /// docs/position-correction.md, "Changing the time step").
     void step(float dt, int velocityIterations = kDefaultVelocityIterations,
               int positionIterations = kDefaultPositionIterations);
     const StepStats& lastStepStats() const;
@@ -158,6 +177,8 @@ public:
     float bodyMass(BodyId id) const;             ///< kg; 0 for static and kinematic bodies
     /// kg m^2, about the centre of mass; 0 for non-dynamic or fixed-rotation bodies.
     float bodyRotationalInertia(BodyId id) const;
+    /// BodyDef::fixedRotation: the body never turns.
+    bool bodyFixedRotation(BodyId id) const;
     Vec2 bodyWorldPoint(BodyId id, Vec2 localPoint) const;
     Vec2 bodyLocalPoint(BodyId id, Vec2 worldPoint) const;
 
@@ -166,19 +187,30 @@ public:
     void setBodyAwake(BodyId id, bool awake);
     /// Whether the body may sleep; forbidding it wakes the body.
     void setBodySleepAllowed(BodyId id, bool allowed);
+    /// The value of BodyDef::userData, or the last one set; pivot2d never reads it.
+    std::uint64_t bodyUserData(BodyId id) const;
+    void setBodyUserData(BodyId id, std::uint64_t userData);
 
-    // Every call below that moves or pushes a body wakes it.
-    /// Teleport: moves the body origin to `position` at `angle`, keeping its velocity.
+    // Every call below that moves or pushes a body wakes it. One rule for the velocity setters
+    // and for forces, torques and impulses: a call that could have no effect is refused
+    // (pivot::Error) rather than silently dropped. A static body takes none of them; forces,
+    // torques and impulses act on dynamic bodies only (a kinematic body has infinite mass: set
+    // its velocity); a body with fixed rotation takes no torque, angular impulse or non-zero
+    // angular velocity. A call is also refused if it would take what the body accumulates
+    // beyond kMaxMagnitude: the velocity impulses add up to, the pending force or torque.
+    /// Teleport: moves the body origin to `position` at `angle`, keeping its velocity. Every
+    /// position the engine reports is within the limits this takes (WorldEdgeEvent).
     void setBodyTransform(BodyId id, Vec2 position, float angle);
-    void setBodyLinearVelocity(BodyId id, Vec2 velocity);
-    void setBodyAngularVelocity(BodyId id, float omega);
-    /// N, applied at a world point until the end of the next step.
+    void setBodyLinearVelocity(BodyId id, Vec2 velocity);  ///< m/s, of the centre of mass
+    void setBodyAngularVelocity(BodyId id, float omega);   ///< rad/s
+    /// N, applied at a world point until the end of the next step. On a body with fixed
+    /// rotation only its linear part acts (and no torque is kept).
     void applyForce(BodyId id, Vec2 force, Vec2 worldPoint);
     void applyForceToCenter(BodyId id, Vec2 force);
     void applyTorque(BodyId id, float torque);  ///< N m
     /// N s, changes the velocity at once.
     void applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint);
-    void applyAngularImpulse(BodyId id, float impulse);
+    void applyAngularImpulse(BodyId id, float impulse);  ///< N m s
 
     // --- shapes -----------------------------------------------------------------------------
     /// Attaches a shape and updates the body's mass.
@@ -203,6 +235,9 @@ public:
     Polygon shapePolygon(ShapeId id) const;
     /// Takes effect at the next step: existing contacts are re-filtered, new pairs found.
     void setShapeFilter(ShapeId id, const Filter& filter);
+    /// The value of ShapeDef::userData, or the last one set; pivot2d never reads it.
+    std::uint64_t shapeUserData(ShapeId id) const;
+    void setShapeUserData(ShapeId id, std::uint64_t userData);
 
     // --- contacts ---------------------------------------------------------------------------
     // Every list the API returns (contacts, events, bodyIds, jointIds, bodyShapes) is a copy,
@@ -215,6 +250,9 @@ public:
     /// the list: the event's shape ids are then already stale.
     std::vector<ContactEvent> contactBeginEvents() const;
     std::vector<ContactEvent> contactEndEvents() const;
+    /// The bodies held at the edge of the world during the last step, in the order the step
+    /// reached them (the same for every worker count). Cleared when the next step starts.
+    std::vector<WorldEdgeEvent> worldEdgeEvents() const;
 
     // --- joints -----------------------------------------------------------------------------
     JointId createJoint(const RevoluteJointDef& def);
@@ -230,12 +268,24 @@ public:
     Vec2 jointAnchorB(JointId id) const;  ///< m, the pin on body B in world coordinates
     /// m, |anchorB - anchorA|: how far the joint has come apart.
     float jointSeparation(JointId id) const;
-    /// Whether the joint has blown up: its anchors were more than kJointBlowUpSeparation apart
-    /// at the start of a step, or its impulses stopped being finite. A blown-up joint is no
-    /// longer solved (its bodies move as if it were not there), so it cannot drag NaN or
-    /// energy into everything it touches; StepStats::blownUpJointCount counts the step it
-    /// happened in. It stays blown up: destroy it, and create a new one if you want the pin.
-    bool jointBlownUp(JointId id) const;
+    /// Whether the engine has let go of the joint (JointLetGoReason says when it does). A
+    /// let-go joint is not solved, so it cannot drag NaN or energy into everything it touches;
+    /// it stays let go until rearmJoint.
+    bool isJointLetGo(JointId id) const;
+    /// Solves a let-go joint again from the next step, starting from zero impulses, and wakes
+    /// its bodies. If its anchors are still beyond its let-go separation at that step it is let
+    /// go again: move the bodies together first (setBodyTransform). A joint that is not let go
+    /// is left as it is.
+    void rearmJoint(JointId id);
+    /// m, the separation beyond which the joint is let go: its own setting if it has one, else
+    /// WorldDef::jointLetGoSeparation. 0: never.
+    float jointLetGoSeparation(JointId id) const;
+    /// A value in [0, kMaxMagnitude] m (0: never let go for separation), or nullopt to follow
+    /// WorldDef::jointLetGoSeparation. Takes effect at the next step.
+    void setJointLetGoSeparation(JointId id, std::optional<float> separation);
+    /// The joints let go during the last step, in the order the step reached them (the same
+    /// for every worker count). Cleared when the next step starts.
+    std::vector<JointLetGoEvent> jointLetGoEvents() const;
     /// rad, angleB - angleA - referenceAngle.
     float jointAngle(JointId id) const;
     /// rad/s, angular velocity of B relative to A.
@@ -263,6 +313,9 @@ public:
     float jointBiasFactor(JointId id) const;
     /// A value in [0, 1], or nullopt for the solver's default.
     void setJointBiasFactor(JointId id, std::optional<float> biasFactor);
+    /// The value of RevoluteJointDef::userData, or the last one set; pivot2d never reads it.
+    std::uint64_t jointUserData(JointId id) const;
+    void setJointUserData(JointId id, std::uint64_t userData);
 
     // --- mouse joints -------------------------------------------------------------------------
     MouseJointId createMouseJoint(const MouseJointDef& def);

@@ -4,11 +4,16 @@
 // As a spring of angular frequency w = 2 pi hertz and damping ratio z on the body's mass m:
 // stiffness k = m w^2, damping d = 2 m z w. Implicit integration of the spring over the step
 // turns the hard constraint K P = -Cdot into the soft one
-//   (K + gamma I) P = -(Cdot + beta/h... ) written here as  P = -M (Cdot + bias + gamma P_acc)
-// with gamma = 1 / (h (d + h k)) (a compliance: how much the constraint may give per unit
-// impulse) and bias = h k gamma C (the fraction of the error the spring removes this step).
-// The accumulated impulse is capped at h * maxForce. There is no position phase: the spring is
-// the correction.
+//   (K + gamma I) P = -(Cdot + bias + gamma P_acc),  M = (K + gamma I)^-1
+// with the compliance gamma = 1 / (h (d + h k)) (how much the constraint may give per unit
+// impulse) and bias = beta C, beta = h k gamma (the share of the error the spring removes per
+// second). The accumulated impulse is capped at h * maxForce. There is no position phase: the
+// spring is the correction.
+//
+// Box2D 2.4.1 forms k = m w^2 first. For a heavy body and a stiff spring (1e17 kg at 1e10 Hz,
+// inside the input limits) that overflows, and beta = inf * 0 is NaN. Dividing out m first,
+//   gamma = (1/m) / (h w (2 z + h w)),   beta = w / (2 z + h w),
+// gives the same quantities with every intermediate inside float range (h w <= 6.3e10).
 #pragma once
 
 #include <cmath>
@@ -45,16 +50,21 @@ struct MouseConstraint {
 };
 
 /// Start of the step: the soft constraint at the current pose, and the warm start.
-inline void prepareMouse(MouseConstraint& c, const MouseJoint& joint, float mass, Vec2 localCenter,
+inline void prepareMouse(MouseConstraint& c, const MouseJoint& joint, Vec2 localCenter,
                          const SolverPosition* positions, SolverVelocity* velocities, float dt,
                          float dtRatio, bool warmStarting) {
     const SolverPosition& p = positions[c.index];
     const float omega = 2.0f * kPi * joint.hertz;
-    const float damping = 2.0f * mass * joint.dampingRatio * omega;
-    const float stiffness = mass * omega * omega;
-    c.gamma = dt * (damping + dt * stiffness);
-    c.gamma = c.gamma != 0.0f ? 1.0f / c.gamma : 0.0f;
-    const float beta = dt * stiffness * c.gamma;
+    const float hw = dt * omega;
+    const float spring = 2.0f * joint.dampingRatio + hw;
+    c.gamma = c.mB / (hw * spring);
+    float beta = omega / spring;
+    if (c.mB == 0.0f || !std::isfinite(c.gamma)) {
+        // A body without mass (no longer dynamic), or a spring so soft that its compliance is
+        // not a float (1e-30 Hz): nothing is pulled.
+        c.mB = c.iB = 0.0f;
+        c.gamma = beta = 0.0f;
+    }
 
     c.rB = rotate(Rot(p.a), joint.localAnchor - localCenter);
     Mat22 K;

@@ -13,6 +13,8 @@
 // solver/position_solver.cpp differ only in when they recompute C, r and K.
 #pragma once
 
+#include <cmath>
+
 #include "joints/constraint_bodies.h"
 #include "pivot/math.h"
 #include "solver/solver_types.h"
@@ -24,7 +26,7 @@ namespace pivot {
 struct PointPart {
     Vec2 rA;  // world radius vectors when last prepared
     Vec2 rB;
-    Mat22 K;              // effective mass matrix when last prepared
+    Mat22 K;              // effective mass matrix when last prepared (see cacheInverse)
     float invDet = 0.0f;  // 1 / det K (0 when singular), as Mat22::solve computes it
     Vec2 impulse;         // accumulated impulse (velocity phase), N s
     Vec2 bias;            // velocity bias, m/s (Baumgarte, and the PseudoVelocity pass)
@@ -39,9 +41,21 @@ inline Vec2 solveWithCachedDet(const PointPart& p, Vec2 b) {
     return {p.invDet * (a22 * b.x - a12 * b.y), p.invDet * (a11 * b.y - a21 * b.x)};
 }
 
-inline float inverseDeterminant(const Mat22& K) {
-    float det = K.cx.x * K.cy.y - K.cy.x * K.cx.y;
-    return det != 0.0f ? 1.0f / det : det;
+/// Stores K for solveWithCachedDet: K itself and 1 / det K, as Mat22::solve computes them. A
+/// light body on a lever arm of kilometres makes the products in det K overflow; then K / s (s
+/// its largest entry) is stored with 1 / (s det(K / s)), as Mat22::solve does: the same system,
+/// solved without overflow. Ordinary joints never take that path and keep Box2D's operations.
+inline void cacheInverse(PointPart& p, const Mat22& K) {
+    const float ad = K.cx.x * K.cy.y, bc = K.cy.x * K.cx.y;
+    float det = ad - bc;
+    p.K = K;
+    if (!Mat22::isFiniteValue(ad) || !Mat22::isFiniteValue(bc)) {
+        const float scale = K.largestEntry();
+        const float s = 1.0f / scale;
+        p.K = {{s * K.cx.x, s * K.cx.y}, {s * K.cy.x, s * K.cy.y}};
+        det = scale * (p.K.cx.x * p.K.cy.y - p.K.cy.x * p.K.cx.y);
+    }
+    p.invDet = det != 0.0f ? 1.0f / det : det;
 }
 
 // K is evaluated in two float orders: the same matrix, rounded differently. The velocity phase
@@ -72,8 +86,7 @@ inline Vec2 preparePoint(const ConstraintBodies& b, PointPart& p, const SolverPo
     const SolverPosition& B = positions[b.indexB];
     p.rA = rotate(Rot(A.a), p.localRA);
     p.rB = rotate(Rot(B.a), p.localRB);
-    p.K = pointEffectiveMass(b, p.rA, p.rB);
-    p.invDet = inverseDeterminant(p.K);
+    cacheInverse(p, pointEffectiveMass(b, p.rA, p.rB));
     return B.c + p.rB - A.c - p.rA;
 }
 
@@ -105,8 +118,9 @@ inline float solvePointPosition(const ConstraintBodies& b, const PointPart& p,
     Vec2 rB = rotate(Rot(B.a), p.localRB);
     Vec2 C = B.c + rB - A.c - rA;
     float error = length(C);
-    Mat22 K = rebuildMass ? pointEffectiveMassForPositions(b, rA, rB) : p.K;
-    Vec2 P = -beta * K.solve(C);
+    // The frozen K through its cached inverse determinant: the same operations as K.solve.
+    Vec2 P = -beta * (rebuildMass ? pointEffectiveMassForPositions(b, rA, rB).solve(C)
+                                  : solveWithCachedDet(p, C));
     A.c -= b.mA * P;
     A.a -= b.iA * cross(rA, P);
     B.c += b.mB * P;

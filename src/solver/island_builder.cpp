@@ -71,8 +71,8 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet
             const RevoluteJoint& joint = storage.joints[jointIndex];
             int side = edgeSide(key);
             key = joint.edges[side].nextKey;
-            // A blown-up joint neither connects nor is solved (kJointBlowUpSeparation).
-            if (jointVisited_[jointIndex] || joint.blownUp) continue;
+            // A let-go joint neither connects nor is solved (World::isJointLetGo).
+            if (jointVisited_[jointIndex] || joint.letGo) continue;
             jointVisited_[jointIndex] = 1;
             std::int32_t other = reach(joint.edges[1 - side].body, storage, set, range.bodyBegin);
             set.joints.push_back(jointIndex);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "buffer.h"
 #include "pivot/constants.h"
@@ -43,15 +44,21 @@ void integrateVelocities(const Team& team, const IslandView& island, IslandWorks
     }
 }
 
-// A joint that has come apart beyond kJointBlowUpSeparation (or whose stored state is not
-// finite) is marked blown up and, for this step, acts on nothing: its bodies' masses are taken
-// as zero, so every solve applies a zero impulse. From the next step on it is not in an island.
-bool blewUp(const RevoluteJoint& joint, Vec2 separation) {
-    const float limit = kJointBlowUpSeparation * kJointBlowUpSeparation;
-    return !(lengthSquared(separation) <= limit) || !isFinite(joint.impulse) ||
-           !std::isfinite(joint.motorImpulse + joint.lowerImpulse + joint.upperImpulse);
+// Whether a step that reaches `joint` with its anchors `separation` apart lets it go: beyond
+// its let-go separation (when it has one), or with reactions that are not finite. A let-go
+// joint acts on nothing for the rest of this step (makeInert) and is in no island after it.
+std::optional<JointLetGoReason> letGoReason(const RevoluteJoint& joint, Vec2 separation,
+                                            const StepContext& step) {
+    const float limit = joint.letGoSeparation(step.jointLetGoSeparation);
+    if (limit > 0.0f && !(lengthSquared(separation) <= limit * limit)) {
+        return JointLetGoReason::Separation;
+    }
+    if (!joint.hasFiniteReactions()) return JointLetGoReason::NonFinite;
+    return std::nullopt;
 }
 
+// A let-go joint's constraint: its bodies' masses are taken as zero, so every solve of it
+// applies a zero impulse.
 void makeInert(RevoluteConstraint& c) {
     c = RevoluteConstraint{c.bodies, PointPart{}, AnglePart{}, 0.0f, c.jointIndex};
     c.bodies.mA = c.bodies.mB = c.bodies.iA = c.bodies.iB = 0.0f;
@@ -95,11 +102,9 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
             angle.upperImpulse = joint.upperImpulse;
             const Vec2 separation = preparePoint(c.bodies, c.point, work.positions.data());
             prepareAngle(c.bodies, angle, work.positions.data(), step.invDt);
-            if (blewUp(joint, separation)) {
-                joint.blownUp = true;
-                joint.impulse = Vec2{};
-                joint.motorImpulse = joint.lowerImpulse = joint.upperImpulse = 0.0f;
-                ++report.blownUpJoints;
+            if (const auto reason = letGoReason(joint, separation, step)) {
+                joint.letGoFor(*reason, length(separation));
+                ++report.letGoJoints;
                 makeInert(c);
             } else if (step.warmStarting) {
                 // Impulses scale with the step: keep the force they stand for when dt changes.
@@ -118,24 +123,30 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
     prepareVelocityBias(team, work.groups, work.positions.data(), step.invDt);
 }
 
-// A joint whose impulses went non-finite during the step blew up in it: it keeps nothing.
+// A joint whose impulses (or the force and torque they stand for) went non-finite during the
+// step is let go: it keeps nothing.
 void storeJointImpulses(const Team& team, const IslandWorkspace& work,
-                        SlotPool<RevoluteJoint>& joints, float invDt, IslandReport& report) {
+                        SlotPool<RevoluteJoint>& joints, const SlotPool<Body>& bodies, float invDt,
+                        IslandReport& report) {
     for (const RevoluteConstraints& group : work.groups) {
         const IndexRange mine = team.share(static_cast<int>(group.size()));
         for (int k = mine.begin; k < mine.end; ++k) {
             const RevoluteConstraint& c = group[k];
             RevoluteJoint& joint = joints[c.jointIndex];
+            // Let go when this step prepared it: it keeps no impulse (an inert constraint's
+            // zero impulse can still be 0 * inf = NaN when its island diverged).
+            if (joint.letGo) continue;
             joint.impulse = c.point.impulse;
             joint.motorImpulse = c.angle.motorImpulse;
             joint.lowerImpulse = c.angle.lowerImpulse;
             joint.upperImpulse = c.angle.upperImpulse;
             joint.impulseInvDt = invDt;
-            if (!joint.blownUp && blewUp(joint, Vec2{})) {
-                joint.blownUp = true;
-                joint.impulse = Vec2{};
-                joint.motorImpulse = joint.lowerImpulse = joint.upperImpulse = 0.0f;
-                ++report.blownUpJoints;
+            if (!joint.hasFiniteReactions()) {
+                // The bodies are still at their start-of-step poses (written back later).
+                const Vec2 pA = transformPoint(bodies[joint.bodyA()].xf, joint.localAnchorA);
+                const Vec2 pB = transformPoint(bodies[joint.bodyB()].xf, joint.localAnchorB);
+                joint.letGoFor(JointLetGoReason::NonFinite, distance(pA, pB));
+                ++report.letGoJoints;
             }
         }
     }
@@ -155,8 +166,8 @@ void prepareMouseJoints(const IslandView& island, IslandWorkspace& work,
         c.jointIndex = m;
         c.mB = body.invMass;
         c.iB = body.invInertia;
-        prepareMouse(c, joint, body.mass, body.localCenter, work.positions.data(),
-                     work.velocities.data(), step.dt, step.dtRatio, step.warmStarting);
+        prepareMouse(c, joint, body.localCenter, work.positions.data(), work.velocities.data(),
+                     step.dt, step.dtRatio, step.warmStarting);
     }
 }
 
@@ -215,7 +226,10 @@ bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepCon
 }
 
 // A body whose solved state is not finite keeps the pose it started the step with (a dynamic
-// one at rest): NaN never reaches the bodies, the broad phase or the next step.
+// one at rest): NaN never reaches the bodies, the broad phase or the next step. Denormals are
+// flushed to zero, angles past kMaxMagnitude reduced by whole turns, and a body that left the
+// world's coordinate limits is held at the edge, so that every state written back is one the
+// API would accept (angleWithinLimits, holdAtWorldEdge).
 void writeBack(const Team& team, const IslandView& island, const IslandWorkspace& work,
                SlotPool<Body>& bodies, IslandReport& report) {
     const IndexRange mine = team.share(island.bodyCount);
@@ -233,11 +247,13 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
             ++report.discardedBodies;
             continue;
         }
-        b.center = work.positions[i].c;
-        b.angle = work.positions[i].a;
-        b.linearVelocity = work.velocities[i].v;
-        b.angularVelocity = work.velocities[i].w;
+        b.center = flushDenormal(p.c);
+        b.angle = flushDenormal(angleWithinLimits(p.a));
+        b.linearVelocity = flushDenormal(v.v);
+        b.angularVelocity = flushDenormal(v.w);
         synchronizeTransform(b);
+        b.xf.p = flushDenormal(b.xf.p);
+        if (holdAtWorldEdge(b)) ++report.edgeBodies;
     }
 }
 
@@ -262,8 +278,8 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     resizeBuffer(work.velocities, slots);
     resizeBuffer(work.positions, slots);
     for (int g = 0; g < kPositionSolverCount; ++g) {
-        resizeBuffer(work.groups[g], static_cast<std::size_t>(schedule.groupStart[g + 1] -
-                                                              schedule.groupStart[g]));
+        resizeBuffer(work.groups[g],
+                     static_cast<std::size_t>(schedule.groupStart[g + 1] - schedule.groupStart[g]));
     }
     work.contactSolver.reset(island.contactCount, step);
     resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
@@ -316,7 +332,7 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index, Isla
         });
     }
 
-    storeJointImpulses(team, work, storage.joints, step.invDt, mine);
+    storeJointImpulses(team, work, storage.joints, bodies, step.invDt, mine);
     work.contactSolver.storeImpulses(team.share(island.contactCount), storage.contacts);
     if (team.leader()) {
         for (const MouseConstraint& c : work.mouseConstraints) {
@@ -337,7 +353,8 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index, Isla
     for (const IslandReport& member : work.memberReports) {
         report.translationClamps += member.translationClamps;
         report.rotationClamps += member.rotationClamps;
-        report.blownUpJoints += member.blownUpJoints;
+        report.letGoJoints += member.letGoJoints;
+        report.edgeBodies += member.edgeBodies;
         report.discardedBodies += member.discardedBodies;
     }
     report.positionIterations = phase.sweeps;

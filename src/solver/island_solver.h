@@ -37,7 +37,8 @@ struct IslandReport {
     int translationClamps = 0;
     int rotationClamps = 0;
     int positionIterations = 0;
-    int blownUpJoints = 0;    // joints found blown up this step
+    int letGoJoints = 0;      // joints let go this step
+    int edgeBodies = 0;       // bodies held at the world's edge (holdAtWorldEdge)
     int discardedBodies = 0;  // bodies whose solved state was non-finite, kept where they were
     bool fellAsleep = false;
 };

@@ -22,7 +22,7 @@ struct SolverPosition {
 struct StepContext {
     float dt = 0.0f;
     float invDt = 0.0f;
-    float dtRatio = 0.0f;  // dt / previous dt, scales warm-start impulses
+    float dtRatio = 0.0f;  // min(dt / previous dt, 1), scales warm-start impulses
     Vec2 gravity;
     int velocityIterations = 0;
     int positionIterations = 0;
@@ -31,6 +31,7 @@ struct StepContext {
     ContactCorrection contactCorrection = ContactCorrection::NGS;
     float contactBiasFactor = 0.0f;
     float restitutionThreshold = 0.0f;
+    float jointLetGoSeparation = 0.0f;  // WorldDef's; 0: never
 };
 
 }  // namespace pivot

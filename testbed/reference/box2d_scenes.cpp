@@ -183,4 +183,27 @@ Box2dScene box2dChain(bool continuous) {
     return scene;
 }
 
+Box2dScene box2dMassRatio(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    b2Body* previous = staticBody(*scene.world);
+    b2PolygonShape box;
+    box.SetAsBox(0.5f, 0.1f);
+    const float y = 25.0f;
+    for (int i = 0; i <= 20; ++i) {
+        const bool isBall = i == 20;
+        b2Body* body = isBall ? ball(*scene.world, b2Vec2(22.0f, y), 2.0f, 50.0f) : nullptr;
+        if (!isBall) {
+            b2BodyDef def;
+            def.type = b2_dynamicBody;
+            def.position.Set(0.5f + static_cast<float>(i), y);
+            body = scene.world->CreateBody(&def);
+            body->CreateFixture(&box, 1.0f);
+        }
+        pin(scene, previous, body, b2Vec2(static_cast<float>(i), y));
+        scene.bodies.push_back(body);
+        previous = body;
+    }
+    return scene;
+}
+
 }  // namespace pivot::reference

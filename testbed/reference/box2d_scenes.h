@@ -31,5 +31,6 @@ Box2dScene box2dMotorWheel(bool continuous = false);
 Box2dScene box2dBridge(bool continuous = false);
 Box2dScene box2dBridgeHeavy(bool continuous = false);
 Box2dScene box2dChain(bool continuous = false);
+Box2dScene box2dMassRatio(bool continuous = false);
 
 }  // namespace pivot::reference

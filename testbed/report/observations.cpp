@@ -329,7 +329,7 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
             result += std::string(result.empty() ? "" : "; ") + scene + ": max separation " +
                       metres(one.metrics.maxSeparation) + " with 1 iteration, " +
                       metres(three.metrics.maxSeparation) + " with 3; " +
-                      num(one.metrics.microsecondsPerStep) + " against " +
+                      num(one.metrics.microsecondsPerStep) + " us against " +
                       num(three.metrics.microsecondsPerStep) + " us per step";
         }
         out.push_back({"Recommendation",

@@ -75,6 +75,8 @@ void buildPendulumDrag(Scene& scene, const SceneOptions& options);
 void buildChainDrag(Scene& scene, const SceneOptions& options);
 void buildRagdoll(Scene& scene, const SceneOptions& options);
 void buildMotorizedRagdoll(Scene& scene, const SceneOptions& options);
+/// 20 light links holding a ball 3,000 times heavier (not in the testbed table yet).
+void buildMassRatio(Scene& scene, const SceneOptions& options);
 
 /// The step index of time t (s) at the scene's rate.
 inline int stepAt(const SceneOptions& options, float seconds) {

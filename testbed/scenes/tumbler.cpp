@@ -2,6 +2,8 @@
 // centre to the ground by a revolute joint with the scene's position solver, turned at
 // 0.05 pi rad/s by a drive torque, with 200 small boxes (0.5 m, density 1) tumbling inside.
 // The pin carries the box and its load while hundreds of contacts come and go.
+#include <cmath>
+
 #include "scene.h"
 
 namespace pivot::scenes {
@@ -42,12 +44,14 @@ void buildTumbler(Scene& scene, const SceneOptions& options) {
     }
 
     // A drive standing in for a motor: the torque that reaches the turn rate in one step,
-    // whatever the load (a motor with unlimited torque).
+    // whatever the load, up to the largest torque the API takes (a drum knocked to a wild spin,
+    // as a strategy that diverges can, is brought back over several steps).
     const float hz = options.hz;
     scene.beforeStep = [drum, turnRate, hz](Scene& s, int) {
         World& w = *s.world;
         float inertia = w.bodyRotationalInertia(drum);
-        w.applyTorque(drum, inertia * (turnRate - w.bodyAngularVelocity(drum)) * hz);
+        float torque = inertia * (turnRate - w.bodyAngularVelocity(drum)) * hz;
+        w.applyTorque(drum, std::fmax(-kMaxMagnitude, std::fmin(torque, kMaxMagnitude)));
     };
 }
 

@@ -188,8 +188,7 @@ private:
         // A WorldDef now and then has a bad field: the constructor must refuse it.
         Values values(random_, random_.chance(0.2f) ? 0.3f : 0.0f, options_.extremes);
         WorldDef def;
-        Arg<Vec2> gravity =
-            random_.chance(0.8f) ? Arg<Vec2>{{0.0f, -10.0f}} : values.magnitude2(20);
+        Arg<Vec2> gravity = random_.chance(0.8f) ? Arg<Vec2>{{0.0f, -10.0f}} : values.gravity();
         def.gravity = gravity.value;
         bool bad = gravity.bad;
         if (random_.chance(0.05f)) {
@@ -212,7 +211,11 @@ private:
         def.restitutionThreshold = threshold.value;
         def.warmStarting = random_.chance(0.9f);
         def.enableSleep = random_.chance(0.8f);
-        bad = bad || bias.bad || threshold.bad;
+        // Letting joints go beyond a distance is opt-in: most worlds never do.
+        Arg<float> letGo =
+            random_.chance(0.8f) ? Arg<float>{0.0f} : values.nonNegativeUpTo(20.0f, kMaxMagnitude);
+        def.jointLetGoSeparation = letGo.value;
+        bad = bad || bias.bad || threshold.bad || letGo.bad;
         trace("new World gravity=" + text(def.gravity) + " bad=" + std::to_string(bad));
         world_.reset();
         try {
@@ -318,7 +321,7 @@ private:
     Arg<ShapeDef> shapeDef(bool zeroDensityAllowed) {
         ShapeDef def;
         Arg<float> density = values_->density(zeroDensityAllowed);
-        Arg<float> friction = values_->nonNegative(1.0f);
+        Arg<float> friction = values_->nonNegativeUpTo(1.0f, kMaxFriction);
         Arg<float> restitution = values_->fraction();
         def.density = density.value;
         def.friction = friction.value;
@@ -401,7 +404,7 @@ private:
     Arg<JointMotor> motor() {
         JointMotor m;
         m.enabled = random_.chance(0.5f);
-        Arg<float> speed = values_->magnitude(10.0f);
+        Arg<float> speed = values_->angularSpeed(10.0f);
         Arg<float> torque = values_->nonNegative(200.0f);
         m.speed = speed.value;
         m.maxTorque = torque.value;
@@ -420,6 +423,21 @@ private:
             if (world_->shapeDensity(s) == 0.0f) return true;
         }
         return false;
+    }
+
+    // A call that changes a body's mass moves its centre of mass, by up to about 3e5 m, and the
+    // centre's velocity by w x that shift: it is refused if that would pass kMaxSpeed. Where it
+    // might, either outcome is allowed; elsewhere the call's own verdict stands.
+    Verdict afterMassChange(BodyId body, Verdict v) const {
+        if (v != Verdict::Valid || !world_->isValid(body)) return v;
+        const Vec2 velocity = world_->bodyLinearVelocity(body);
+        const float reach = std::fabs(world_->bodyAngularVelocity(body)) * 3.0e5f +
+                            std::max(std::fabs(velocity.x), std::fabs(velocity.y));
+        return reach < 0.99f * kMaxSpeed ? v : Verdict::Unknown;
+    }
+    Verdict afterMassChange(ShapeId shape, Verdict v) const {
+        if (v != Verdict::Valid || !world_->isValid(shape)) return v;
+        return afterMassChange(world_->shapeBody(shape), v);
     }
 
     bool isDynamic(const Arg<BodyId>& body) const {
@@ -490,11 +508,11 @@ private:
         }
         Arg<Vec2> position = values_->coordinate(15.0f);
         Arg<float> angle = values_->magnitude(4.0f);
-        Arg<Vec2> velocity = values_->magnitude2(5.0f);
-        Arg<float> omega = values_->magnitude(3.0f);
+        Arg<Vec2> velocity = values_->speed2(5.0f);
+        Arg<float> omega = values_->angularSpeed(3.0f);
         Arg<float> linearDamping = values_->nonNegative(1.0f);
         Arg<float> angularDamping = values_->nonNegative(1.0f);
-        Arg<float> gravityScale = values_->magnitude(2.0f);
+        Arg<float> gravityScale = values_->gravityScale();
         def.position = position.value;
         def.angle = angle.value;
         def.linearVelocity = velocity.value;
@@ -508,6 +526,14 @@ private:
         def.userData = random_.next();
         bad = bad || position.bad || angle.bad || velocity.bad || omega.bad || linearDamping.bad ||
               angularDamping.bad || gravityScale.bad;
+        if (def.fixedRotation && def.angularVelocity != 0.0f && !bad) {
+            // A body that never turns takes no angular velocity; now and then it is given one.
+            if (hostile_ > 0.0f && random_.chance(0.3f)) {
+                bad = true;
+            } else {
+                def.angularVelocity = 0.0f;
+            }
+        }
         if (def.type == BodyType::Static && !bad) {
             // A static body may not move; now and then it is asked to.
             if (hostile_ > 0.0f && random_.chance(0.3f) &&
@@ -538,6 +564,7 @@ private:
         Arg<ShapeDef> def = shapeDef(!isDynamic(body));
         Verdict v = geometryVerdict;
         if (body.bad || def.bad) v = Verdict::Bad;
+        if (!body.bad) v = afterMassChange(body.value, v);
         trace("createShape(" + what + ") body=" + idText(body.value) +
               " density=" + text(def.value.density));
         attempt("World::createShape", v, [&] {
@@ -575,18 +602,32 @@ private:
         def.bodyA = a.value;
         def.bodyB = b.value;
         bool bad = a.bad || b.bad || a.value == b.value;
-        if (random_.chance(0.7f)) {
+        const bool atWorldAnchor = random_.chance(0.7f);
+        if (atWorldAnchor) {
             Arg<Vec2> anchor = values_->coordinate(15.0f);
             def.worldAnchor = anchor.value;
             bad = bad || anchor.bad;
         }
-        Arg<Vec2> localA = values_->coordinate(2.0f);
-        Arg<Vec2> localB = values_->coordinate(2.0f);
-        Arg<float> reference = values_->magnitude(3.0f);
-        def.localAnchorA = localA.value;
-        def.localAnchorB = localB.value;
-        def.referenceAngle = reference.value;
-        bad = bad || localA.bad || localB.bad || reference.bad;
+        // With a world anchor the local anchors and reference angle come from the poses, and a
+        // def that also sets them is refused; now and then one does.
+        if (!atWorldAnchor || (hostile_ > 0.0f && random_.chance(0.1f))) {
+            Arg<Vec2> localA = values_->coordinate(2.0f);
+            Arg<Vec2> localB = values_->coordinate(2.0f);
+            Arg<float> reference = values_->magnitude(3.0f);
+            def.localAnchorA = localA.value;
+            def.localAnchorB = localB.value;
+            def.referenceAngle = reference.value;
+            bad = bad || localA.bad || localB.bad || reference.bad;
+            if (atWorldAnchor && (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{} ||
+                                  def.referenceAngle != 0.0f)) {
+                bad = true;
+            }
+        }
+        if (random_.chance(0.2f)) {
+            Arg<float> letGo = values_->nonNegativeUpTo(20.0f, kMaxMagnitude);
+            def.letGoSeparation = letGo.value;
+            bad = bad || letGo.bad;
+        }
         if (random_.chance(0.7f)) {
             Arg<PositionSolver> s = solver();
             def.positionSolver = s.value;
@@ -686,7 +727,7 @@ private:
         trace("destroyShape " + idText(shape.value));
         BodyId body;
         if (!shape.bad) body = world_->shapeBody(shape.value);
-        attempt("World::destroyShape", verdict(shape.bad), [&] {
+        attempt("World::destroyShape", afterMassChange(shape.value, verdict(shape.bad)), [&] {
             journal_.destroyShape(shape.value);
             if (world_->isValid(shape.value)) failure("destroyShape: the shape is still valid");
             if (world_->bodyType(body) == BodyType::Dynamic && !(world_->bodyMass(body) > 0.0f)) {
@@ -723,7 +764,7 @@ private:
                 break;
             }
             case 1: {
-                Arg<Vec2> v = values_->magnitude2(10.0f);
+                Arg<Vec2> v = values_->speed2(10.0f);
                 trace("setBodyLinearVelocity " + idText(body.value) + " " + text(v.value));
                 attempt("World::setBodyLinearVelocity",
                         verdict(body.bad || isStatic(body) || v.bad),
@@ -731,52 +772,97 @@ private:
                 break;
             }
             default: {
-                Arg<float> w = values_->magnitude(10.0f);
+                Arg<float> w = values_->angularSpeed(10.0f);
                 trace("setBodyAngularVelocity " + idText(body.value) + " " + text(w.value));
+                const bool turns = body.bad || !world_->bodyFixedRotation(body.value);
                 attempt("World::setBodyAngularVelocity",
-                        verdict(body.bad || isStatic(body) || w.bad),
+                        verdict(body.bad || isStatic(body) || w.bad || (!turns && w.value != 0.0f)),
                         [&] { journal_.setBodyAngularVelocity(body.value, w.value); });
                 break;
             }
         }
     }
 
+    // Forces, torques and impulses: refused on static and kinematic bodies, torques on bodies
+    // with fixed rotation, and whenever what the body accumulates would pass a limit (velocity,
+    // pending force and torque, the accelerations they give). The driver predicts the last from
+    // the body's mass and velocity: well inside every limit a call must be accepted; nearer,
+    // where its rounding and the engine's may differ, or where a force piles onto pending ones
+    // it does not track, either outcome is allowed (and a refusal must still change nothing).
     void pushBody() {
         Arg<BodyId> body = pickBody();
         Arg<Vec2> point = values_->coordinate(15.0f);
+        const bool dynamic = isDynamic(body);
+        const bool turns = !body.bad && !world_->bodyFixedRotation(body.value);
+        float invMass = 0.0f, invInertia = 0.0f;
+        Vec2 v, lever;
+        float w = 0.0f;
+        if (dynamic) {
+            const float m = world_->bodyMass(body.value);
+            const float i = world_->bodyRotationalInertia(body.value);
+            invMass = m > 0.0f ? 1.0f / m : 0.0f;
+            invInertia = i > 0.0f ? 1.0f / i : 0.0f;
+            v = world_->bodyLinearVelocity(body.value);
+            w = world_->bodyAngularVelocity(body.value);
+            lever = point.value - world_->bodyWorldCenter(body.value);
+        }
+        // Well inside every limit (a thousandth of it): the call must be accepted.
+        const auto inside = [](float value, float limit) {
+            return std::fabs(value) <= 1e-3f * limit;
+        };
+        const auto judge = [&](bool bad, bool wellInside) {
+            if (bad || !dynamic) return Verdict::Bad;
+            return wellInside ? Verdict::Valid : Verdict::Unknown;
+        };
         switch (random_.below(5)) {
             case 0: {
                 Arg<Vec2> f = values_->magnitude2(200.0f);
+                const float torque = cross(lever, f.value);
+                const bool small = inside(length(f.value), kMaxMagnitude) &&
+                                   inside(invMass * length(f.value), kMaxMagnitude) &&
+                                   (!turns || (inside(torque, kMaxMagnitude) &&
+                                               inside(invInertia * torque, kMaxMagnitude)));
                 trace("applyForce " + idText(body.value) + " " + text(f.value));
-                attempt("World::applyForce", verdict(body.bad || f.bad || point.bad),
+                attempt("World::applyForce", judge(body.bad || f.bad || point.bad, small),
                         [&] { journal_.applyForce(body.value, f.value, point.value); });
                 break;
             }
             case 1: {
                 Arg<Vec2> f = values_->magnitude2(200.0f);
+                const bool small = inside(length(f.value), kMaxMagnitude) &&
+                                   inside(invMass * length(f.value), kMaxMagnitude);
                 trace("applyForceToCenter " + idText(body.value) + " " + text(f.value));
-                attempt("World::applyForceToCenter", verdict(body.bad || f.bad),
+                attempt("World::applyForceToCenter", judge(body.bad || f.bad, small),
                         [&] { journal_.applyForceToCenter(body.value, f.value); });
                 break;
             }
             case 2: {
                 Arg<float> t = values_->magnitude(100.0f);
+                const bool small =
+                    inside(t.value, kMaxMagnitude) && inside(invInertia * t.value, kMaxMagnitude);
                 trace("applyTorque " + idText(body.value) + " " + text(t.value));
-                attempt("World::applyTorque", verdict(body.bad || t.bad),
+                attempt("World::applyTorque", judge(body.bad || t.bad || !turns, small),
                         [&] { journal_.applyTorque(body.value, t.value); });
                 break;
             }
             case 3: {
                 Arg<Vec2> j = values_->magnitude2(10.0f);
+                const Vec2 dv = invMass * j.value;
+                const float dw = invInertia * cross(lever, j.value);
+                const bool small = inside(std::fabs(v.x) + std::fabs(dv.x), kMaxSpeed) &&
+                                   inside(std::fabs(v.y) + std::fabs(dv.y), kMaxSpeed) &&
+                                   inside(std::fabs(w) + std::fabs(dw), kMaxAngularSpeed);
                 trace("applyLinearImpulse " + idText(body.value) + " " + text(j.value));
-                attempt("World::applyLinearImpulse", verdict(body.bad || j.bad || point.bad),
+                attempt("World::applyLinearImpulse", judge(body.bad || j.bad || point.bad, small),
                         [&] { journal_.applyLinearImpulse(body.value, j.value, point.value); });
                 break;
             }
             default: {
                 Arg<float> j = values_->magnitude(5.0f);
+                const bool small =
+                    inside(std::fabs(w) + std::fabs(invInertia * j.value), kMaxAngularSpeed);
                 trace("applyAngularImpulse " + idText(body.value) + " " + text(j.value));
-                attempt("World::applyAngularImpulse", verdict(body.bad || j.bad),
+                attempt("World::applyAngularImpulse", judge(body.bad || j.bad || !turns, small),
                         [&] { journal_.applyAngularImpulse(body.value, j.value); });
                 break;
             }
@@ -811,14 +897,16 @@ private:
             }
         }
         trace("setBodyType " + idText(body.value) + " " + std::to_string(int(type)));
-        attempt("World::setBodyType", verdict(bad), [&] {
-            journal_.setBodyType(body.value, type);
-            if (world_->bodyType(body.value) != type) failure("setBodyType: type not set");
-            if (type == BodyType::Static && (world_->bodyLinearVelocity(body.value) != Vec2{} ||
-                                             world_->bodyAngularVelocity(body.value) != 0.0f)) {
-                failure("setBodyType: a static body kept a velocity");
-            }
-        });
+        attempt(
+            "World::setBodyType", bad ? Verdict::Bad : afterMassChange(body.value, Verdict::Valid),
+            [&] {
+                journal_.setBodyType(body.value, type);
+                if (world_->bodyType(body.value) != type) failure("setBodyType: type not set");
+                if (type == BodyType::Static && (world_->bodyLinearVelocity(body.value) != Vec2{} ||
+                                                 world_->bodyAngularVelocity(body.value) != 0.0f)) {
+                    failure("setBodyType: a static body kept a velocity");
+                }
+            });
     }
 
     void setShapeDensity() {
@@ -827,7 +915,8 @@ private:
             !shape.bad && world_->bodyType(world_->shapeBody(shape.value)) == BodyType::Dynamic;
         Arg<float> density = values_->density(!dynamic);
         trace("setShapeDensity " + idText(shape.value) + " " + text(density.value));
-        attempt("World::setShapeDensity", verdict(shape.bad || density.bad),
+        attempt("World::setShapeDensity",
+                afterMassChange(shape.value, verdict(shape.bad || density.bad)),
                 [&] { journal_.setShapeDensity(shape.value, density.value); });
     }
 
@@ -841,7 +930,7 @@ private:
 
     void changeJoint() {
         Arg<JointId> joint = pickJoint();
-        switch (random_.below(4)) {
+        switch (random_.below(7)) {
             case 0: {
                 Arg<JointLimit> l = limit();
                 trace("setJointLimit " + idText(joint.value) + " " + text(l.value.lower) + ".." +
@@ -865,7 +954,7 @@ private:
                         [&] { journal_.setJointPositionSolver(joint.value, s.value); });
                 break;
             }
-            default: {
+            case 3: {
                 std::optional<float> bias;
                 bool bad = joint.bad;
                 if (random_.chance(0.7f)) {
@@ -876,6 +965,63 @@ private:
                 trace("setJointBiasFactor " + idText(joint.value));
                 attempt("World::setJointBiasFactor", verdict(bad),
                         [&] { journal_.setJointBiasFactor(joint.value, bias); });
+                break;
+            }
+            case 4: {
+                std::optional<float> separation;
+                bool bad = joint.bad;
+                if (random_.chance(0.8f)) {
+                    Arg<float> s = values_->nonNegativeUpTo(20.0f, kMaxMagnitude);
+                    separation = s.value;
+                    bad = bad || s.bad;
+                }
+                trace("setJointLetGoSeparation " + idText(joint.value));
+                attempt("World::setJointLetGoSeparation", verdict(bad), [&] {
+                    journal_.setJointLetGoSeparation(joint.value, separation);
+                    if (separation && world_->jointLetGoSeparation(joint.value) != *separation) {
+                        failure("setJointLetGoSeparation: the setting did not take");
+                    }
+                });
+                break;
+            }
+            case 5: {
+                trace("rearmJoint " + idText(joint.value));
+                attempt("World::rearmJoint", verdict(joint.bad), [&] {
+                    journal_.rearmJoint(joint.value);
+                    if (world_->isJointLetGo(joint.value)) failure("rearmJoint: still let go");
+                });
+                break;
+            }
+            default: {
+                const std::uint64_t value = random_.next();
+                Arg<BodyId> body = pickBody();
+                Arg<ShapeId> shape = pickShape();
+                switch (random_.below(3)) {
+                    case 0:
+                        attempt("World::setJointUserData", verdict(joint.bad), [&] {
+                            journal_.setJointUserData(joint.value, value);
+                            if (world_->jointUserData(joint.value) != value) {
+                                failure("setJointUserData: not read back");
+                            }
+                        });
+                        break;
+                    case 1:
+                        attempt("World::setBodyUserData", verdict(body.bad), [&] {
+                            journal_.setBodyUserData(body.value, value);
+                            if (world_->bodyUserData(body.value) != value) {
+                                failure("setBodyUserData: not read back");
+                            }
+                        });
+                        break;
+                    default:
+                        attempt("World::setShapeUserData", verdict(shape.bad), [&] {
+                            journal_.setShapeUserData(shape.value, value);
+                            if (world_->shapeUserData(shape.value) != value) {
+                                failure("setShapeUserData: not read back");
+                            }
+                        });
+                        break;
+                }
                 break;
             }
         }
@@ -892,8 +1038,7 @@ private:
     void worldSettings() {
         switch (random_.below(3)) {
             case 0: {
-                Arg<Vec2> g =
-                    random_.chance(0.5f) ? Arg<Vec2>{{0.0f, -10.0f}} : values_->magnitude2(20.0f);
+                Arg<Vec2> g = random_.chance(0.5f) ? Arg<Vec2>{{0.0f, -10.0f}} : values_->gravity();
                 trace("setGravity " + text(g.value));
                 attempt("World::setGravity", verdict(g.bad), [&] { journal_.setGravity(g.value); });
                 break;
@@ -921,14 +1066,20 @@ private:
         float dt = 1.0f / 60.0f;
         bool bad = false;
         int r = random_.below(100);
-        if (hostile_ > 0.0f && r < 20) {
-            const float choices[] = {0.0f, -1.0f / 60.0f, 2.0f * kMaxTimeStep, -0.0f};
-            dt = random_.chance(0.5f) ? values_->garbage() : choices[random_.below(4)];
+        if (hostile_ > 0.0f && r < 10) {
+            const float choices[] = {0.0f, -1.0f / 60.0f, 1.001f * kMaxTimeStep, -0.0f,
+                                     0.999f * kMinTimeStep};
+            dt = random_.chance(0.5f) ? values_->garbage() : choices[random_.below(5)];
             bad = true;
+        } else if (r < 20) {
+            // Anywhere in [1e-40, 1] s, uniformly in its logarithm: refused below kMinTimeStep
+            // (a driver that gives no bad values keeps to [kMinTimeStep, 1]).
+            dt = std::pow(10.0f, random_.uniform(hostile_ > 0.0f ? -40.0f : -5.0f, 0.0f));
+            bad = !(dt >= kMinTimeStep);
         } else if (r < 30) {
-            const float choices[] = {1.0f / 30.0f, 1.0f / 120.0f, 1.0f / 240.0f, 1.0f / 1000.0f,
-                                     kMaxTimeStep};
-            dt = choices[random_.below(options_.extremes ? 5 : 4)];
+            const float choices[] = {1.0f / 30.0f,   1.0f / 120.0f, 1.0f / 240.0f,
+                                     1.0f / 1000.0f, kMaxTimeStep,  kMinTimeStep};
+            dt = choices[random_.below(options_.extremes ? 6 : 4)];
         } else if (r < 40) {
             dt = random_.uniform(1e-4f, 0.05f);
         }
@@ -950,7 +1101,7 @@ private:
         if (attempt("World::step", verdict(bad),
                     [&] { journal_.step(dt, velocityIterations, positionIterations); })) {
             ++report_.steps;
-            report_.blownUpJoints += world_->lastStepStats().blownUpJointCount;
+            report_.letGoJoints += world_->lastStepStats().letGoJointCount;
             report_.discardedBodies += world_->lastStepStats().discardedBodyCount;
             checkInvariants("a step");
         }
@@ -976,6 +1127,8 @@ private:
             {"World::bodyMass", [&] { w.bodyMass(body.value); }},
             {"World::bodyRotationalInertia", [&] { w.bodyRotationalInertia(body.value); }},
             {"World::isBodyAwake", [&] { w.isBodyAwake(body.value); }},
+            {"World::bodyFixedRotation", [&] { w.bodyFixedRotation(body.value); }},
+            {"World::bodyUserData", [&] { w.bodyUserData(body.value); }},
         };
         std::vector<std::pair<const char*, std::function<void()>>> jointQueries = {
             {"World::jointBodyA", [&] { w.jointBodyA(joint.value); }},
@@ -992,12 +1145,16 @@ private:
             {"World::jointMotor", [&] { w.jointMotor(joint.value); }},
             {"World::jointPositionSolver", [&] { w.jointPositionSolver(joint.value); }},
             {"World::jointBiasFactor", [&] { w.jointBiasFactor(joint.value); }},
+            {"World::isJointLetGo", [&] { w.isJointLetGo(joint.value); }},
+            {"World::jointLetGoSeparation", [&] { w.jointLetGoSeparation(joint.value); }},
+            {"World::jointUserData", [&] { w.jointUserData(joint.value); }},
         };
         std::vector<std::pair<const char*, std::function<void()>>> shapeQueries = {
             {"World::shapeBody", [&] { w.shapeBody(shape.value); }},
             {"World::shapeFilter", [&] { w.shapeFilter(shape.value); }},
             {"World::shapeType", [&] { w.shapeType(shape.value); }},
             {"World::shapeDensity", [&] { w.shapeDensity(shape.value); }},
+            {"World::shapeUserData", [&] { w.shapeUserData(shape.value); }},
         };
         switch (random_.below(7)) {
             case 0: {
@@ -1044,6 +1201,8 @@ private:
                     w.contacts();
                     w.contactBeginEvents();
                     w.contactEndEvents();
+                    w.jointLetGoEvents();
+                    w.worldEdgeEvents();
                     w.lastStepStats();
                     w.gravity();
                     w.defaultPositionSolver();
@@ -1156,7 +1315,8 @@ private:
                 trace("destroy shapes while iterating events");
                 for (const ContactEvent& e : world_->contactBeginEvents()) {
                     if (!random_.chance(0.5f)) continue;
-                    attempt("World::destroyShape", verdict(!world_->isValid(e.shapeB)),
+                    attempt("World::destroyShape",
+                            afterMassChange(e.shapeB, verdict(!world_->isValid(e.shapeB))),
                             [&] { journal_.destroyShape(e.shapeB); });
                 }
                 break;
@@ -1247,6 +1407,13 @@ private:
             if (w.bodyType(b) == BodyType::Static && (v != Vec2{} || omega != 0.0f)) {
                 failure("static body " + idText(b) + " moves" + where);
             }
+            // Whatever the engine did, the state is one the API would take back.
+            if (std::fabs(p.x) > kMaxCoordinate || std::fabs(p.y) > kMaxCoordinate ||
+                std::fabs(v.x) > kMaxSpeed || std::fabs(v.y) > kMaxSpeed ||
+                std::fabs(omega) > kMaxAngularSpeed || std::fabs(a) > kMaxMagnitude) {
+                failure("body " + idText(b) + " is beyond the input limits: p=" + text(p) +
+                        " v=" + text(v) + " a=" + text(a) + " w=" + text(omega) + where);
+            }
         }
         if (shapes != w.shapeCount()) {
             failure("bodies list " + std::to_string(shapes) + " shapes, shapeCount is " +
@@ -1306,6 +1473,23 @@ private:
                         failure("an event of the last step names an invalid shape" + where);
                     }
                 }
+            }
+            const std::vector<JointLetGoEvent> letGo = w.jointLetGoEvents();
+            if (static_cast<int>(letGo.size()) != stats.letGoJointCount) {
+                failure("the let-go events do not match the statistics" + where);
+            }
+            for (const JointLetGoEvent& e : letGo) {
+                if (!w.isValid(e.joint) || !w.isJointLetGo(e.joint) ||
+                    !std::isfinite(e.separation)) {
+                    failure("a let-go event names a joint that is not let go" + where);
+                }
+            }
+            const std::vector<WorldEdgeEvent> edge = w.worldEdgeEvents();
+            if (static_cast<int>(edge.size()) != stats.edgeBodyCount) {
+                failure("the world edge events do not match the statistics" + where);
+            }
+            for (const WorldEdgeEvent& e : edge) {
+                if (!w.isValid(e.body)) failure("an edge event names an invalid body" + where);
             }
         }
     }

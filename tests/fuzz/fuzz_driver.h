@@ -62,9 +62,9 @@ struct Report {
     /// Worlds in which a body or joint came to report a non-finite number, and the operation
     /// at which each was first seen.
     std::vector<long> nonFiniteWorlds;
-    /// Joints the worlds reported blown up, and body-steps whose non-finite solved state they
+    /// Joints the worlds reported let go, and body-steps whose non-finite solved state they
     /// discarded (StepStats): blow-ups the engine contained.
-    long blownUpJoints = 0;
+    long letGoJoints = 0;
     long discardedBodies = 0;
     long maxContacts = 0;
     std::map<std::string, OperationCount> byOperation;

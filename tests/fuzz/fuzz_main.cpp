@@ -35,7 +35,7 @@ int replay(const char* path) {
     }
     std::printf("%d lines: %d calls returned, %d refused, %d skipped\n", r.lines, r.applied,
                 r.refused, r.skipped);
-    std::printf("blown-up joints reported: %ld; discarded body states: %ld\n", r.blownUpJoints,
+    std::printf("let-go joints reported: %ld; discarded body states: %ld\n", r.letGoJoints,
                 r.discardedBodies);
     if (r.nonFiniteLine > 0) {
         std::printf("non-finite after the step of line %d: %s\n", r.nonFiniteLine,
@@ -110,8 +110,8 @@ int main(int argc, char** argv) {
                     report.nonFiniteWorlds[i]);
     }
     std::printf("%s\n", report.nonFiniteWorlds.empty() ? "" : ")");
-    std::printf("contained: %ld blown-up joints reported, %ld non-finite body states discarded\n",
-                report.blownUpJoints, report.discardedBodies);
+    std::printf("contained: %ld let-go joints reported, %ld non-finite body states discarded\n",
+                report.letGoJoints, report.discardedBodies);
     for (const auto& [name, count] : report.byOperation) {
         std::printf("  %-32s %9ld accepted %9ld rejected\n", name.c_str(), count.accepted,
                     count.rejected);

@@ -45,7 +45,7 @@ void Journal::begin(World& world, const WorldDef& def) {
     lines_.push_back("world " + num(def.gravity) + " " + num(int(def.defaultPositionSolver)) + " " +
                      num(int(def.contactCorrection)) + " " + num(def.contactBiasFactor) + " " +
                      num(def.restitutionThreshold) + " " + num(def.warmStarting) + " " +
-                     num(def.enableSleep));
+                     num(def.enableSleep) + " " + num(def.jointLetGoSeparation));
 }
 
 bool Journal::write(const std::string& path) const {
@@ -102,7 +102,8 @@ JointId Journal::createJoint(const RevoluteJointDef& def) {
         num(def.positionSolver ? int(*def.positionSolver) : -1) + " " +
         num(def.biasFactor.value_or(-1.0f)) + " " + num(def.limit.enabled) + " " +
         num(def.limit.lower) + " " + num(def.limit.upper) + " " + num(def.motor.enabled) + " " +
-        num(def.motor.speed) + " " + num(def.motor.maxTorque) + " " + num(def.collideConnected));
+        num(def.motor.speed) + " " + num(def.motor.maxTorque) + " " + num(def.collideConnected) +
+        " " + num(def.letGoSeparation.value_or(-1.0f)));
     return id;
 }
 
@@ -204,6 +205,27 @@ void Journal::setJointBiasFactor(JointId id, std::optional<float> bias) {
     world_->setJointBiasFactor(id, bias);
     lines_.push_back("bias " + nameOf('j', id) + " " + num(bias.value_or(-1.0f)));
 }
+void Journal::setJointLetGoSeparation(JointId id, std::optional<float> separation) {
+    world_->setJointLetGoSeparation(id, separation);
+    lines_.push_back("letgo " + nameOf('j', id) + " " + num(separation.value_or(-1.0f)));
+}
+void Journal::rearmJoint(JointId id) {
+    world_->rearmJoint(id);
+    lines_.push_back("rearm " + nameOf('j', id));
+}
+// User data changes nothing the engine computes; journalled so a replay is the same world.
+void Journal::setBodyUserData(BodyId id, std::uint64_t value) {
+    world_->setBodyUserData(id, value);
+    lines_.push_back("bodydata " + nameOf('b', id) + " " + std::to_string(value));
+}
+void Journal::setShapeUserData(ShapeId id, std::uint64_t value) {
+    world_->setShapeUserData(id, value);
+    lines_.push_back("shapedata " + nameOf('s', id) + " " + std::to_string(value));
+}
+void Journal::setJointUserData(JointId id, std::uint64_t value) {
+    world_->setJointUserData(id, value);
+    lines_.push_back("jointdata " + nameOf('j', id) + " " + std::to_string(value));
+}
 void Journal::setMouseTarget(MouseJointId id, Vec2 target) {
     world_->setMouseTarget(id, target);
     lines_.push_back("target " + nameOf('m', id) + " " + num(target));
@@ -274,6 +296,15 @@ public:
         std::string w;
         return (in_ >> w) ? std::atoi(w.c_str()) : otherwise;
     }
+    /// A number if one is left on the line, else `otherwise`.
+    float optionalFloat(float otherwise) {
+        std::string w;
+        return (in_ >> w) ? std::strtof(w.c_str(), nullptr) : otherwise;
+    }
+    std::uint64_t u64() {
+        std::string w = word();
+        return ok_ ? std::strtoull(w.c_str(), nullptr, 10) : 0;
+    }
     Filter filter() {
         Filter out;
         out.categoryBits = static_cast<std::uint16_t>(i());
@@ -320,6 +351,7 @@ ReplayResult replay(std::istream& in) {
             def.restitutionThreshold = f.f();
             def.warmStarting = f.b();
             def.enableSleep = f.b();
+            def.jointLetGoSeparation = f.optionalFloat(0.0f);  // journals before it had none
             world = std::make_unique<World>(def);
             continue;
         }
@@ -400,6 +432,8 @@ ReplayResult replay(std::istream& in) {
             def.motor.speed = f.f();
             def.motor.maxTorque = f.f();
             def.collideConnected = f.b();
+            const float letGo = f.optionalFloat(-1.0f);
+            if (letGo >= 0.0f) def.letGoSeparation = letGo;
             call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
         } else if (command == "mouse") {
             std::string name = f.word();
@@ -500,6 +534,27 @@ ReplayResult replay(std::istream& in) {
             std::optional<float> bias;
             if (b >= 0.0f) bias = b;
             call = [&w, j, bias] { w.setJointBiasFactor(j, bias); };
+        } else if (command == "letgo") {
+            JointId j = joint(f.word());
+            const float value = f.f();
+            std::optional<float> separation;
+            if (value >= 0.0f) separation = value;
+            call = [&w, j, separation] { w.setJointLetGoSeparation(j, separation); };
+        } else if (command == "rearm") {
+            JointId j = joint(f.word());
+            call = [&w, j] { w.rearmJoint(j); };
+        } else if (command == "bodydata") {
+            BodyId b = body(f.word());
+            const std::uint64_t value = f.u64();
+            call = [&w, b, value] { w.setBodyUserData(b, value); };
+        } else if (command == "shapedata") {
+            ShapeId s = shape(f.word());
+            const std::uint64_t value = f.u64();
+            call = [&w, s, value] { w.setShapeUserData(s, value); };
+        } else if (command == "jointdata") {
+            JointId j = joint(f.word());
+            const std::uint64_t value = f.u64();
+            call = [&w, j, value] { w.setJointUserData(j, value); };
         } else if (command == "target") {
             MouseJointId m = mouse(f.word());
             Vec2 t = f.v();
@@ -524,7 +579,7 @@ ReplayResult replay(std::istream& in) {
             call = [&w, dt, vi, pi, repeat, what, counts] {
                 for (int k = 0; k < repeat; ++k) {
                     w.step(dt, vi, pi);
-                    counts->blownUpJoints += w.lastStepStats().blownUpJointCount;
+                    counts->letGoJoints += w.lastStepStats().letGoJointCount;
                     counts->discardedBodies += w.lastStepStats().discardedBodyCount;
                     if (!worldIsFinite(w, what)) return;
                 }

@@ -54,6 +54,11 @@ public:
     void setJointMotor(JointId id, const JointMotor& motor);
     void setJointPositionSolver(JointId id, PositionSolver solver);
     void setJointBiasFactor(JointId id, std::optional<float> bias);
+    void setJointLetGoSeparation(JointId id, std::optional<float> separation);
+    void rearmJoint(JointId id);
+    void setBodyUserData(BodyId id, std::uint64_t value);
+    void setShapeUserData(ShapeId id, std::uint64_t value);
+    void setJointUserData(JointId id, std::uint64_t value);
     void setMouseTarget(MouseJointId id, Vec2 target);
     void setGravity(Vec2 gravity);
     void setContactCorrection(ContactCorrection correction);
@@ -81,9 +86,9 @@ struct ReplayResult {
     /// The first line (1-based) after whose step a body or joint reported a non-finite number.
     int nonFiniteLine = 0;
     std::string nonFinite;  ///< what was not finite
-    /// Joints the world reported blown up, and body-steps whose non-finite solved state it
+    /// Joints the world reported let go, and body-steps whose non-finite solved state it
     /// discarded (StepStats), over the whole replay.
-    long blownUpJoints = 0;
+    long letGoJoints = 0;
     long discardedBodies = 0;
     std::string error;  ///< a line that could not be read
 };

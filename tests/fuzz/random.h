@@ -58,16 +58,55 @@ public:
                                  std::numeric_limits<float>::max(),
                                  -std::numeric_limits<float>::max(),
                                  1e20f,
-                                 -1e30f};
-        return choices[r_.below(7)];
+                                 -1e30f,
+                                 std::numeric_limits<float>::denorm_min(),
+                                 -1e-39f};  // denormals
+        return choices[r_.below(9)];
+    }
+
+    /// A little past a limit (by a thousandth), where an off-by-one in a check would show.
+    static float pastLimit(float limit) { return limit * 1.001f; }
+
+    /// A signed quantity bounded by `limit` (named in constants.h), usually of the given
+    /// typical size; now and then exactly at the limit, or (hostile) just past it.
+    Arg<float> bounded(float typical, float limit) {
+        if (r_.chance(hostile_)) {
+            if (r_.chance(0.4f)) return {garbage(), true};
+            const float past = r_.chance(0.5f) ? pastLimit(limit) : 3.0f * limit;
+            return {r_.chance(0.5f) ? past : -past, true};
+        }
+        if (edge(0.01f)) return {r_.chance(0.5f) ? limit : -limit};
+        if (r_.chance(0.05f)) return {0.0f};
+        return {r_.uniform(-typical, typical)};
+    }
+    Arg<Vec2> bounded2(float typical, float limit) {
+        Arg<float> x = bounded(typical, limit);
+        Arg<float> y = bounded(typical, limit);
+        return {{x.value, y.value}, x.bad || y.bad};
+    }
+    Arg<Vec2> speed2(float typical) { return bounded2(typical, kMaxSpeed); }
+    Arg<float> angularSpeed(float typical) { return bounded(typical, kMaxAngularSpeed); }
+    Arg<Vec2> gravity() { return bounded2(20.0f, kMaxGravity); }
+    Arg<float> gravityScale() { return bounded(2.0f, kMaxGravityScale); }
+
+    /// In [0, limit].
+    Arg<float> nonNegativeUpTo(float typical, float limit) {
+        if (r_.chance(hostile_)) {
+            if (r_.chance(0.4f)) return {garbage(), true};
+            return {r_.chance(0.5f) ? pastLimit(limit) : -r_.uniform(0.001f, typical) - 1e-3f,
+                    true};
+        }
+        if (r_.chance(0.1f)) return {0.0f};
+        if (edge(0.01f)) return {limit};
+        return {r_.uniform(0.0f, typical)};
     }
 
     /// A position or point, m.
     Arg<Vec2> coordinate(float span = 20.0f) {
         if (r_.chance(hostile_)) {
             Vec2 v{r_.uniform(-span, span), r_.uniform(-span, span)};
-            float bad =
-                r_.chance(0.5f) ? garbage() : (r_.chance(0.5f) ? 1.5f : -2.0f) * kMaxCoordinate;
+            const float past = r_.chance(0.5f) ? pastLimit(kMaxCoordinate) : 2.0f * kMaxCoordinate;
+            float bad = r_.chance(0.5f) ? garbage() : (r_.chance(0.5f) ? past : -past);
             (r_.chance(0.5f) ? v.x : v.y) = bad;
             return {v, true};
         }
@@ -77,17 +116,9 @@ public:
         return {{r_.uniform(-span, span), r_.uniform(-span, span)}};
     }
 
-    /// A signed quantity bounded by kMaxMagnitude (speed, force, angle, ...), usually of the
+    /// A signed quantity bounded by kMaxMagnitude (force, torque, angle, ...), usually of the
     /// given typical size.
-    Arg<float> magnitude(float typical) {
-        if (r_.chance(hostile_)) {
-            return {r_.chance(0.6f) ? garbage() : (r_.chance(0.5f) ? 2.0f : -3.0f) * kMaxMagnitude,
-                    true};
-        }
-        if (edge(0.01f)) return {r_.chance(0.5f) ? kMaxMagnitude : -kMaxMagnitude};
-        if (r_.chance(0.05f)) return {0.0f};
-        return {r_.uniform(-typical, typical)};
-    }
+    Arg<float> magnitude(float typical) { return bounded(typical, kMaxMagnitude); }
     Arg<Vec2> magnitude2(float typical) {
         Arg<float> x = magnitude(typical);
         Arg<float> y = magnitude(typical);
@@ -141,7 +172,7 @@ public:
                                      2.0f * kMaxCoordinate};
             return {r_.chance(0.3f) ? garbage() : choices[r_.below(5)], true};
         }
-        if (edge(0.02f)) return {kLinearSlop};
+        if (edge(0.02f)) return {r_.chance(0.5f) ? kLinearSlop : kMaxCoordinate};
         return {r_.uniform(0.05f, 2.0f)};
     }
 

@@ -3,7 +3,7 @@
 //   - every body's pose and velocity and every joint's reaction are finite;
 //   - every body stays within kPositionBound of the origin;
 //   - a run that blows up (scenes::isBlownUp: a runaway speed) passes only if the world
-//     reported the blown-up joints (World::jointBlownUp, StepStats::blownUpJointCount) and
+//     reported let-go joints (World::isJointLetGo, StepStats::letGoJointCount) and
 //     every body stayed finite and within the bound: the engine contains a blow-up;
 //   - the heap does not grow once the scene has settled: the live bytes allocated through
 //     operator new (counted by the replacement below) never exceed what was live at the end of
@@ -109,7 +109,7 @@ struct RunResult {
     long long allocationsAfterWarmup = 0;
     float farthest = 0.0f;     // m, largest |position| seen
     long lastGrowthStep = -1;  // the last step after which the heap held more than ever before
-    long blownUpJoints = 0;    // joints the world reported blown up
+    long letGoJoints = 0;      // joints the world reported let go
     long discardedBodies = 0;  // body-steps whose non-finite solved state the world discarded
 };
 
@@ -178,10 +178,10 @@ RunResult soak(const SceneInfo& info, PositionSolver solver, long steps, long wa
             }
         }
         const StepStats& stats = world.lastStepStats();
-        result.blownUpJoints += stats.blownUpJointCount;
+        result.letGoJoints += stats.letGoJointCount;
         result.discardedBodies += stats.discardedBodyCount;
-        if (result.problem.empty() && isBlownUp(scene) && result.blownUpJoints == 0) {
-            result.problem = "the scene blew up and the world reported no blown-up joint";
+        if (result.problem.empty() && isBlownUp(scene) && result.letGoJoints == 0) {
+            result.problem = "the scene blew up and the world reported no let-go joint";
         }
         if (!result.problem.empty()) {
             result.ok = false;
@@ -271,7 +271,7 @@ int main(int argc, char** argv) {
         kHeapSlackFraction);
     std::printf("%-18s %-16s %8s %8s %12s %12s %12s %10s %10s %10s %8s %9s  %s\n", "scene",
                 "solver", "steps", "seconds", "heap@warmup", "heap peak", "heap@end", "allocs",
-                "growth@", "farthest", "blown-up", "discarded", "result");
+                "growth@", "farthest", "let-go", "discarded", "result");
     int failures = 0;
     for (const SceneInfo* info : scenes) {
         for (PositionSolver solver : solvers) {
@@ -280,7 +280,7 @@ int main(int argc, char** argv) {
                 "%-18s %-16s %8ld %8.1f %12lld %12lld %12lld %10lld %10ld %10.1f %8ld %9ld  %s\n",
                 info->name, positionSolverName(solver), r.stepsTaken, r.seconds, r.bytesAfterWarmup,
                 r.peakAfterWarmup, r.bytesAtEnd, r.allocationsAfterWarmup, r.lastGrowthStep,
-                static_cast<double>(r.farthest), r.blownUpJoints, r.discardedBodies,
+                static_cast<double>(r.farthest), r.letGoJoints, r.discardedBodies,
                 r.ok ? "ok" : r.problem.c_str());
             std::fflush(stdout);
             if (!r.ok) ++failures;

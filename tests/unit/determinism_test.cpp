@@ -61,19 +61,19 @@ struct RecordedHashes {
 // clang-format off
 const RecordedHashes kRecorded[] = {
     // scene               baumgarte             pseudo_velocity       modified_ngs          full_ngs
-    {"pendulum",          {0x57fd490d01ac1575ull, 0xd937d128c0d4b304ull, 0x01b4650bb1925c7cull, 0xc8865e3e8328601full}},
-    {"pendulum_limit",    {0xe56024245e6d4dceull, 0xf1ab654dc3178075ull, 0x64c97eecf2bdb15dull, 0x789e97942b76ad09ull}},
-    {"double_pendulum",   {0xa1c47aa0a29d985cull, 0xc5543026f8b4ea2dull, 0xf2a03fbf2110a985ull, 0xcd3a59362e6ad17aull}},
-    {"motor_wheel",       {0x0c12c68706e1a1a0ull, 0x044886035a9a7917ull, 0xc4e21969940115edull, 0xaa87746e6c873d09ull}},
-    {"bridge",            {0x7bf4c017088e9377ull, 0x8bc4cfbfae6a08baull, 0xd3fa9d84c2757dbbull, 0x64832e65faad5f1aull}},
-    {"chain",             {0xcfad34c6d55bc32cull, 0x5a5eab2e93461ee4ull, 0xf25af09cd30b63ebull, 0x58ad46daee7980cfull}},
-    {"bridge_heavy",      {0x058f1465e55a7614ull, 0x09449e46cfe8552full, 0x02a737f8e2dcf5d7ull, 0xf71bd80a87a0f4d2ull}},
-    {"pyramid",           {0xbdfb5177959c641eull, 0x0a780d02edb50ff7ull, 0x456fd8bdaf7bff34ull, 0x599978abf181465dull}},
-    {"tumbler",           {0x9f40fe88e0e12e8eull, 0xcc296421e30877aaull, 0xfdd66a9449d5c103ull, 0x59154062cd50931full}},
-    {"pendulum_drag",     {0x5071406d522bb773ull, 0x63e4c52924e7e9e7ull, 0x692776be68f97648ull, 0x773df0080e6b3860ull}},
-    {"chain_drag",        {0xd0c77d3fd87130f8ull, 0x89506a4fbab3689bull, 0xbd33aff2b7123d30ull, 0xac65cc958dde117aull}},
-    {"ragdoll",           {0xb62008db4ecb98bdull, 0x8063d5ad329e026eull, 0xa46b6e7223014479ull, 0x5579dbc24cb1a22full}},
-    {"ragdoll_motorized", {0xb77521b4d0ed21a7ull, 0x977a020e7844547eull, 0x832667cbc590ebabull, 0x1948867333fbf552ull}},
+    {"pendulum",          {0x83b30e6889034ab5ull, 0xd2111d8e40385484ull, 0x25ac08b15bfcc48cull, 0x82927eeab6de712full}},
+    {"pendulum_limit",    {0x74d08a8f4beca25eull, 0x1f1bf7f8eef10fe5ull, 0x026dc6a9d53acffdull, 0x28b89379497326b9ull}},
+    {"double_pendulum",   {0x16d88708eef00c0cull, 0xa199e1e4e99c18ddull, 0x65a4516435a227a5ull, 0x6b908c1417c47ddaull}},
+    {"motor_wheel",       {0x3edfd3d374ca88d0ull, 0xe32acc649f0ae6e7ull, 0x991564c85f89bc6dull, 0xdfbd3568b6c32779ull}},
+    {"bridge",            {0x272d1b91024d20d7ull, 0x3bde71a77bb2d47aull, 0x91136a05125df05bull, 0x704c328b76100c9aull}},
+    {"chain",             {0xe4e453049dc9509cull, 0x7b7d0e65d28cff44ull, 0x76f5c3e551f3b7cbull, 0x06930357cb67703full}},
+    {"bridge_heavy",      {0x0d25904fe7c80344ull, 0x7dc48342e81894bfull, 0x5a4ba3009c95e357ull, 0x9b1ae70e97fcdd72ull}},
+    {"pyramid",           {0x3a2531760911a72eull, 0xdf4e95cb2a94a447ull, 0x4a2e1127edab2884ull, 0x1086769f4525686dull}},
+    {"tumbler",           {0x5c5da9008bb6cc1eull, 0xffe239bfe21f2f8aull, 0xbd92bac9acceb4e3ull, 0xe51142ee05f1518full}},
+    {"pendulum_drag",     {0x126f6c0db4766c0bull, 0x1a01a89fa0b073ecull, 0xec1edb6576afd77bull, 0xc56583d92e80e520ull}},
+    {"chain_drag",        {0x3186b8faeff0749aull, 0xccb78794a7c3d797ull, 0xabbe4b21fd28576eull, 0x052259d3bc1a9ac9ull}},
+    {"ragdoll",           {0x1361eb263e980e5dull, 0x1db58f6a0ca2b8ceull, 0xf6decdf4c325ac79ull, 0xa24f1d49333d571full}},
+    {"ragdoll_motorized", {0x17304d446d3a4a07ull, 0x75847cd49752a13eull, 0xde45d0867c1231cbull, 0x45bcdfd966bfc0b2ull}},
 };
 // clang-format on
 

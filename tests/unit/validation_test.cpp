@@ -174,7 +174,20 @@ TEST(Validation, DegeneratePolygons) {
         [&] {
             f.world.createShape(f.body, def, Polygon::fromPoints({{0, 0}, {1, 0}, {1, 0}, {0, 1}}));
         },
-        {"repeated vertices"});
+        {"edge from vertices[1] to vertices[2]", "is 0 m long", "kLinearSlop", "repeated vertex"});
+    // A box too small for the slop: the message names the rule it breaks and the limit, not a
+    // repeated vertex (it has none).
+    expectRejected(f.world, [&] { f.world.createShape(f.body, def, Polygon::box(1e-3f, 1e-3f)); },
+                   {"World::createShape", "edge from vertices[0] to vertices[1]", "0.002 m long",
+                    "at least kLinearSlop (0.005 m)"});
+    // Vertices numbered as given, also when a clockwise polygon is stored reversed.
+    expectRejected(f.world,
+                   [&] {
+                       f.world.createShape(
+                           f.body, def,
+                           Polygon::fromPoints({{0, 0}, {0, 1}, {1, 1}, {1, 0}, {0.003f, 0}}));
+                   },
+                   {"edge from vertices[0] to vertices[4]", "0.003 m long"});
     expectRejected(
         f.world,
         [&] {
@@ -231,7 +244,7 @@ TEST(Validation, CircleAndShapeDefFields) {
     bad = def;
     bad.friction = 1e20f;
     expectRejected(f.world, [&] { f.world.createShape(f.body, bad, Circle{}); },
-                   {"def.friction", "kMaxMagnitude", "1e+20"});
+                   {"def.friction", "kMaxFriction", "1e+20"});
     bad = def;
     bad.restitution = 1.5f;
     expectRejected(f.world, [&] { f.world.createShape(f.body, bad, Circle{}); },
@@ -414,7 +427,9 @@ TEST(Validation, NumbersBeyondTheInputLimits) {
     // Right at the limits is accepted.
     BodyDef edge = dynamicDef();
     edge.position = {kMaxCoordinate, -kMaxCoordinate};
-    edge.angularVelocity = kMaxMagnitude;
+    edge.angularVelocity = kMaxAngularSpeed;
+    edge.linearVelocity = {-kMaxSpeed, kMaxSpeed};
+    edge.gravityScale = -kMaxGravityScale;
     EXPECT_NO_THROW(f.world.createBody(edge));
     EXPECT_NO_THROW(f.world.step(kMaxTimeStep));
 }
@@ -695,7 +710,12 @@ TEST(Validation, EveryCallChecksItsIds) {
 
 TEST(Validation, StepArguments) {
     Fixture f;
-    expectRejected(f.world, [&] { f.world.step(0.0f); }, {"step", "dt", "> 0"});
+    expectRejected(f.world, [&] { f.world.step(0.0f); },
+                   {"step", "dt", ">= kMinTimeStep (1e-05 s)"});
+    // The shortest steps used to be accepted and made 1/dt infinite (docs/reliability.md).
+    expectRejected(f.world, [&] { f.world.step(1e-40f); }, {"dt", "kMinTimeStep", "got 1e-40"});
+    expectRejected(f.world, [&] { f.world.step(1e-30f); }, {"dt", "kMinTimeStep"});
+    expectRejected(f.world, [&] { f.world.step(0.99f * kMinTimeStep); }, {"dt", "kMinTimeStep"});
     expectRejected(f.world, [&] { f.world.step(-1.0f / 60.0f); }, {"dt"});
     expectRejected(f.world, [&] { f.world.step(kNaN); }, {"dt", "nan"});
     expectRejected(f.world, [&] { f.world.step(kInf); }, {"dt", "inf"});
@@ -706,6 +726,7 @@ TEST(Validation, StepArguments) {
     expectRejected(f.world, [&] { f.world.step(1.0f / 60.0f, 8, kMaxIterations + 1); },
                    {"positionIterations"});
     EXPECT_NO_THROW(f.world.step(1.0f / 60.0f, 0, 0));
+    EXPECT_NO_THROW(f.world.step(kMinTimeStep));
 }
 
 TEST(Validation, WorldDef) {
@@ -757,4 +778,75 @@ TEST(Lifetime, DestroyingAJointUnlinksOnlyThatJoint) {
     EXPECT_EQ(f.world.bodyCount(), 2);
     for (int i = 0; i < 10; ++i) f.world.step(1.0f / 60.0f);
     EXPECT_LT(f.world.jointSeparation(f.joint), kLinearSlop);
+}
+
+// The limits that keep a step's products inside float range (docs/reliability.md, "Input
+// limits"): each refused just past its limit, with the limit named, and accepted at it.
+TEST(Validation, TheLimitsThatKeepAStepInRange) {
+    Fixture f;
+    const float past = 1.0001f;
+    BodyDef def = dynamicDef();
+    def.linearVelocity = {0.0f, past * kMaxSpeed};
+    expectRejected(f.world, [&] { f.world.createBody(def); }, {"def.linearVelocity", "kMaxSpeed"});
+    def = dynamicDef();
+    def.angularVelocity = -past * kMaxAngularSpeed;
+    expectRejected(f.world, [&] { f.world.createBody(def); },
+                   {"def.angularVelocity", "kMaxAngularSpeed"});
+    def = dynamicDef();
+    def.gravityScale = past * kMaxGravityScale;
+    expectRejected(f.world, [&] { f.world.createBody(def); },
+                   {"def.gravityScale", "kMaxGravityScale"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setBodyLinearVelocity(f.body, {past * kMaxSpeed, 0});
+                   },
+                   {"velocity", "kMaxSpeed"});
+    expectRejected(f.world,
+                   [&] { f.world.setBodyAngularVelocity(f.body, past * kMaxAngularSpeed); },
+                   {"omega", "kMaxAngularSpeed"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setGravity({0, -past * kMaxGravity});
+                   },
+                   {"gravity", "kMaxGravity"});
+    WorldDef worldDef;
+    worldDef.gravity = {past * kMaxGravity, 0};
+    EXPECT_THROW(World{worldDef}, Error);
+    ShapeDef shape;
+    shape.friction = past * kMaxFriction;
+    expectRejected(f.world, [&] { f.world.createShape(f.body, shape, Circle{}); },
+                   {"def.friction", "kMaxFriction"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setJointMotor(f.joint, {true, past * kMaxAngularSpeed, 1.0f});
+                   },
+                   {"motor.speed", "kMaxAngularSpeed"});
+
+    // Denormals are refused wherever a float is taken; zero is fine.
+    const float denormal = std::numeric_limits<float>::denorm_min();
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setBodyLinearVelocity(f.body, {denormal, 0});
+                   },
+                   {"velocity", "denormal"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setBodyTransform(f.body, {0, 1e-39f}, 0);
+                   },
+                   {"position", "denormal"});
+    expectRejected(f.world, [&] { f.world.applyTorque(f.body, -denormal); },
+                   {"torque", "denormal"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.createShape(f.body, ShapeDef{},
+                                           Polygon::fromPoints({{0, 0}, {1, denormal}, {0, 1}}));
+                   },
+                   {"polygon.vertices[1]", "denormal"});
+
+    // At the limits.
+    EXPECT_NO_THROW(f.world.setBodyLinearVelocity(f.body, {kMaxSpeed, -kMaxSpeed}));
+    EXPECT_NO_THROW(f.world.setBodyAngularVelocity(f.body, -kMaxAngularSpeed));
+    EXPECT_NO_THROW(f.world.setGravity({kMaxGravity, -kMaxGravity}));
+    shape.friction = kMaxFriction;
+    EXPECT_NO_THROW(f.world.createShape(f.body, shape, Circle{}));
 }
