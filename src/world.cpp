@@ -12,11 +12,15 @@
 namespace pivot {
 
 namespace {
+// Ids 1 to 2^32 - 1, each once per process (0 marks a null handle): a repeated id would let a
+// handle kept from a destroyed world name an object of a new one, so the counter never wraps.
 std::uint32_t nextWorldId() {
-    static std::atomic<std::uint32_t> counter{0};
-    std::uint32_t id = ++counter;
-    if (id == 0) id = ++counter;  // 0 marks a null handle
-    return id;
+    static std::atomic<std::uint64_t> counter{0};
+    const std::uint64_t id = ++counter;
+    if (id > 0xFFFFFFFFull) {
+        fail("World::World", "this process has made 2^32 - 1 worlds, every id a handle can carry");
+    }
+    return static_cast<std::uint32_t>(id);
 }
 }  // namespace
 

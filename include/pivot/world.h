@@ -196,8 +196,9 @@ public:
     // (pivot::Error) rather than silently dropped. A static body takes none of them; forces,
     // torques and impulses act on dynamic bodies only (a kinematic body has infinite mass: set
     // its velocity); a body with fixed rotation takes no torque, angular impulse or non-zero
-    // angular velocity. A call is also refused if it would take what the body accumulates
-    // beyond kMaxMagnitude: the velocity impulses add up to, the pending force or torque.
+    // angular velocity. A call is also refused if it would take what the body accumulates past
+    // a limit: the velocities impulses add up to (kMaxSpeed, kMaxAngularSpeed), the pending force
+    // and torque, and the accelerations they give (kMaxMagnitude N, N m, m/s^2, rad/s^2).
     /// Teleport: moves the body origin to `position` at `angle`, keeping its velocity. Every
     /// position the engine reports is within the limits this takes (WorldEdgeEvent).
     void setBodyTransform(BodyId id, Vec2 position, float angle);
@@ -213,6 +214,9 @@ public:
     void applyAngularImpulse(BodyId id, float impulse);  ///< N m s
 
     // --- shapes -----------------------------------------------------------------------------
+    // createShape, destroyShape, setShapeDensity and setBodyType move a dynamic body's centre
+    // of mass, and the centre's velocity changes by w x the move: a call that would take it past
+    // kMaxSpeed (a fast-turning body, a shape far out) is refused; slow the body first.
     /// Attaches a shape and updates the body's mass.
     ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);

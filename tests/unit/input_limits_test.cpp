@@ -299,11 +299,13 @@ TEST(StepProducts, HeavyBoxesUnderTheStrongestGravityFall) {
         boxes.push_back(world.createBody(bd));
         world.createShape(boxes.back(), heavy, Polygon::box(1e5f, 1e5f));
     }
-    for (int i = 0; i < 5; ++i) {
+    // They overlap, half a million contacts: two steps (the report saw every step discarded).
+    for (int i = 0; i < 2; ++i) {
         world.step(kDt);
         ASSERT_EQ(world.lastStepStats().discardedBodyCount, 0) << "step " << i;
     }
     for (BodyId b : boxes) ASSERT_TRUE(finite(world.bodyPosition(b)));
+    EXPECT_LT(world.bodyPosition(boxes[0]).y, 0.0f);
 }
 
 // Worlds drawn from the corners of every input limit (sizes, densities, speeds, gravity and
