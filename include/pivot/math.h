@@ -124,47 +124,43 @@ struct Mat22 {
     Vec2 cx;
     Vec2 cy;
 
+    /// What Cramer's rule needs: a matrix and the inverse of its determinant (0 when singular),
+    /// such that A^-1 = invDet * adj(matrix). Usually the matrix is A itself. Entries of 1e19 and
+    /// more (a light body's inverse inertia times a long lever arm squared) overflow the
+    /// determinant's products; then the matrix is A / s, s its largest entry, whose entries are
+    /// at most 1, and invDet = 1 / (s det(A / s)). An ordinary matrix never takes that path, so
+    /// its results keep their bits.
+    struct Cramer {
+        float a11, a12, a21, a22;
+        float invDet;
+    };
+    Cramer cramer() const {
+        Cramer k{cx.x, cy.x, cx.y, cy.y, 0.0f};
+        const float p = k.a11 * k.a22, q = k.a12 * k.a21;
+        float det = p - q;
+        float scale = 1.0f;
+        if (!std::isfinite(p) || !std::isfinite(q)) {
+            scale = 1.0f / largestEntry();
+            k.a11 *= scale, k.a12 *= scale, k.a21 *= scale, k.a22 *= scale;
+            det = k.a11 * k.a22 - k.a12 * k.a21;
+        }
+        k.invDet = det != 0.0f ? scale / det : det;
+        return k;
+    }
+
     /// Solve A x = b by Cramer's rule; a singular matrix gives x = 0, which to a constraint
     /// means "no impulse" (both bodies immovable along that direction).
     Vec2 solve(Vec2 b) const {
-        float a11 = cx.x, a12 = cy.x, a21 = cx.y, a22 = cy.y;
-        const float p = a11 * a22, q = a12 * a21;
-        float det = p - q;
-        float scale = 1.0f;
-        if (!isFiniteValue(p) || !isFiniteValue(q)) {
-            scale = 1.0f / largestEntry();
-            a11 *= scale, a12 *= scale, a21 *= scale, a22 *= scale;
-            det = a11 * a22 - a12 * a21;
-        }
-        if (det != 0.0f) {
-            det = scale / det;
-        }
-        return {det * (a22 * b.x - a12 * b.y), det * (a11 * b.y - a21 * b.x)};
+        const Cramer k = cramer();
+        return {k.invDet * (k.a22 * b.x - k.a12 * b.y), k.invDet * (k.a11 * b.y - k.a21 * b.x)};
     }
 
     /// The inverse; a singular matrix gives the zero matrix (see solve).
     Mat22 inverse() const {
-        float a = cx.x, b = cy.x, c = cx.y, d = cy.y;
-        const float p = a * d, q = b * c;
-        float det = p - q;
-        float scale = 1.0f;
-        if (!isFiniteValue(p) || !isFiniteValue(q)) {
-            scale = 1.0f / largestEntry();
-            a *= scale, b *= scale, c *= scale, d *= scale;
-            det = a * d - b * c;
-        }
-        if (det != 0.0f) {
-            det = scale / det;
-        }
-        return {{det * d, -det * c}, {-det * b, det * a}};
+        const Cramer k = cramer();
+        return {{k.invDet * k.a22, -k.invDet * k.a21}, {-k.invDet * k.a12, k.invDet * k.a11}};
     }
 
-    // Entries of 1e19 and more (a light body's inverse inertia times a long lever arm squared)
-    // overflow the determinant. The matrix is then divided by its largest entry s first:
-    // K^-1 = (K/s)^-1 / s, and (K/s) has entries of at most 1, so its determinant is finite. An
-    // ordinary matrix never takes that path (scale stays 1, and x / 1 is x), so its results
-    // keep their bits.
-    static bool isFiniteValue(float x) { return std::isfinite(x); }
     constexpr float largestEntry() const {
         const float a = cx.x < 0.0f ? -cx.x : cx.x, b = cy.x < 0.0f ? -cy.x : cy.x;
         const float c = cx.y < 0.0f ? -cx.y : cx.y, d = cy.y < 0.0f ? -cy.y : cy.y;

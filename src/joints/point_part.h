@@ -41,21 +41,13 @@ inline Vec2 solveWithCachedDet(const PointPart& p, Vec2 b) {
     return {p.invDet * (a22 * b.x - a12 * b.y), p.invDet * (a11 * b.y - a21 * b.x)};
 }
 
-/// Stores K for solveWithCachedDet: K itself and 1 / det K, as Mat22::solve computes them. A
-/// light body on a lever arm of kilometres makes the products in det K overflow; then K / s (s
-/// its largest entry) is stored with 1 / (s det(K / s)), as Mat22::solve does: the same system,
-/// solved without overflow. Ordinary joints never take that path and keep Box2D's operations.
+/// Stores K for solveWithCachedDet the way Mat22::solve forms it (Mat22::cramer): K and
+/// 1 / det K, or, when det K overflows (a light body on a lever arm of kilometres), K / s with
+/// 1 / (s det(K / s)). Ordinary joints keep Box2D's operations.
 inline void cacheInverse(PointPart& p, const Mat22& K) {
-    const float ad = K.cx.x * K.cy.y, bc = K.cy.x * K.cx.y;
-    float det = ad - bc;
-    p.K = K;
-    if (!Mat22::isFiniteValue(ad) || !Mat22::isFiniteValue(bc)) {
-        const float scale = K.largestEntry();
-        const float s = 1.0f / scale;
-        p.K = {{s * K.cx.x, s * K.cx.y}, {s * K.cy.x, s * K.cy.y}};
-        det = scale * (p.K.cx.x * p.K.cy.y - p.K.cy.x * p.K.cx.y);
-    }
-    p.invDet = det != 0.0f ? 1.0f / det : det;
+    const Mat22::Cramer k = K.cramer();
+    p.K = {{k.a11, k.a21}, {k.a12, k.a22}};
+    p.invDet = k.invDet;
 }
 
 // K is evaluated in two float orders: the same matrix, rounded differently. The velocity phase

@@ -48,10 +48,12 @@ bool hasDigit(const std::string& text) {
     return text.find_first_of("0123456789") != std::string::npos;
 }
 
-// Numbers with the unit "us" (microseconds).
+// Numbers with the unit "us" (microseconds), and how long the page took to generate.
 std::string maskMicroseconds(const std::string& line) {
     static const std::regex timing(R"([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)? us\b)");
-    return std::regex_replace(line, timing, std::string(kMask) + " us");
+    static const std::regex took(R"(took [0-9.]+ s\b)");
+    return std::regex_replace(std::regex_replace(line, timing, std::string(kMask) + " us"), took,
+                              std::string("took ") + kMask + " s");
 }
 
 }  // namespace

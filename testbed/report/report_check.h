@@ -1,7 +1,8 @@
 // `pivot-testbed report --check`: regenerates the report into a scratch folder and compares it
 // with the committed one (docs/results.md, docs/results/*.svg and the observations in
 // docs/position-correction.md). Timings differ from run to run and machine to machine, so they
-// are masked before comparing: every number with the unit "us", the us/step columns, the
+// are masked before comparing: every number with the unit "us", the time the page took, the
+// us/step columns, the
 // cost-against-error figures (whose x axis is time), the line naming the machine and date, and
 // the verdict of an observation measured in time alone. Every other difference, a separation,
 // an energy, a verdict, a figure's curve, means the committed report no longer says what the

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "report/report.h"
+#include "report/report_check.h"
 #include "report/svg.h"
 
 using namespace pivot;
@@ -107,4 +108,32 @@ TEST(Report, RefusesADocumentWithoutTheObservationsBlock) {
     EXPECT_EQ(readFile(dir / "position-correction.md"), "no markers here\n");
     EXPECT_FALSE(fs::exists(dir / "results.md"));  // refused before writing anything
     fs::remove_all(dir);
+}
+
+// The report check masks timings and nothing else: a changed microsecond count, or the verdict
+// of an observation measured in time alone, compare equal; a changed separation does not.
+TEST(ReportCheck, MasksTimingsAndNothingElse) {
+    using pivot::report::maskTimings;
+    const std::string table =
+        "| solver | max sep (m) | us/step |\n| --- | --- | --- |\n| full_ngs | 0.0188 | 14.2 |\n";
+    const std::string slower =
+        "| solver | max sep (m) | us/step |\n| --- | --- | --- |\n| full_ngs | 0.0188 | 15.9 |\n";
+    const std::string apart =
+        "| solver | max sep (m) | us/step |\n| --- | --- | --- |\n| full_ngs | 0.0190 | 14.2 |\n";
+    EXPECT_EQ(maskTimings(table), maskTimings(slower));
+    EXPECT_NE(maskTimings(table), maskTimings(apart));
+    const std::string cheapest =
+        "### A\n\n- Result: Baumgarte 40.1 us, FullNGS 51.6 us.\n- Verdict: **confirmed**.\n";
+    const std::string cheapestFlipped =
+        "### A\n\n- Result: Baumgarte 52.1 us, FullNGS 51.6 us.\n- Verdict: **not confirmed**.\n";
+    EXPECT_EQ(maskTimings(cheapest), maskTimings(cheapestFlipped));
+    const std::string mixed =
+        "### B\n\n- Result: 0.02 m with 1 iteration; 12.8 us against 18.6 us.\n- Verdict: "
+        "**confirmed**.\n";
+    const std::string mixedFlipped =
+        "### B\n\n- Result: 0.02 m with 1 iteration; 13.1 us against 18.0 us.\n- Verdict: **not "
+        "confirmed**.\n";
+    EXPECT_NE(maskTimings(mixed), maskTimings(mixedFlipped));  // that verdict is not a timing's
+    EXPECT_EQ(maskTimings("This page took 4 s to generate"),
+              maskTimings("This page took 3 s to generate"));
 }
