@@ -662,6 +662,9 @@ TEST(Validation, EveryCallChecksItsIds) {
             f.world.createJoint(RevoluteJointDef::atWorldAnchor(body, f.ground, {0, 0}));
         },
         [&] { f.world.createMouseJoint(mouseDef); },
+        [&] { f.world.bodyFixedRotation(body); },
+        [&] { f.world.bodyUserData(body); },
+        [&] { f.world.setBodyUserData(body, 1); },
     };
     for (const auto& call : bodyCalls) expectRejected(f.world, call, {"body", "stale"});
     std::vector<std::function<void()>> shapeCalls = {
@@ -674,6 +677,8 @@ TEST(Validation, EveryCallChecksItsIds) {
         [&] { f.world.setShapeFilter(shape, Filter{}); },
         [&] { f.world.shapeDensity(shape); },
         [&] { f.world.setShapeDensity(shape, 1.0f); },
+        [&] { f.world.shapeUserData(shape); },
+        [&] { f.world.setShapeUserData(shape, 1); },
     };
     for (const auto& call : shapeCalls) expectRejected(f.world, call, {"shape", "stale"});
     std::vector<std::function<void()>> jointCalls = {
@@ -696,6 +701,12 @@ TEST(Validation, EveryCallChecksItsIds) {
         [&] { f.world.setJointPositionSolver(joint, PositionSolver::FullNGS); },
         [&] { f.world.jointBiasFactor(joint); },
         [&] { f.world.setJointBiasFactor(joint, std::nullopt); },
+        [&] { f.world.isJointLetGo(joint); },
+        [&] { f.world.rearmJoint(joint); },
+        [&] { f.world.jointLetGoSeparation(joint); },
+        [&] { f.world.setJointLetGoSeparation(joint, 1.0f); },
+        [&] { f.world.jointUserData(joint); },
+        [&] { f.world.setJointUserData(joint, 1); },
     };
     for (const auto& call : jointCalls) expectRejected(f.world, call, {"joint", "stale"});
     std::vector<std::function<void()>> mouseCalls = {
