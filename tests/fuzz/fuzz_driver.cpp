@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <typeinfo>
@@ -177,6 +178,7 @@ private:
     }
 
     void newWorld() {
+        pending_.clear();
         ++report_.worlds;
         nonFinite_ = false;
         bodies_.clear();
@@ -810,39 +812,54 @@ private:
         const auto inside = [](float value, float limit) {
             return std::fabs(value) <= 1e-3f * limit;
         };
+        std::pair<float, float>& pending = pending_[{body.value.index, body.value.generation}];
         const auto judge = [&](bool bad, bool wellInside) {
             if (bad || !dynamic) return Verdict::Bad;
             return wellInside ? Verdict::Valid : Verdict::Unknown;
         };
+        // What an accepted force or torque adds to the pile (an upper bound).
+        const auto pile = [&](float force, float torque) {
+            pending.first += force;
+            pending.second += torque;
+        };
         switch (random_.below(5)) {
             case 0: {
                 Arg<Vec2> f = values_->magnitude2(200.0f);
-                const float torque = cross(lever, f.value);
-                const bool small = inside(length(f.value), kMaxMagnitude) &&
-                                   inside(invMass * length(f.value), kMaxMagnitude) &&
-                                   (!turns || (inside(torque, kMaxMagnitude) &&
-                                               inside(invInertia * torque, kMaxMagnitude)));
+                const float force = pending.first + length(f.value);
+                const float torque = pending.second + std::fabs(cross(lever, f.value));
+                const bool small =
+                    inside(force, kMaxMagnitude) && inside(invMass * force, kMaxMagnitude) &&
+                    (!turns ||
+                     (inside(torque, kMaxMagnitude) && inside(invInertia * torque, kMaxMagnitude)));
                 trace("applyForce " + idText(body.value) + " " + text(f.value));
-                attempt("World::applyForce", judge(body.bad || f.bad || point.bad, small),
-                        [&] { journal_.applyForce(body.value, f.value, point.value); });
+                attempt("World::applyForce", judge(body.bad || f.bad || point.bad, small), [&] {
+                    journal_.applyForce(body.value, f.value, point.value);
+                    pile(length(f.value), std::fabs(cross(lever, f.value)));
+                });
                 break;
             }
             case 1: {
                 Arg<Vec2> f = values_->magnitude2(200.0f);
-                const bool small = inside(length(f.value), kMaxMagnitude) &&
-                                   inside(invMass * length(f.value), kMaxMagnitude);
+                const float force = pending.first + length(f.value);
+                const bool small =
+                    inside(force, kMaxMagnitude) && inside(invMass * force, kMaxMagnitude);
                 trace("applyForceToCenter " + idText(body.value) + " " + text(f.value));
-                attempt("World::applyForceToCenter", judge(body.bad || f.bad, small),
-                        [&] { journal_.applyForceToCenter(body.value, f.value); });
+                attempt("World::applyForceToCenter", judge(body.bad || f.bad, small), [&] {
+                    journal_.applyForceToCenter(body.value, f.value);
+                    pile(length(f.value), 0.0f);
+                });
                 break;
             }
             case 2: {
                 Arg<float> t = values_->magnitude(100.0f);
+                const float torque = pending.second + std::fabs(t.value);
                 const bool small =
-                    inside(t.value, kMaxMagnitude) && inside(invInertia * t.value, kMaxMagnitude);
+                    inside(torque, kMaxMagnitude) && inside(invInertia * torque, kMaxMagnitude);
                 trace("applyTorque " + idText(body.value) + " " + text(t.value));
-                attempt("World::applyTorque", judge(body.bad || t.bad || !turns, small),
-                        [&] { journal_.applyTorque(body.value, t.value); });
+                attempt("World::applyTorque", judge(body.bad || t.bad || !turns, small), [&] {
+                    journal_.applyTorque(body.value, t.value);
+                    pile(0.0f, std::fabs(t.value));
+                });
                 break;
             }
             case 3: {
@@ -1100,6 +1117,7 @@ private:
               std::to_string(positionIterations));
         if (attempt("World::step", verdict(bad),
                     [&] { journal_.step(dt, velocityIterations, positionIterations); })) {
+            pending_.clear();
             ++report_.steps;
             report_.letGoJoints += world_->lastStepStats().letGoJointCount;
             report_.discardedBodies += world_->lastStepStats().discardedBodyCount;
@@ -1519,6 +1537,10 @@ private:
         BodyId body;
     };
     std::vector<LiveMouse> liveMice_;  // the mouse joints made, and their bodies
+    // Per body (index, generation), an upper bound on the pending force's and torque's size
+    // since the last step: forces pile up until a step clears them, and a small force is
+    // refused once the pile passes a limit.
+    std::map<std::pair<std::int32_t, std::uint32_t>, std::pair<float, float>> pending_;
 };
 
 }  // namespace
