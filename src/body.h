@@ -105,8 +105,8 @@ inline void wakeUp(Body& body) {
 /// centre of mass keeps the velocity of the centre consistent with the body's rotation.
 void updateBodyMass(Body& body, const SlotPool<Shape>& shapes);
 
-/// A change to a body's type or shapes that has not been made yet: what updateBodyMass would
-/// make of the body after it can then be checked before anything changes.
+/// A change to a body's type or shapes not made yet, so that what updateBodyMass would make of
+/// the body can be checked before anything changes.
 struct MassChange {
     BodyType type;
     const Shape* added = nullptr;  // a shape about to be attached (at the head of the list)

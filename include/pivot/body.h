@@ -19,13 +19,14 @@ struct BodyDef {
     BodyType type = BodyType::Static;
     Vec2 position;                 ///< m, world position of the body origin
     float angle = 0.0f;            ///< rad
-    Vec2 linearVelocity;           ///< m/s, of the body origin
-    float angularVelocity = 0.0f;  ///< rad/s
+    Vec2 linearVelocity;           ///< m/s, of the body origin; within +-kMaxSpeed
+    float angularVelocity = 0.0f;  ///< rad/s, within +-kMaxAngularSpeed
     /// 1/s. Velocities are scaled by 1/(1 + h*damping) each step; 0 keeps energy.
     float linearDamping = 0.0f;
     float angularDamping = 0.0f;
-    float gravityScale = 1.0f;   ///< multiplies the world gravity for this body
-    bool fixedRotation = false;  ///< infinite rotational inertia: the body never turns
+    float gravityScale = 1.0f;  ///< multiplies the world gravity for this body; +-kMaxGravityScale
+    /// Infinite rotational inertia: the body never turns (angularVelocity must then be 0).
+    bool fixedRotation = false;
     /// May sleep once at rest (WorldDef::enableSleep switches sleeping for the whole world).
     bool allowSleep = true;
     bool isAwake = true;         ///< false creates the body asleep until something wakes it

@@ -50,7 +50,7 @@ struct ShapeDef {
     /// kg/m^2: 0, or in [kMinDensity, kMaxDensity]. Every shape of a dynamic body has a density
     /// > 0 (createShape, setShapeDensity and setBodyType refuse to break that).
     float density = 1.0f;
-    /// Coulomb coefficient, in [0, kMaxMagnitude]. A contact uses sqrt(frictionA * frictionB).
+    /// Coulomb coefficient, in [0, kMaxFriction]. A contact uses sqrt(frictionA * frictionB).
     float friction = 0.6f;
     /// Bounce, in [0, 1]. A contact uses max(restitutionA, restitutionB), and bounces only when
     /// it closes faster than WorldDef::restitutionThreshold.

@@ -3,8 +3,10 @@
 // Every call that takes an id or a def checks it first; bad input throws pivot::Error (see
 // error.h) naming the field and value, and leaves the world unchanged. Bad input is a null,
 // stale or foreign id, an enum value out of range, a degenerate polygon, or a number that is
-// not finite or outside the input limits of constants.h (kMaxCoordinate for positions and
-// sizes, kMinDensity to kMaxDensity, kMaxMagnitude for everything else).
+// not finite, a denormal, or outside the input limits of constants.h (kMaxCoordinate for
+// positions and sizes, kMinDensity to kMaxDensity, kMaxSpeed and kMaxAngularSpeed for
+// velocities, kMaxGravity, kMaxGravityScale, kMaxFriction, kMaxMagnitude for everything else).
+// Every state the engine reports is one these checks accept, so it can be set again.
 #pragma once
 
 #include <cstdint>
@@ -32,7 +34,7 @@ enum class ContactCorrection : std::uint8_t {
 };
 
 struct WorldDef {
-    Vec2 gravity{0.0f, -10.0f};  ///< m/s^2
+    Vec2 gravity{0.0f, -10.0f};  ///< m/s^2, each component within +-kMaxGravity
     /// The position solver of joints whose def leaves it unset (the seed note recommends
     /// FullNGS: robust, and cheaper per iteration than it sounds thanks to the early exit).
     PositionSolver defaultPositionSolver = PositionSolver::FullNGS;
