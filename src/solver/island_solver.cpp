@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "buffer.h"
 #include "pivot/constants.h"
@@ -45,16 +44,12 @@ void integrateVelocities(const Team& team, const IslandView& island, IslandWorks
 }
 
 // Whether a step that reaches `joint` with its anchors `separation` apart lets it go: beyond
-// its let-go separation (when it has one), or with reactions that are not finite. A let-go
-// joint acts on nothing for the rest of this step (makeInert) and is in no island after it.
-std::optional<JointLetGoReason> letGoReason(const RevoluteJoint& joint, Vec2 separation,
-                                            const StepContext& step) {
+// its let-go separation, when it has one. (Its stored reactions are finite: storeJointImpulses
+// lets go of a joint whose are not.) A let-go joint acts on nothing for the rest of this step
+// (makeInert) and is in no island after it.
+bool beyondLetGoSeparation(const RevoluteJoint& joint, Vec2 separation, const StepContext& step) {
     const float limit = joint.letGoSeparation(step.jointLetGoSeparation);
-    if (limit > 0.0f && !(lengthSquared(separation) <= limit * limit)) {
-        return JointLetGoReason::Separation;
-    }
-    if (!joint.hasFiniteReactions()) return JointLetGoReason::NonFinite;
-    return std::nullopt;
+    return limit > 0.0f && !(lengthSquared(separation) <= limit * limit);
 }
 
 // A let-go joint's constraint: its bodies' masses are taken as zero, so every solve of it
@@ -102,8 +97,8 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
             angle.upperImpulse = joint.upperImpulse;
             const Vec2 separation = preparePoint(c.bodies, c.point, work.positions.data());
             prepareAngle(c.bodies, angle, work.positions.data(), step.invDt);
-            if (const auto reason = letGoReason(joint, separation, step)) {
-                joint.letGoFor(*reason, length(separation));
+            if (beyondLetGoSeparation(joint, separation, step)) {
+                joint.letGoFor(JointLetGoReason::Separation, length(separation));
                 ++report.letGoJoints;
                 makeInert(c);
             } else if (step.warmStarting) {
@@ -253,7 +248,9 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
         b.angularVelocity = flushDenormal(v.w);
         synchronizeTransform(b);
         b.xf.p = flushDenormal(b.xf.p);
-        if (holdAtWorldEdge(b)) ++report.edgeBodies;
+        const bool inside =
+            std::fabs(b.xf.p.x) <= kMaxCoordinate && std::fabs(b.xf.p.y) <= kMaxCoordinate;
+        if (!inside && holdAtWorldEdge(b)) ++report.edgeBodies;
     }
 }
 
