@@ -50,9 +50,11 @@ struct Body {
     float sleepTime = 0.0f;
 
     // Set by the step that held the body at the world's edge (holdAtWorldEdge), with the origin
-    // it would have reached; the step lists it in World::worldEdgeEvents and clears it.
+    // it would have reached, or that discarded its non-finite solved state; the step lists it
+    // (World::worldEdgeEvents, World::discardedBodies) and clears them.
     bool heldAtEdge = false;
     Vec2 edgeReached;
+    bool discarded = false;
 };
 
 /// Recompute the origin frame from the centre of mass and angle.

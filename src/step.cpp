@@ -40,13 +40,15 @@ void World::Impl::recordLetGoJoints(const IslandSet::Range& island) {
     }
 }
 
-void World::Impl::recordEdgeBodies(const IslandSet::Range& island) {
+// Bodies held at the world's edge, and bodies whose solved state was discarded, in island
+// order: the same for any number of workers.
+void World::Impl::recordBodyEvents(const IslandSet::Range& island) {
     for (std::int32_t k = island.bodyBegin; k < island.bodyEnd; ++k) {
         const std::int32_t index = islands.bodies[static_cast<std::size_t>(k)];
         Body& body = bodies[index];
-        if (!body.heldAtEdge) continue;
-        body.heldAtEdge = false;
-        edgeEvents.push_back({bodyId(index), body.edgeReached});
+        if (body.heldAtEdge) edgeEvents.push_back({bodyId(index), body.edgeReached});
+        if (body.discarded) discarded.push_back(bodyId(index));
+        body.heldAtEdge = body.discarded = false;
     }
 }
 
@@ -69,6 +71,7 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     endEvents.clear();
     letGoEvents.clear();
     edgeEvents.clear();
+    discarded.clear();
     if (newShapes) {
         findNewContacts();
         newShapes = false;
@@ -118,8 +121,8 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
         stats.letGoJointCount += report.letGoJoints;
         if (report.letGoJoints > 0) recordLetGoJoints(r);
         stats.edgeBodyCount += report.edgeBodies;
-        if (report.edgeBodies > 0) recordEdgeBodies(r);
         stats.discardedBodyCount += report.discardedBodies;
+        if (report.edgeBodies > 0 || report.discardedBodies > 0) recordBodyEvents(r);
         if (report.positionIterations > stats.positionIterations) {
             stats.positionIterations = report.positionIterations;
         }

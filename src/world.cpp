@@ -103,6 +103,10 @@ std::vector<WorldEdgeEvent> World::worldEdgeEvents() const {
     return impl_->edgeEvents;
 }
 
+std::vector<BodyId> World::discardedBodies() const {
+    return impl_->discarded;
+}
+
 Vec2 World::gravity() const {
     return impl_->gravity;
 }
@@ -298,6 +302,11 @@ std::uint64_t World::stateHash() const {
         h.add(static_cast<std::int32_t>(e.joint.generation));
         h.add(static_cast<std::int32_t>(e.reason));
         h.add(e.separation);
+    }
+    h.add(static_cast<std::int32_t>(w.discarded.size()));
+    for (BodyId b : w.discarded) {
+        h.add(b.index);
+        h.add(static_cast<std::int32_t>(b.generation));
     }
     h.add(static_cast<std::int32_t>(w.edgeEvents.size()));
     for (const WorldEdgeEvent& e : w.edgeEvents) {

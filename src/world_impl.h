@@ -56,6 +56,7 @@ struct World::Impl {
     std::vector<ContactEvent> endEvents;
     std::vector<JointLetGoEvent> letGoEvents;  // joints let go by the last step
     std::vector<WorldEdgeEvent> edgeEvents;    // bodies held at the world's edge by it
+    std::vector<BodyId> discarded;             // bodies whose solved state it discarded
 
     float previousInvDt = 0.0f;  // 1/dt of the last step; 0 before the first
     StepStats stats;
@@ -72,7 +73,7 @@ struct World::Impl {
 
     void step(float dt, int velocityIterations, int positionIterations);
     void recordLetGoJoints(const IslandSet::Range& island);
-    void recordEdgeBodies(const IslandSet::Range& island);
+    void recordBodyEvents(const IslandSet::Range& island);
 
     // Handle checks: the slot index of a live object this world issued, or pivot::Error.
     std::int32_t bodyIndex(const char* call, BodyId id) const;

@@ -106,7 +106,8 @@ struct StepStats {
     int sleepingBodyCount = 0;  ///< dynamic and kinematic bodies asleep after the step
     /// Joints let go this step (World::jointLetGoEvents lists them).
     int letGoJointCount = 0;
-    /// Bodies whose solved state this step was not finite: each kept its pose, at rest.
+    /// Bodies whose solved state this step was not finite: each kept its pose, at rest
+    /// (World::discardedBodies lists them).
     int discardedBodyCount = 0;
     /// Bodies held at the world's edge this step (World::worldEdgeEvents lists them).
     int edgeBodyCount = 0;
@@ -259,6 +260,11 @@ public:
     /// The bodies held at the edge of the world during the last step, in the order the step
     /// reached them (the same for every worker count). Cleared when the next step starts.
     std::vector<WorldEdgeEvent> worldEdgeEvents() const;
+    /// The bodies whose solved state the last step discarded because it was not finite (a
+    /// solver diverging on constraints it cannot satisfy): each kept its pose from before the
+    /// step, a dynamic one at rest. In the order the step reached them; cleared when the next
+    /// step starts.
+    std::vector<BodyId> discardedBodies() const;
 
     // --- joints -----------------------------------------------------------------------------
     JointId createJoint(const RevoluteJointDef& def);

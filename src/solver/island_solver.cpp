@@ -239,6 +239,7 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
                 b.linearVelocity = Vec2{};
                 b.angularVelocity = 0.0f;
             }
+            b.discarded = true;
             ++report.discardedBodies;
             continue;
         }

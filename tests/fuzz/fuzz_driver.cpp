@@ -1221,6 +1221,7 @@ private:
                     w.contactEndEvents();
                     w.jointLetGoEvents();
                     w.worldEdgeEvents();
+                    w.discardedBodies();
                     w.lastStepStats();
                     w.gravity();
                     w.defaultPositionSolver();
@@ -1501,6 +1502,13 @@ private:
                     !std::isfinite(e.separation)) {
                     failure("a let-go event names a joint that is not let go" + where);
                 }
+            }
+            const std::vector<BodyId> discarded = w.discardedBodies();
+            if (static_cast<int>(discarded.size()) != stats.discardedBodyCount) {
+                failure("the discarded bodies do not match the statistics" + where);
+            }
+            for (BodyId b : discarded) {
+                if (!w.isValid(b)) failure("a discarded body is not valid" + where);
             }
             const std::vector<WorldEdgeEvent> edge = w.worldEdgeEvents();
             if (static_cast<int>(edge.size()) != stats.edgeBodyCount) {

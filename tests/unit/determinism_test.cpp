@@ -61,19 +61,19 @@ struct RecordedHashes {
 // clang-format off
 const RecordedHashes kRecorded[] = {
     // scene               baumgarte             pseudo_velocity       modified_ngs          full_ngs
-    {"pendulum",          {0x83b30e6889034ab5ull, 0xd2111d8e40385484ull, 0x25ac08b15bfcc48cull, 0x82927eeab6de712full}},
-    {"pendulum_limit",    {0x74d08a8f4beca25eull, 0x1f1bf7f8eef10fe5ull, 0x026dc6a9d53acffdull, 0x28b89379497326b9ull}},
-    {"double_pendulum",   {0x16d88708eef00c0cull, 0xa199e1e4e99c18ddull, 0x65a4516435a227a5ull, 0x6b908c1417c47ddaull}},
-    {"motor_wheel",       {0x3edfd3d374ca88d0ull, 0xe32acc649f0ae6e7ull, 0x991564c85f89bc6dull, 0xdfbd3568b6c32779ull}},
-    {"bridge",            {0x272d1b91024d20d7ull, 0x3bde71a77bb2d47aull, 0x91136a05125df05bull, 0x704c328b76100c9aull}},
-    {"chain",             {0xe4e453049dc9509cull, 0x7b7d0e65d28cff44ull, 0x76f5c3e551f3b7cbull, 0x06930357cb67703full}},
-    {"bridge_heavy",      {0x0d25904fe7c80344ull, 0x7dc48342e81894bfull, 0x5a4ba3009c95e357ull, 0x9b1ae70e97fcdd72ull}},
-    {"pyramid",           {0x3a2531760911a72eull, 0xdf4e95cb2a94a447ull, 0x4a2e1127edab2884ull, 0x1086769f4525686dull}},
-    {"tumbler",           {0x5c5da9008bb6cc1eull, 0xffe239bfe21f2f8aull, 0xbd92bac9acceb4e3ull, 0xe51142ee05f1518full}},
-    {"pendulum_drag",     {0x126f6c0db4766c0bull, 0x1a01a89fa0b073ecull, 0xec1edb6576afd77bull, 0xc56583d92e80e520ull}},
-    {"chain_drag",        {0x3186b8faeff0749aull, 0xccb78794a7c3d797ull, 0xabbe4b21fd28576eull, 0x052259d3bc1a9ac9ull}},
-    {"ragdoll",           {0x1361eb263e980e5dull, 0x1db58f6a0ca2b8ceull, 0xf6decdf4c325ac79ull, 0xa24f1d49333d571full}},
-    {"ragdoll_motorized", {0x17304d446d3a4a07ull, 0x75847cd49752a13eull, 0xde45d0867c1231cbull, 0x45bcdfd966bfc0b2ull}},
+    {"pendulum",          {0x0f3857802aa4fda5ull, 0x9832b5d2d5c5abe4ull, 0x5635033fc8b427fcull, 0xdf034746d2a19aefull}},
+    {"pendulum_limit",    {0x70d529281a493e1eull, 0x4f18111c7610edd5ull, 0xaf3ee861cf2333ddull, 0x59a445e91faa6459ull}},
+    {"double_pendulum",   {0x8a1c3a3a272ebfccull, 0x65471b2d9b08802dull, 0x8eb85280a53d79e5ull, 0xe832794b80ba870aull}},
+    {"motor_wheel",       {0x290c77d756b91af0ull, 0xb657b6ec3e188fb7ull, 0xe9c9ae84aea95f4dull, 0x85fb5a9d7247d119ull}},
+    {"bridge",            {0xa530fa7a8ae07437ull, 0xcce3a4917a53726aull, 0x81222961a3f4a2abull, 0xf5816a7e0379921aull}},
+    {"chain",             {0xab203d16d3eab52cull, 0x106a6cb46c834f54ull, 0xc85d4016acdae61bull, 0xb3b2ea90256c5f4full}},
+    {"bridge_heavy",      {0x41a99e948035f694ull, 0x8a79e2d6dc0c0cafull, 0x0faa4beec26882e7ull, 0x37443348139107c2ull}},
+    {"pyramid",           {0x33374f5211e3838eull, 0x7a4f83ed7c2acef7ull, 0x2fc968ff77f7ae04ull, 0xcea594887e52707dull}},
+    {"tumbler",           {0xa468ffb0d1d6388eull, 0x504a98908f7d9ecaull, 0xd26f2783555faf73ull, 0x61b1fb69e5cc961full}},
+    {"pendulum_drag",     {0x06a23888fe39691bull, 0x9afe6c2e2167d5ccull, 0xe6c61ec2f5185bfbull, 0xfb387053841b4bd0ull}},
+    {"chain_drag",        {0xabbb55da52ff6c0aull, 0xcae02b53083dde97ull, 0x416617442ef48f8eull, 0x31d96c819badce99ull}},
+    {"ragdoll",           {0x986a78436167194dull, 0xc396f341c5a179eeull, 0x45897ec3e5b175b9ull, 0x07cc21557f9f5b4full}},
+    {"ragdoll_motorized", {0xded5e98975600d27ull, 0x7e87e83c497924aeull, 0x217b56c1cf46214bull, 0xe47cfe25e0627942ull}},
 };
 // clang-format on
 

@@ -214,3 +214,44 @@ TEST(JointLetGo, AReactionThatWouldOverflowIsNotFinite) {
     EXPECT_TRUE(joint.hasFiniteReactions());
     EXPECT_TRUE(joint.letGo);
 }
+
+// The world the fuzz driver found diverging under Baumgarte (tests/fuzz/findings/
+// baumgarte_falling_chain.journal): what the engine gives up on is named, not only counted.
+TEST(Containment, TheJointsLetGoAndTheBodiesDiscardedAreNamed) {
+    WorldDef def;
+    def.defaultPositionSolver = PositionSolver::Baumgarte;
+    def.enableSleep = false;
+    World world(def);
+    BodyDef bd;
+    bd.type = BodyType::Dynamic;
+    bd.position = {-2.0f, -15.0f};
+    BodyId a = world.createBody(bd);
+    world.createShape(a, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.3f});
+    bd.position = {2.2f, -6.0f};
+    BodyId b = world.createBody(bd);
+    world.createShape(b, ShapeDef{},
+                      Polygon::fromPoints({{-0.47f, -0.96f}, {-0.32f, -0.71f}, {-0.59f, -0.37f}}));
+    bd.position = {0.2f, -6.0f};
+    BodyId c = world.createBody(bd);
+    world.createShape(c, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.3f});
+    world.createJoint(RevoluteJointDef::atWorldAnchor(a, b, {-2.0f, -15.0f}));
+    world.createJoint(RevoluteJointDef::atWorldAnchor(b, c, {0.2f, -6.0f}));
+    int discarded = 0, letGo = 0;
+    for (int i = 0; i < 600; ++i) {
+        world.step(kDt);
+        const std::vector<BodyId> bodies = world.discardedBodies();
+        ASSERT_EQ(static_cast<int>(bodies.size()), world.lastStepStats().discardedBodyCount);
+        for (BodyId body : bodies) EXPECT_TRUE(body == a || body == b || body == c);
+        const std::vector<JointLetGoEvent> joints = world.jointLetGoEvents();
+        ASSERT_EQ(static_cast<int>(joints.size()), world.lastStepStats().letGoJointCount);
+        for (const JointLetGoEvent& e : joints) EXPECT_EQ(e.reason, JointLetGoReason::NonFinite);
+        discarded += static_cast<int>(bodies.size());
+        letGo += static_cast<int>(joints.size());
+    }
+    EXPECT_GT(discarded, 0);
+    EXPECT_EQ(letGo, 2);
+    for (BodyId body : {a, b, c}) {
+        EXPECT_TRUE(std::isfinite(world.bodyPosition(body).x));
+        EXPECT_TRUE(std::isfinite(world.bodyAngularVelocity(body)));
+    }
+}
