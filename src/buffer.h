@@ -5,9 +5,10 @@
 //  - resizeBuffer grows capacity at least twofold. std::vector::resize grows from the current
 //    size, not the capacity: an array last used for a small island and resized for a slightly
 //    larger one than ever would get exactly that size, and allocate again at the next record;
-//  - arrays bounded by the number of objects in the world are reserved for that number at the
-//    start of the step (World::Impl::reserveStepBuffers), so while the world holds no more
-//    bodies, joints and contacts than it ever did, islands may merge, split and churn freely.
+//  - arrays bounded by the number of objects in the world are reserved for that number, rounded
+//    up to a power of two, at the start of the step (World::Impl::reserveStepBuffers), so while
+//    the world holds no more bodies, joints and contacts than it ever did, islands may merge,
+//    split and churn freely, and a new record reserves again only when it doubles the last.
 #pragma once
 
 #include <algorithm>

@@ -59,7 +59,7 @@ void World::Impl::destroyContact(std::int32_t index) {
 // applied. A contact's fate never depends on another's consequences within the same step.
 void World::Impl::updateContacts() {
     enum : std::uint8_t { kKeep, kDestroy, kBegan, kEnded };
-    contactOutcomes.resize(static_cast<std::size_t>(contacts.capacity()));
+    resizeBuffer(contactOutcomes, static_cast<std::size_t>(contacts.capacity()));
     pool.parallelFor(contacts.capacity(), 512, [&](int begin, int end, int) {
         for (std::int32_t index = begin; index < end; ++index) {
             std::uint8_t& outcome = contactOutcomes[index];
@@ -153,7 +153,7 @@ void World::Impl::synchronizeShapes(std::int32_t bodyIndex, bool swept) {
 }
 
 void World::Impl::synchronizeSolvedBodies() {
-    shapeMoves.resize(static_cast<std::size_t>(shapes.capacity()));
+    resizeBuffer(shapeMoves, static_cast<std::size_t>(shapes.capacity()));
     const int count = static_cast<int>(islands.bodies.size());
     // A box costs about a tenth of a microsecond, a hand-off to the workers tens: share out
     // only big batches.

@@ -17,7 +17,13 @@ constexpr std::size_t kParallelBodies = 512;
 }  // namespace
 
 void World::Impl::reserveStepBuffers() {
-    const auto count = [](std::int32_t n) { return static_cast<std::size_t>(n); };
+    // Pools grow a slot at a time: rounded up to a power of two, the bounds (and the buffers
+    // reserved for them) grow twofold, a few times in a world's life, not at every new slot.
+    const auto count = [](std::int32_t n) {
+        std::size_t rounded = 16;
+        while (rounded < static_cast<std::size_t>(n)) rounded *= 2;
+        return rounded;
+    };
     const BufferBounds bound{count(bodies.capacity()), count(joints.capacity()),
                              count(contacts.capacity()), count(mouseJoints.capacity())};
     if (bound == reservedFor) return;

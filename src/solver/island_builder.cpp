@@ -1,13 +1,22 @@
 #include "solver/island_builder.h"
 
+#include <algorithm>
+
+#include "buffer.h"
+
 namespace pivot {
 
 void IslandBuilder::build(SolverStorage& storage, IslandSet& set) {
     SlotPool<Body>& bodies = storage.bodies;
     set.clear();
-    bodyVisited_.assign(static_cast<std::size_t>(bodies.capacity()), 0);
-    jointVisited_.assign(static_cast<std::size_t>(storage.joints.capacity()), 0);
-    contactVisited_.assign(static_cast<std::size_t>(storage.contacts.capacity()), 0);
+    // Cleared, and grown (at least twofold, buffer.h) when the pools have grown.
+    const auto clear = [](std::vector<std::uint8_t>& marks, std::int32_t size) {
+        std::fill(marks.begin(), marks.end(), std::uint8_t{0});
+        resizeBuffer(marks, static_cast<std::size_t>(size), std::uint8_t{0});
+    };
+    clear(bodyVisited_, bodies.capacity());
+    clear(jointVisited_, storage.joints.capacity());
+    clear(contactVisited_, storage.contacts.capacity());
     for (std::int32_t seed = bodies.capacity() - 1; seed >= 0; --seed) {
         if (!bodies.isAlive(seed) || bodyVisited_[seed]) continue;
         const Body& body = bodies[seed];
