@@ -5,10 +5,11 @@
 //  - resizeBuffer grows capacity at least twofold. std::vector::resize grows from the current
 //    size, not the capacity: an array last used for a small island and resized for a slightly
 //    larger one than ever would get exactly that size, and allocate again at the next record;
-//  - arrays bounded by the number of objects in the world are reserved for that number, rounded
-//    up to a power of two, at the start of the step (World::Impl::reserveStepBuffers), so while
-//    the world holds no more bodies, joints and contacts than it ever did, islands may merge,
-//    split and churn freely, and a new record reserves again only when it doubles the last.
+//  - arrays bounded by a count of objects are reserved for it, rounded up to a power of two:
+//    the island set for the world's pool capacities, and the solver's workspaces for the totals
+//    of this step's islands (World::Impl::reserveStepBuffers, reserveWorkspaces). So while the
+//    world holds no more awake bodies and touching contacts than it ever did, islands may
+//    merge, split and churn freely, and a record reserves again only when it has doubled.
 #pragma once
 
 #include <algorithm>

@@ -16,23 +16,57 @@ namespace {
 constexpr std::size_t kParallelBodies = 512;
 }  // namespace
 
+namespace {
+// A count that grew past the last reservation is reserved for rounded up to a power of two,
+// so a count that grows one at a time reserves again only when it has doubled.
+std::size_t withRoom(std::size_t reserved, std::size_t needed) {
+    if (needed <= reserved) return reserved;
+    std::size_t rounded = 16;
+    while (rounded < needed) rounded *= 2;
+    return rounded;
+}
+BufferBounds withRoom(const BufferBounds& reserved, const BufferBounds& needed) {
+    return {withRoom(reserved.bodies, needed.bodies), withRoom(reserved.joints, needed.joints),
+            withRoom(reserved.contacts, needed.contacts),
+            withRoom(reserved.mouseJoints, needed.mouseJoints)};
+}
+}  // namespace
+
 void World::Impl::reserveStepBuffers() {
-    // Pools grow a slot at a time: rounded up to a power of two, the bounds (and the buffers
-    // reserved for them) grow twofold, a few times in a world's life, not at every new slot.
-    const auto count = [](std::int32_t n) {
-        std::size_t rounded = 16;
-        while (rounded < static_cast<std::size_t>(n)) rounded *= 2;
-        return rounded;
-    };
-    const BufferBounds bound{count(bodies.capacity()), count(joints.capacity()),
-                             count(contacts.capacity()), count(mouseJoints.capacity())};
+    const auto count = [](std::int32_t n) { return static_cast<std::size_t>(n); };
+    const BufferBounds bound =
+        withRoom(reservedFor, {count(bodies.capacity()), count(joints.capacity()),
+                               count(contacts.capacity()), count(mouseJoints.capacity())});
     if (bound == reservedFor) return;
     reservedFor = bound;
     islands.reserve(bound);
     islandBuilder.reserve(bound);
     reports.reserve(bound.bodies);
     smallIslands.reserve(bound.bodies);
-    for (IslandWorkspace& workspace : workspaces) reserveWorkspace(workspace, bound);
+}
+
+// The solver's arrays hold one island at a time, and no island holds more than all of this
+// step's islands together: a workspace reserved for those totals never grows while it solves,
+// whatever the islands merge and split into. The totals themselves (awake bodies, touching
+// contacts) reach a record now and then, and the reservation then at least doubles.
+void World::Impl::reserveWorkspaces() {
+    BufferBounds& reserved = reservedWorkspaceFor;
+    const BufferBounds bound =
+        withRoom(reserved, {islands.bodies.size(), islands.joints.size(), islands.contacts.size(),
+                            islands.mouseJoints.size()});
+    if (bound == reserved) return;
+    reserved = bound;
+    // The first workspace may solve any island. With several workers the others solve only
+    // islands too small to be coloured: fewer than kColoringThreshold joints and contacts, and
+    // (being connected) at most one more body than that besides the static bodies they touch.
+    reserveWorkspace(workspaces[0], reserved);
+    const std::size_t small = kColoringThreshold;
+    const BufferBounds smallIsland{std::min(reserved.bodies, 2 * small),
+                                   std::min(reserved.joints, small),
+                                   std::min(reserved.contacts, small), reserved.mouseJoints};
+    for (std::size_t w = 1; w < workspaces.size(); ++w) {
+        reserveWorkspace(workspaces[w], smallIsland);
+    }
 }
 
 // Every joint of this step's islands was solvable when the islands were built (the builder
@@ -88,6 +122,7 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     reserveStepBuffers();
     SolverStorage storage{bodies, shapes, joints, contacts, mouseJoints};
     islandBuilder.build(storage, islands);
+    reserveWorkspaces();
     const int islandCount = static_cast<int>(islands.ranges.size());
     resizeBuffer(reports, static_cast<std::size_t>(islandCount));
     // A coloured island is solved by every worker together, one island at a time; the others

@@ -67,9 +67,12 @@ struct World::Impl {
     std::vector<IslandReport> reports;          // one per island of the current step
     std::vector<int> smallIslands;              // islands solved whole by one worker
     std::vector<std::uint8_t> contactOutcomes;  // updateContacts' first phase, per contact slot
-    BufferBounds reservedFor;                   // the pool capacities the buffers were sized for
-    /// Sizes the island buffers for the world's pool capacities (see buffer.h), when they grew.
+    BufferBounds reservedFor;                   // the pool capacities the island set was sized for
+    BufferBounds reservedWorkspaceFor;          // the island totals the workspaces were sized for
+    /// Sizes the island set for the world's pool capacities (see buffer.h), when they grew.
     void reserveStepBuffers();
+    /// Sizes the workspaces for this step's island totals, when they passed the last record.
+    void reserveWorkspaces();
 
     void step(float dt, int velocityIterations, int positionIterations);
     void recordLetGoJoints(const IslandSet::Range& island);
