@@ -14,9 +14,7 @@ namespace pivot {
 namespace {
 // Below this many island bodies in a step, the islands are solved on the calling thread.
 constexpr std::size_t kParallelBodies = 512;
-}  // namespace
 
-namespace {
 // A count that grew past the last reservation is reserved for rounded up to a power of two,
 // so a count that grows one at a time reserves again only when it has doubled.
 std::size_t withRoom(std::size_t reserved, std::size_t needed) {
