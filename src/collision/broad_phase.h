@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "collision/dynamic_tree.h"
-#include "task_pool.h"
+#include "core/task_pool.h"
 
 namespace pivot {
 

@@ -18,7 +18,7 @@
 #include <cstdint>
 
 #include "pivot/math.h"
-#include "shape.h"
+#include "model/shape.h"
 
 namespace pivot {
 

@@ -21,7 +21,7 @@
 
 #include "pivot/constants.h"
 #include "pivot/math.h"
-#include "solver/solver_types.h"
+#include "constraints/solver_body.h"
 
 namespace pivot {
 

@@ -5,9 +5,9 @@
 
 #include <cstdint>
 
-#include "joints/angle_part.h"
-#include "joints/constraint_bodies.h"
-#include "joints/point_part.h"
+#include "constraints/angle_part.h"
+#include "constraints/constraint_bodies.h"
+#include "constraints/point_part.h"
 
 namespace pivot {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "body_edge.h"
+#include "model/body_edge.h"
 #include "pivot/joint.h"
 #include "pivot/math.h"
 

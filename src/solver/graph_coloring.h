@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "buffer.h"
+#include "core/buffer.h"
 #include "solver/team.h"
 
 namespace pivot {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "buffer.h"
+#include "core/buffer.h"
 
 namespace pivot {
 

@@ -1,6 +1,6 @@
 #include "solver/island_schedule.h"
 
-#include "buffer.h"
+#include "core/buffer.h"
 
 namespace pivot {
 

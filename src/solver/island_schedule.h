@@ -22,11 +22,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "body.h"
-#include "buffer.h"
+#include "model/body.h"
+#include "core/buffer.h"
 #include "joints/revolute_joint.h"
 #include "pivot/joint.h"
-#include "slot_pool.h"
+#include "core/slot_pool.h"
 #include "solver/graph_coloring.h"
 #include "solver/island_set.h"
 #include "solver/team.h"

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "buffer.h"
+#include "core/buffer.h"
 
 namespace pivot {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "buffer.h"
+#include "core/buffer.h"
 #include "pivot/constants.h"
 
 namespace pivot {

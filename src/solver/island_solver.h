@@ -9,17 +9,17 @@
 #include <cstdint>
 #include <vector>
 
-#include "body.h"
-#include "contact.h"
+#include "model/body.h"
+#include "model/contact.h"
 #include "joints/mouse_joint.h"
 #include "joints/revolute_joint.h"
-#include "shape.h"
-#include "slot_pool.h"
-#include "solver/contact_solver.h"
+#include "model/shape.h"
+#include "core/slot_pool.h"
+#include "constraints/contact_solver.h"
 #include "solver/island_schedule.h"
 #include "solver/island_set.h"
-#include "solver/position_solver.h"
-#include "solver/solver_types.h"
+#include "strategies/position_solver.h"
+#include "constraints/solver_body.h"
 #include "solver/team.h"
 
 namespace pivot {

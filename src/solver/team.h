@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "task_pool.h"
+#include "core/task_pool.h"
 
 namespace pivot {
 

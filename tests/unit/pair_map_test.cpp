@@ -1,6 +1,6 @@
 // The contact pair map against std::map, through long random runs of inserts and erases that
 // wrap clusters around the end of the table, and its promise that churn does not grow it.
-#include "pair_map.h"
+#include "core/pair_map.h"
 
 #include <gtest/gtest.h>
 

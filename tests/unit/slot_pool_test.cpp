@@ -2,7 +2,7 @@
 // after its slot has been reused more times than the generation counter can count. The World
 // uses 32-bit generations (2^32 create/destroy cycles of one slot take minutes); the same pool
 // with 8- and 16-bit counters reaches the end of them in a few hundred or thousand cycles.
-#include "slot_pool.h"
+#include "core/slot_pool.h"
 
 #include <gtest/gtest.h>
 

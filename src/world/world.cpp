@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 
-#include "state_hash.h"
-#include "world_checks.h"
-#include "world_impl.h"
+#include "core/state_hash.h"
+#include "world/world_checks.h"
+#include "world/world_impl.h"
 
 namespace pivot {
 

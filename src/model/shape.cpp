@@ -1,9 +1,9 @@
-#include "shape.h"
+#include "model/shape.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "validation.h"
+#include "core/validation.h"
 
 namespace pivot {
 

@@ -1,9 +1,9 @@
-#include "solver/contact_solver.h"
+#include "constraints/contact_solver.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "buffer.h"
+#include "core/buffer.h"
 #include "pivot/constants.h"
 
 namespace pivot {

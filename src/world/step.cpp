@@ -6,8 +6,8 @@
 //   5. clear forces, count, remember dt for the next warm start.
 #include <algorithm>
 
-#include "buffer.h"
-#include "world_impl.h"
+#include "core/buffer.h"
+#include "world/world_impl.h"
 
 namespace pivot {
 

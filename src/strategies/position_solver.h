@@ -13,9 +13,9 @@
 
 #include "joints/revolute_constraint.h"
 #include "pivot/joint.h"
-#include "solver/contact_solver.h"
+#include "constraints/contact_solver.h"
 #include "solver/island_schedule.h"
-#include "solver/solver_types.h"
+#include "constraints/solver_body.h"
 #include "solver/team.h"
 
 namespace pivot {

@@ -1,4 +1,4 @@
-#include "solver/position_solver.h"
+#include "strategies/position_solver.h"
 
 #include <algorithm>
 

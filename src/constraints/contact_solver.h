@@ -21,12 +21,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "body.h"
-#include "contact.h"
+#include "model/body.h"
+#include "model/contact.h"
 #include "pivot/world.h"
-#include "slot_pool.h"
+#include "core/slot_pool.h"
 #include "solver/island_set.h"
-#include "solver/solver_types.h"
+#include "constraints/solver_body.h"
 #include "solver/team.h"
 
 namespace pivot {

@@ -1,7 +1,7 @@
 // Contact bookkeeping: contacts are made when the broad phase reports a new pair of
 // overlapping boxes, updated (narrow phase) at the start of every step, and destroyed when the
 // boxes part or a shape goes. Touching begins and ends are recorded as events.
-#include "world_impl.h"
+#include "world/world_impl.h"
 
 namespace pivot {
 

@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include "body.h"
-#include "slot_pool.h"
+#include "model/body.h"
+#include "core/slot_pool.h"
 
 namespace pivot {
 

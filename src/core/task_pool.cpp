@@ -1,4 +1,4 @@
-#include "task_pool.h"
+#include "core/task_pool.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // The World facade, part five: what users can read about contacts.
-#include "world_impl.h"
+#include "world/world_impl.h"
 
 namespace pivot {
 

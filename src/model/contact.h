@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdint>
 
-#include "body_edge.h"
+#include "model/body_edge.h"
 #include "collision/manifold.h"
 #include "pivot/shape.h"
-#include "shape.h"
+#include "model/shape.h"
 
 namespace pivot {
 

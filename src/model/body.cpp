@@ -1,4 +1,4 @@
-#include "body.h"
+#include "model/body.h"
 
 #include <cmath>
 

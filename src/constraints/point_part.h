@@ -15,9 +15,9 @@
 
 #include <cmath>
 
-#include "joints/constraint_bodies.h"
+#include "constraints/constraint_bodies.h"
 #include "pivot/math.h"
-#include "solver/solver_types.h"
+#include "constraints/solver_body.h"
 
 namespace pivot {
 

@@ -21,9 +21,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "joints/constraint_bodies.h"
+#include "constraints/constraint_bodies.h"
 #include "pivot/constants.h"
-#include "solver/solver_types.h"
+#include "constraints/solver_body.h"
 
 namespace pivot {
 

@@ -1,6 +1,6 @@
 // The World facade, part four: joints.
-#include "world_checks.h"
-#include "world_impl.h"
+#include "world/world_checks.h"
+#include "world/world_impl.h"
 
 namespace pivot {
 

@@ -8,20 +8,20 @@
 #include <string>
 #include <vector>
 
-#include "body.h"
-#include "buffer.h"
+#include "model/body.h"
+#include "core/buffer.h"
 #include "collision/broad_phase.h"
-#include "contact.h"
+#include "model/contact.h"
 #include "joints/mouse_joint.h"
 #include "joints/revolute_joint.h"
-#include "pair_map.h"
+#include "core/pair_map.h"
 #include "pivot/world.h"
-#include "shape.h"
-#include "slot_pool.h"
+#include "model/shape.h"
+#include "core/slot_pool.h"
 #include "solver/island_builder.h"
 #include "solver/island_solver.h"
-#include "task_pool.h"
-#include "validation.h"
+#include "core/task_pool.h"
+#include "core/validation.h"
 
 namespace pivot {
 

@@ -9,8 +9,8 @@
 #include "pivot/body.h"
 #include "pivot/constants.h"
 #include "pivot/math.h"
-#include "shape.h"
-#include "slot_pool.h"
+#include "model/shape.h"
+#include "core/slot_pool.h"
 
 namespace pivot {
 

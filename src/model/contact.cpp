@@ -1,4 +1,4 @@
-#include "contact.h"
+#include "model/contact.h"
 
 namespace pivot {
 
