@@ -8,40 +8,12 @@
 
 #include <cstdint>
 #include <optional>
-#include <string_view>
 
 #include "pivot/id.h"
 #include "pivot/math.h"
+#include "pivot/solvers.h"
 
 namespace pivot {
-
-/// The position-correction algorithms of the seed note, chosen per joint.
-enum class PositionSolver : std::uint8_t {
-    /// A fraction (bias factor / h) of the position error is added to the velocity constraint.
-    /// No position phase. Cheapest; the correction adds momentum (bounce, jitter).
-    Baumgarte,
-    /// After the velocity iterations and position integration: recompute error, Jacobian and
-    /// effective mass once, solve for pseudo velocities that start at zero (no warm start) with
-    /// the bias, then add them to the positions. Real momentum is untouched.
-    PseudoVelocity,
-    /// Per constraint solve: re-measure the error and radius vectors from the current positions
-    /// and move the positions at once, with the effective mass frozen at the start of the
-    /// position phase. Stops early once every error is below kLinearSlop.
-    ModifiedNGS,
-    /// As ModifiedNGS, with the effective mass rebuilt at every solve. The default.
-    FullNGS,
-};
-
-constexpr int kPositionSolverCount = 4;
-
-/// The solver's name as the testbed spells it: baumgarte, pseudo_velocity, modified_ngs,
-/// full_ngs. An out-of-range value gives "invalid".
-const char* positionSolverName(PositionSolver solver);
-/// Parses a name made by positionSolverName; nullopt for anything else.
-std::optional<PositionSolver> parsePositionSolver(std::string_view name);
-/// The bias factor a joint uses when its def does not set one: 0.2 for Baumgarte and
-/// PseudoVelocity, 1.0 for the NGS pair.
-float defaultBiasFactor(PositionSolver solver);
 
 /// Bounds on the joint angle (angleB - angleA - referenceAngle), rad, lower <= upper. The limit
 /// is corrected by the joint's PositionSolver like the pin; it allows kAngularSlop.

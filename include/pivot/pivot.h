@@ -9,4 +9,5 @@
 #include "pivot/joint.h"
 #include "pivot/math.h"
 #include "pivot/shape.h"
+#include "pivot/solvers.h"
 #include "pivot/world.h"

@@ -20,18 +20,9 @@
 #include "pivot/joint.h"
 #include "pivot/math.h"
 #include "pivot/shape.h"
+#include "pivot/solvers.h"
 
 namespace pivot {
-
-/// How contacts remove penetration (all contacts of a world use the same).
-enum class ContactCorrection : std::uint8_t {
-    /// A velocity bias proportional to the penetration, in the velocity iterations.
-    Baumgarte,
-    /// After integration, re-measure each point's penetration from the bodies' current
-    /// transforms (the manifold is kept in the bodies' local frames, so collision is not run
-    /// again) and move the bodies apart, in the same iterations as NGS joints.
-    NGS,
-};
 
 struct WorldDef {
     Vec2 gravity{0.0f, -10.0f};  ///< m/s^2, each component within +-kMaxGravity

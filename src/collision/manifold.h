@@ -17,8 +17,8 @@
 #include <array>
 #include <cstdint>
 
+#include "collision/geometry.h"
 #include "pivot/math.h"
-#include "model/shape.h"
 
 namespace pivot {
 

@@ -22,8 +22,8 @@
 #include <cmath>
 
 #include "constraints/constraint_bodies.h"
-#include "pivot/constants.h"
 #include "constraints/solver_body.h"
+#include "pivot/constants.h"
 
 namespace pivot {
 
@@ -50,13 +50,13 @@ struct AnglePart {
     bool limitsAreEqual() const { return std::fabs(upper - lower) < 2.0f * kAngularSlop; }
 };
 
-inline float jointAngle(const AnglePart& a, const SolverPosition* positions,
+inline float jointAngle(const AnglePart& a, const SolverPose* positions,
                         const ConstraintBodies& b) {
     return positions[b.indexB].a - positions[b.indexA].a - a.referenceAngle;
 }
 
 /// Start of the step: the angle, the axial mass and the speculative limit terms.
-inline void prepareAngle(const ConstraintBodies& b, AnglePart& a, const SolverPosition* positions,
+inline void prepareAngle(const ConstraintBodies& b, AnglePart& a, const SolverPose* positions,
                          float invDt) {
     a.axialMass = b.fixedRotation() ? 0.0f : 1.0f / (b.iA + b.iB);
     a.angle = jointAngle(a, positions, b);
@@ -136,7 +136,7 @@ inline void prepareLimitBaumgarteBias(AnglePart& a, float beta, float invDt) {
 /// One NGS solve of the limit on positions: re-measure the angle, rotate the bodies by
 /// -beta C / K. Returns |C| before the correction (0 with the limit off).
 inline float solveLimitPosition(const ConstraintBodies& b, const AnglePart& a,
-                                SolverPosition* positions, float beta) {
+                                SolverPose* positions, float beta) {
     if (!a.limitEnabled || b.fixedRotation()) return 0.0f;
     float C = limitPositionError(a, jointAngle(a, positions, b));
     float impulse = -beta * a.axialMass * C;

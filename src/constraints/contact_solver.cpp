@@ -14,7 +14,7 @@ namespace {
 // (the two points are nearly the same constraint) and only the first point is kept.
 constexpr float kMaxBlockConditionNumber = 1000.0f;
 
-Transform solverTransform(const SolverPosition& p, Vec2 localCenter) {
+Transform solverTransform(const SolverPose& p, Vec2 localCenter) {
     Transform xf;
     xf.q = Rot(p.a);
     xf.p = p.c - rotate(xf.q, localCenter);
@@ -172,7 +172,7 @@ void ContactSolver::reset(int count, const StepContext& step) {
 void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
                             const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
                             const SlotPool<Shape>& shapes, const StepContext& step,
-                            const SolverPosition* positions) {
+                            const SolverPose* positions) {
     for (int k = range.begin; k < range.end; ++k) {
         const std::int32_t contactIndex = ids[k];
         const Contact& contact = pool[contactIndex];
@@ -207,8 +207,8 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
         pc.radiusA = collisionRadius(shapes[contact.shapeA]);
         pc.radiusB = collisionRadius(shapes[contact.shapeB]);
 
-        const SolverPosition& posA = positions[c.indexA];
-        const SolverPosition& posB = positions[c.indexB];
+        const SolverPose& posA = positions[c.indexA];
+        const SolverPose& posB = positions[c.indexB];
         const SolverVelocity startA{bodyA.linearVelocity, bodyA.angularVelocity};
         const SolverVelocity startB{bodyB.linearVelocity, bodyB.angularVelocity};
         WorldManifold wm =
@@ -308,13 +308,13 @@ void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool) con
     }
 }
 
-float ContactSolver::solvePositions(IndexRange range, SolverPosition* positions) const {
+float ContactSolver::solvePositions(IndexRange range, SolverPose* positions) const {
     float smallest = 0.0f;
     if (position_.empty()) return smallest;
     for (int k = range.begin; k < range.end; ++k) {
         const ContactPositionConstraint& pc = position_[k];
-        SolverPosition& A = positions[pc.indexA];
-        SolverPosition& B = positions[pc.indexB];
+        SolverPose& A = positions[pc.indexA];
+        SolverPose& B = positions[pc.indexB];
         for (int j = 0; j < pc.pointCount; ++j) {
             MeasuredPoint m = measure(pc, solverTransform(A, pc.localCenterA),
                                       solverTransform(B, pc.localCenterB), j);

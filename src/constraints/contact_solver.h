@@ -21,13 +21,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "constraints/solver_body.h"
+#include "constraints/step_context.h"
+#include "core/index_range.h"
+#include "core/slot_pool.h"
 #include "model/body.h"
 #include "model/contact.h"
-#include "pivot/world.h"
-#include "core/slot_pool.h"
-#include "solver/island_set.h"
-#include "constraints/solver_body.h"
-#include "solver/team.h"
 
 namespace pivot {
 
@@ -87,14 +86,14 @@ public:
     void prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
                  const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
                  const SlotPool<Shape>& shapes, const StepContext& step,
-                 const SolverPosition* positions);
+                 const SolverPose* positions);
     /// Applies last step's impulses (scaled by step.dtRatio in prepare) before iterating.
     void warmStart(IndexRange range, SolverVelocity* velocities) const;
     void solveVelocities(IndexRange range, SolverVelocity* velocities);
     void storeImpulses(IndexRange range, SlotPool<Contact>& pool) const;
     /// One NGS sweep over the points of contacts [range). Returns the smallest separation
     /// measured (m, before each correction; NaN if any was NaN); 0 when there are none.
-    float solvePositions(IndexRange range, SolverPosition* positions) const;
+    float solvePositions(IndexRange range, SolverPose* positions) const;
     /// Whether any contact takes part in the NGS position phase.
     bool hasPositionConstraints() const { return !position_.empty(); }
 

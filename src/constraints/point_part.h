@@ -16,8 +16,8 @@
 #include <cmath>
 
 #include "constraints/constraint_bodies.h"
-#include "pivot/math.h"
 #include "constraints/solver_body.h"
+#include "pivot/math.h"
 
 namespace pivot {
 
@@ -73,9 +73,9 @@ inline Mat22 pointEffectiveMassForPositions(const ConstraintBodies& b, Vec2 rA, 
 }
 
 /// Radius vectors and effective mass from the current angles; returns the current error C.
-inline Vec2 preparePoint(const ConstraintBodies& b, PointPart& p, const SolverPosition* positions) {
-    const SolverPosition& A = positions[b.indexA];
-    const SolverPosition& B = positions[b.indexB];
+inline Vec2 preparePoint(const ConstraintBodies& b, PointPart& p, const SolverPose* positions) {
+    const SolverPose& A = positions[b.indexA];
+    const SolverPose& B = positions[b.indexB];
     p.rA = rotate(Rot(A.a), p.localRA);
     p.rB = rotate(Rot(B.a), p.localRB);
     cacheInverse(p, pointEffectiveMass(b, p.rA, p.rB));
@@ -103,9 +103,9 @@ inline Vec2 solvePointVelocity(const ConstraintBodies& b, const PointPart& p,
 /// (ModifiedNGS). Returns |C| before the correction.
 template <bool rebuildMass>
 inline float solvePointPosition(const ConstraintBodies& b, const PointPart& p,
-                                SolverPosition* positions, float beta) {
-    SolverPosition& A = positions[b.indexA];
-    SolverPosition& B = positions[b.indexB];
+                                SolverPose* positions, float beta) {
+    SolverPose& A = positions[b.indexA];
+    SolverPose& B = positions[b.indexB];
     Vec2 rA = rotate(Rot(A.a), p.localRA);
     Vec2 rB = rotate(Rot(B.a), p.localRB);
     Vec2 C = B.c + rB - A.c - rA;

@@ -1,10 +1,13 @@
-// The arrays the island solver works on. Constraints never touch Body objects while solving:
-// they read and write these, by solver index, so each stage is a tight loop over contiguous
-// memory (and, later, can be split across threads by graph colour).
+// A body as the constraints see it while an island is solved: its velocity and its pose, each
+// in an array indexed by solver slot. Constraints never touch Body objects while solving: they
+// read and write these, so each stage is a tight loop over contiguous memory that a team of
+// workers can share out by graph colour.
 #pragma once
 
+#include <array>
+#include <cstdint>
+
 #include "pivot/math.h"
-#include "pivot/world.h"
 
 namespace pivot {
 
@@ -13,25 +16,12 @@ struct SolverVelocity {
     float w = 0.0f;
 };
 
-struct SolverPosition {
-    Vec2 c;  // centre of mass
+struct SolverPose {
+    Vec2 c;  // centre of mass (a pose, not to be confused with PositionSolver, the strategy)
     float a = 0.0f;
 };
 
-/// Settings of one World::step, shared by every island.
-struct StepContext {
-    float dt = 0.0f;
-    float invDt = 0.0f;
-    float dtRatio = 0.0f;  // min(dt / previous dt, 1), scales warm-start impulses
-    Vec2 gravity;
-    int velocityIterations = 0;
-    int positionIterations = 0;
-    bool warmStarting = true;
-    bool enableSleep = true;
-    ContactCorrection contactCorrection = ContactCorrection::NGS;
-    float contactBiasFactor = 0.0f;
-    float restitutionThreshold = 0.0f;
-    float jointLetGoSeparation = 0.0f;  // WorldDef's; 0: never
-};
+/// The solver slots of a constraint's two bodies within its island.
+using BodyPair = std::array<std::int32_t, 2>;
 
 }  // namespace pivot

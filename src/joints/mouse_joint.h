@@ -19,9 +19,9 @@
 #include <cmath>
 #include <cstdint>
 
+#include "constraints/solver_body.h"
 #include "pivot/constants.h"
 #include "pivot/math.h"
-#include "constraints/solver_body.h"
 
 namespace pivot {
 
@@ -51,9 +51,9 @@ struct MouseConstraint {
 
 /// Start of the step: the soft constraint at the current pose, and the warm start.
 inline void prepareMouse(MouseConstraint& c, const MouseJoint& joint, Vec2 localCenter,
-                         const SolverPosition* positions, SolverVelocity* velocities, float dt,
+                         const SolverPose* positions, SolverVelocity* velocities, float dt,
                          float dtRatio, bool warmStarting) {
-    const SolverPosition& p = positions[c.index];
+    const SolverPose& p = positions[c.index];
     const float omega = 2.0f * kPi * joint.hertz;
     const float hw = dt * omega;
     const float spring = 2.0f * joint.dampingRatio + hw;

@@ -43,7 +43,7 @@ inline void solveRevoluteVelocity(RevoluteConstraint& c, SolverVelocity* velocit
 /// One NGS solve: the limit, then the pin. Returns whether both ended the solve within slop as
 /// measured before their corrections (|C| <= kLinearSlop, limit error <= kAngularSlop).
 template <bool rebuildMass>
-inline bool solveRevolutePosition(const RevoluteConstraint& c, SolverPosition* positions) {
+inline bool solveRevolutePosition(const RevoluteConstraint& c, SolverPose* positions) {
     float angularError = solveLimitPosition(c.bodies, c.angle, positions, c.biasFactor);
     float linearError = solvePointPosition<rebuildMass>(c.bodies, c.point, positions, c.biasFactor);
     return linearError <= kLinearSlop && angularError <= kAngularSlop;

@@ -6,11 +6,11 @@
 #include <cstdint>
 #include <limits>
 
+#include "core/slot_pool.h"
+#include "model/shape.h"
 #include "pivot/body.h"
 #include "pivot/constants.h"
 #include "pivot/math.h"
-#include "model/shape.h"
-#include "core/slot_pool.h"
 
 namespace pivot {
 

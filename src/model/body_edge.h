@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include "model/body.h"
 #include "core/slot_pool.h"
+#include "model/body.h"
 
 namespace pivot {
 

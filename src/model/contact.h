@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdint>
 
-#include "model/body_edge.h"
 #include "collision/manifold.h"
-#include "pivot/shape.h"
+#include "model/body_edge.h"
 #include "model/shape.h"
+#include "pivot/shape.h"
 
 namespace pivot {
 

@@ -1,22 +1,14 @@
-// Shape storage and polygon checking.
+// Shape storage: a body's collision geometry with its material, filter and broad-phase proxy.
 #pragma once
 
 #include <array>
 #include <cstdint>
-#include <string>
 
 #include "collision/aabb.h"
+#include "collision/geometry.h"
 #include "pivot/shape.h"
 
 namespace pivot {
-
-/// A checked convex polygon: counter-clockwise, with outward unit edge normals
-/// (normals[i] belongs to the edge from vertices[i] to vertices[i + 1]).
-struct ConvexPolygon {
-    std::array<Vec2, kMaxPolygonVertices> vertices{};
-    std::array<Vec2, kMaxPolygonVertices> normals{};
-    int count = 0;
-};
 
 struct Shape {
     std::int32_t body = -1;
@@ -34,13 +26,6 @@ struct Shape {
     std::int32_t prev = -1;
     std::int32_t next = -1;
 };
-
-/// Checks a user polygon. Returns what is wrong with it as text, or an empty string and the
-/// polygon in canonical form in `out`.
-std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out);
-/// Checks a user circle (centre within kMaxCoordinate, radius in [kLinearSlop,
-/// kMaxCoordinate]); throws pivot::Error naming `call`.
-void checkCircle(const char* call, const Circle& circle);
 
 /// A shape's mass, centroid, and second moment about its frame's origin (what a body sums)
 /// and about its centroid (what computeMass reports, computed directly rather than by

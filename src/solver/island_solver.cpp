@@ -174,7 +174,7 @@ void integratePositions(const Team& team, IslandWorkspace& work, const StepConte
     const IndexRange mine = team.share(static_cast<int>(work.velocities.size()));
     for (int i = mine.begin; i < mine.end; ++i) {
         SolverVelocity& vel = work.velocities[i];
-        SolverPosition& pos = work.positions[i];
+        SolverPose& pos = work.positions[i];
         Vec2 translation = h * vel.v;
         if (dot(translation, translation) > kMaxTranslation * kMaxTranslation) {
             vel.v *= kMaxTranslation / length(translation);
@@ -231,7 +231,7 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
     for (int i = mine.begin; i < mine.end; ++i) {
         Body& b = bodies[island.bodies[i]];
         if (b.type == BodyType::Static) continue;
-        const SolverPosition& p = work.positions[i];
+        const SolverPose& p = work.positions[i];
         const SolverVelocity& v = work.velocities[i];
         if (!isFinite(p.c) || !std::isfinite(p.a) || !isFinite(v.v) || !std::isfinite(v.w)) {
             // A kinematic body keeps the velocity its owner set; a dynamic one stops.

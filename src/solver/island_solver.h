@@ -9,29 +9,22 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/body.h"
-#include "model/contact.h"
+#include "constraints/contact_solver.h"
+#include "constraints/solver_body.h"
+#include "constraints/step_context.h"
+#include "core/slot_pool.h"
+#include "islands/island_schedule.h"
+#include "islands/island_set.h"
+#include "islands/solver_storage.h"
+#include "islands/team.h"
 #include "joints/mouse_joint.h"
 #include "joints/revolute_joint.h"
+#include "model/body.h"
+#include "model/contact.h"
 #include "model/shape.h"
-#include "core/slot_pool.h"
-#include "constraints/contact_solver.h"
-#include "solver/island_schedule.h"
-#include "solver/island_set.h"
 #include "strategies/position_solver.h"
-#include "constraints/solver_body.h"
-#include "solver/team.h"
 
 namespace pivot {
-
-/// The object pools the solver reads and writes.
-struct SolverStorage {
-    SlotPool<Body>& bodies;
-    const SlotPool<Shape>& shapes;
-    SlotPool<RevoluteJoint>& joints;
-    SlotPool<Contact>& contacts;
-    SlotPool<MouseJoint>& mouseJoints;
-};
 
 struct IslandReport {
     int translationClamps = 0;
@@ -49,7 +42,7 @@ struct IslandWorkspace {
     IslandScheduler scheduler;
     IslandSchedule schedule;
     std::vector<SolverVelocity> velocities;  // one per solver slot
-    std::vector<SolverPosition> positions;
+    std::vector<SolverPose> positions;
     ConstraintGroups groups;
     std::vector<MouseConstraint> mouseConstraints;
     ContactSolver contactSolver;

@@ -14,12 +14,12 @@ constexpr int kModifiedNgs = static_cast<int>(PositionSolver::ModifiedNGS);
 constexpr int kFullNgs = static_cast<int>(PositionSolver::FullNGS);
 
 // Baumgarte: the joint's errors at the start of the step, fed back as velocities.
-void prepareBaumgarteBias(RevoluteConstraints& group, IndexRange range,
-                          const SolverPosition* positions, float invDt) {
+void prepareBaumgarteBias(RevoluteConstraints& group, IndexRange range, const SolverPose* positions,
+                          float invDt) {
     for (int k = range.begin; k < range.end; ++k) {
         RevoluteConstraint& c = group[k];
-        const SolverPosition& A = positions[c.bodies.indexA];
-        const SolverPosition& B = positions[c.bodies.indexB];
+        const SolverPose& A = positions[c.bodies.indexA];
+        const SolverPose& B = positions[c.bodies.indexB];
         Vec2 C = B.c + c.point.rB - A.c - c.point.rA;  // rA, rB were set for this pose
         c.point.bias = (c.biasFactor * invDt) * C;
         prepareLimitBaumgarteBias(c.angle, c.biasFactor, invDt);
@@ -38,7 +38,7 @@ void solveVelocityRange(RevoluteConstraints& group, IndexRange range, SolverVelo
 // velocity phase's impulses are stored by now, so its accumulators and bias fields are free to
 // hold the pass's own (which start at zero: no warm start).
 void solvePseudoVelocityPass(const Team& team, RevoluteConstraints& group,
-                             const std::vector<Batch>& batches, SolverPosition* positions,
+                             const std::vector<Batch>& batches, SolverPose* positions,
                              std::vector<SolverVelocity>& pseudo, int iterations, float h) {
     if (group.empty()) return;
     const IndexRange slots = team.share(static_cast<int>(pseudo.size()));
@@ -79,7 +79,7 @@ void solvePseudoVelocityPass(const Team& team, RevoluteConstraints& group,
 // NGS: one sweep of position-level solves over a range. Returns whether every joint was within
 // slop.
 template <bool rebuildMass>
-bool solveNgsRange(const RevoluteConstraints& group, IndexRange range, SolverPosition* positions) {
+bool solveNgsRange(const RevoluteConstraints& group, IndexRange range, SolverPose* positions) {
     bool withinSlop = true;
     for (int k = range.begin; k < range.end; ++k) {
         // Evaluated for every joint: each solve moves the bodies, whatever the others report.
@@ -91,8 +91,8 @@ bool solveNgsRange(const RevoluteConstraints& group, IndexRange range, SolverPos
 
 }  // namespace
 
-void prepareVelocityBias(const Team& team, ConstraintGroups& groups,
-                         const SolverPosition* positions, float invDt) {
+void prepareVelocityBias(const Team& team, ConstraintGroups& groups, const SolverPose* positions,
+                         float invDt) {
     RevoluteConstraints& group = groups[kBaumgarte];
     prepareBaumgarteBias(group, team.share(static_cast<int>(group.size())), positions, invDt);
 }
@@ -120,7 +120,7 @@ void solveVelocitySweep(const Team& team, ConstraintGroups& groups, const Island
 
 PositionPhaseResult solvePositionPhase(const Team& team, ConstraintGroups& groups,
                                        const IslandSchedule& schedule,
-                                       const ContactSolver& contacts, SolverPosition* positions,
+                                       const ContactSolver& contacts, SolverPose* positions,
                                        PositionPhaseScratch& scratch, int iterations, float h) {
     solvePseudoVelocityPass(team, groups[kPseudoVelocity], schedule.jointBatches[kPseudoVelocity],
                             positions, scratch.pseudo, iterations, h);

@@ -11,12 +11,12 @@
 #include <array>
 #include <vector>
 
+#include "constraints/contact_solver.h"
+#include "constraints/solver_body.h"
+#include "islands/island_schedule.h"
+#include "islands/team.h"
 #include "joints/revolute_constraint.h"
 #include "pivot/joint.h"
-#include "constraints/contact_solver.h"
-#include "solver/island_schedule.h"
-#include "constraints/solver_body.h"
-#include "solver/team.h"
 
 namespace pivot {
 
@@ -35,8 +35,8 @@ void forEachBatch(const Team& team, const std::vector<Batch>& batches, F&& f) {
 /// Velocity phase set-up, after every joint is prepared: the velocity bias of the strategies
 /// that have one (Baumgarte: beta / h of the pin's error and of an overshot limit, measured at
 /// the start of the step). Independent per joint: each member does its share, no sync.
-void prepareVelocityBias(const Team& team, ConstraintGroups& groups,
-                         const SolverPosition* positions, float invDt);
+void prepareVelocityBias(const Team& team, ConstraintGroups& groups, const SolverPose* positions,
+                         float invDt);
 
 /// Applies every joint's warm-start impulse, group by group.
 void warmStartJoints(const Team& team, const ConstraintGroups& groups,
@@ -75,7 +75,7 @@ struct PositionPhaseScratch {
 /// (pseudo: the island's solver slots; tallies: the team's members).
 PositionPhaseResult solvePositionPhase(const Team& team, ConstraintGroups& groups,
                                        const IslandSchedule& schedule,
-                                       const ContactSolver& contacts, SolverPosition* positions,
+                                       const ContactSolver& contacts, SolverPose* positions,
                                        PositionPhaseScratch& scratch, int iterations, float h);
 
 }  // namespace pivot

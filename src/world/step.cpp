@@ -6,6 +6,7 @@
 //   5. clear forces, count, remember dt for the next warm start.
 #include <algorithm>
 
+#include "constraints/step_context.h"
 #include "core/buffer.h"
 #include "world/world_impl.h"
 

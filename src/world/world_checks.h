@@ -3,10 +3,10 @@
 
 #include <string>
 
+#include "core/validation.h"
 #include "model/body.h"
 #include "pivot/joint.h"
 #include "pivot/world.h"
-#include "core/validation.h"
 
 namespace pivot {
 

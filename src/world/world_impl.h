@@ -8,20 +8,20 @@
 #include <string>
 #include <vector>
 
-#include "model/body.h"
-#include "core/buffer.h"
 #include "collision/broad_phase.h"
-#include "model/contact.h"
-#include "joints/mouse_joint.h"
-#include "joints/revolute_joint.h"
+#include "core/buffer.h"
 #include "core/pair_map.h"
-#include "pivot/world.h"
-#include "model/shape.h"
 #include "core/slot_pool.h"
-#include "solver/island_builder.h"
-#include "solver/island_solver.h"
 #include "core/task_pool.h"
 #include "core/validation.h"
+#include "islands/island_builder.h"
+#include "joints/mouse_joint.h"
+#include "joints/revolute_joint.h"
+#include "model/body.h"
+#include "model/contact.h"
+#include "model/shape.h"
+#include "pivot/world.h"
+#include "solver/island_solver.h"
 
 namespace pivot {
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
+#include "islands/island_schedule.h"
 #include "pivot/pivot.h"
-#include "solver/island_schedule.h"
 
 using namespace pivot;
 

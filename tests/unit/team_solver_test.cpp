@@ -8,9 +8,9 @@
 #include <set>
 #include <vector>
 
+#include "islands/graph_coloring.h"
+#include "islands/island_schedule.h"
 #include "pivot/pivot.h"
-#include "solver/graph_coloring.h"
-#include "solver/island_schedule.h"
 
 using namespace pivot;
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/buffer.h"
-#include "solver/team.h"
+#include "islands/team.h"
 
 namespace pivot {
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "core/index_range.h"
 #include "core/task_pool.h"
 
 namespace pivot {
@@ -21,11 +22,6 @@ struct Batch {
     std::int32_t begin = 0;
     std::int32_t end = 0;
     bool serial = true;
-};
-
-struct IndexRange {
-    int begin = 0;
-    int end = 0;
 };
 
 class Team {

@@ -22,14 +22,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/body.h"
 #include "core/buffer.h"
-#include "joints/revolute_joint.h"
-#include "pivot/joint.h"
 #include "core/slot_pool.h"
-#include "solver/graph_coloring.h"
-#include "solver/island_set.h"
-#include "solver/team.h"
+#include "islands/graph_coloring.h"
+#include "islands/island_set.h"
+#include "islands/team.h"
+#include "joints/revolute_joint.h"
+#include "model/body.h"
+#include "pivot/joint.h"
 
 namespace pivot {
 

@@ -1,4 +1,4 @@
-#include "solver/island_schedule.h"
+#include "islands/island_schedule.h"
 
 #include "core/buffer.h"
 

@@ -12,7 +12,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "solver/island_solver.h"
+#include "core/buffer.h"
+#include "islands/island_set.h"
+#include "islands/solver_storage.h"
 
 namespace pivot {
 

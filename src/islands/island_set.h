@@ -6,12 +6,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "constraints/solver_body.h"
 #include "core/buffer.h"
 
 namespace pivot {
-
-/// The solver indices of a constraint's two bodies within its island.
-using BodyPair = std::array<std::int32_t, 2>;
 
 /// One island's slice of an IslandSet.
 struct IslandView {

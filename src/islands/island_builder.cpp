@@ -1,4 +1,4 @@
-#include "solver/island_builder.h"
+#include "islands/island_builder.h"
 
 #include <algorithm>
 

@@ -1,0 +1,50 @@
+// The solver choices: how each joint corrects its position error (PositionSolver, per joint),
+// and how a world's contacts remove penetration (ContactCorrection). The methods are described
+// in docs/position-correction.md and docs/contacts.md.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace pivot {
+
+/// The position-correction algorithms of the seed note, chosen per joint.
+enum class PositionSolver : std::uint8_t {
+    /// A fraction (bias factor / h) of the position error is added to the velocity constraint.
+    /// No position phase. Cheapest; the correction adds momentum (bounce, jitter).
+    Baumgarte,
+    /// After the velocity iterations and position integration: recompute error, Jacobian and
+    /// effective mass once, solve for pseudo velocities that start at zero (no warm start) with
+    /// the bias, then add them to the positions. Real momentum is untouched.
+    PseudoVelocity,
+    /// Per constraint solve: re-measure the error and radius vectors from the current positions
+    /// and move the positions at once, with the effective mass frozen at the start of the
+    /// position phase. Stops early once every error is below kLinearSlop.
+    ModifiedNGS,
+    /// As ModifiedNGS, with the effective mass rebuilt at every solve. The default.
+    FullNGS,
+};
+
+constexpr int kPositionSolverCount = 4;
+
+/// The solver's name as the testbed spells it: baumgarte, pseudo_velocity, modified_ngs,
+/// full_ngs. An out-of-range value gives "invalid".
+const char* positionSolverName(PositionSolver solver);
+/// Parses a name made by positionSolverName; nullopt for anything else.
+std::optional<PositionSolver> parsePositionSolver(std::string_view name);
+/// The bias factor a joint uses when its def does not set one: 0.2 for Baumgarte and
+/// PseudoVelocity, 1.0 for the NGS pair.
+float defaultBiasFactor(PositionSolver solver);
+
+/// How contacts remove penetration (all contacts of a world use the same).
+enum class ContactCorrection : std::uint8_t {
+    /// A velocity bias proportional to the penetration, in the velocity iterations.
+    Baumgarte,
+    /// After integration, re-measure each point's penetration from the bodies' current
+    /// transforms (the manifold is kept in the bodies' local frames, so collision is not run
+    /// again) and move the bodies apart, in the same iterations as NGS joints.
+    NGS,
+};
+
+}  // namespace pivot

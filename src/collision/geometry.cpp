@@ -1,0 +1,151 @@
+#include "collision/geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/validation.h"
+
+namespace pivot {
+
+namespace {
+void requireExtent(const char* call, const char* field, float value) {
+    requireFinite(call, field, value);
+    if (value <= 0.0f)
+        fail(call, std::string(field) + " must be > 0 (got " + formatFloat(value) + ")");
+    if (value > kMaxCoordinate) {
+        fail(call, std::string(field) + " must be <= kMaxCoordinate (" +
+                       formatFloat(kMaxCoordinate) + " m) (got " + formatFloat(value) + ")");
+    }
+}
+}  // namespace
+
+Polygon Polygon::box(float halfWidth, float halfHeight) {
+    const char* call = "Polygon::box";
+    requireExtent(call, "halfWidth", halfWidth);
+    requireExtent(call, "halfHeight", halfHeight);
+    Polygon p;
+    p.count = 4;
+    p.vertices[0] = {-halfWidth, -halfHeight};
+    p.vertices[1] = {halfWidth, -halfHeight};
+    p.vertices[2] = {halfWidth, halfHeight};
+    p.vertices[3] = {-halfWidth, halfHeight};
+    return p;
+}
+
+Polygon Polygon::box(float halfWidth, float halfHeight, Vec2 center, float angle) {
+    requireCoordinate("Polygon::box", "center", center);
+    requireMagnitude("Polygon::box", "angle", angle);
+    Polygon p = box(halfWidth, halfHeight);
+    Transform xf{center, Rot(angle)};
+    for (int i = 0; i < p.count; ++i) p.vertices[i] = transformPoint(xf, p.vertices[i]);
+    return p;
+}
+
+Polygon Polygon::fromPoints(std::initializer_list<Vec2> points) {
+    if (points.size() > static_cast<std::size_t>(kMaxPolygonVertices)) {
+        fail("Polygon::fromPoints", "points has " + std::to_string(points.size()) +
+                                        " vertices, more than kMaxPolygonVertices (" +
+                                        std::to_string(kMaxPolygonVertices) + ")");
+    }
+    Polygon p;
+    for (Vec2 v : points) p.vertices[p.count++] = v;
+    return p;
+}
+
+namespace {
+
+float signedArea(const Polygon& p) {
+    // Shoelace formula relative to vertex 0, which keeps round-off small away from the origin.
+    float twiceArea = 0.0f;
+    for (int i = 1; i + 1 < p.count; ++i) {
+        twiceArea += cross(p.vertices[i] - p.vertices[0], p.vertices[i + 1] - p.vertices[0]);
+    }
+    return 0.5f * twiceArea;
+}
+
+std::string vertexName(int i) {
+    return "vertices[" + std::to_string(i) + "]";
+}
+
+}  // namespace
+
+std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out) {
+    const int n = input.count;
+    if (n < 3 || n > kMaxPolygonVertices) {
+        return "polygon.count must be in [3, " + std::to_string(kMaxPolygonVertices) + "] (got " +
+               std::to_string(n) + ")";
+    }
+    for (int i = 0; i < n; ++i) {
+        Vec2 v = input.vertices[i];
+        if (!isFinite(v)) {
+            return "polygon." + vertexName(i) + " must be finite (got " + formatVec2(v) + ")";
+        }
+        if (std::fpclassify(v.x) == FP_SUBNORMAL || std::fpclassify(v.y) == FP_SUBNORMAL) {
+            return "polygon." + vertexName(i) + " must be 0 or normal floats, not denormals (got " +
+                   formatVec2(v) + ")";
+        }
+        if (std::fabs(v.x) > kMaxCoordinate || std::fabs(v.y) > kMaxCoordinate) {
+            return "polygon." + vertexName(i) + " must be within +-kMaxCoordinate (" +
+                   formatFloat(kMaxCoordinate) + " m) (got " + formatVec2(v) + ")";
+        }
+    }
+
+    // Accept either winding; store counter-clockwise.
+    const float area = signedArea(input);
+    ConvexPolygon poly;
+    poly.count = n;
+    for (int i = 0; i < n; ++i) {
+        poly.vertices[i] = area >= 0.0f ? input.vertices[i] : input.vertices[n - 1 - i];
+    }
+
+    // Messages name the vertices as the caller numbered them, before any reversal.
+    const auto given = [&](int i) { return area >= 0.0f ? i : n - 1 - i; };
+    for (int i = 0; i < n; ++i) {
+        Vec2 edge = poly.vertices[(i + 1) % n] - poly.vertices[i];
+        float len = length(edge);
+        if (len < kLinearSlop) {
+            const int a = std::min(given(i), given((i + 1) % n));
+            const int b = std::max(given(i), given((i + 1) % n));
+            return "polygon edge from " + vertexName(a) + " to " + vertexName(b) + " is " +
+                   formatFloat(len) + " m long; every edge must be at least kLinearSlop (" +
+                   formatFloat(kLinearSlop) + " m)" + (len == 0.0f ? " (repeated vertex)" : "");
+        }
+        poly.normals[i] = (1.0f / len) * Vec2{edge.y, -edge.x};
+    }
+
+    // Strict convexity: every vertex not on an edge lies inside that edge's line by more than
+    // a tenth of the slop. On the line means collinear points; outside means a dent.
+    const float tolerance = 0.1f * kLinearSlop;
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            if (j == i || j == (i + 1) % n) continue;
+            float d = dot(poly.normals[i], poly.vertices[j] - poly.vertices[i]);
+            if (d > tolerance) {
+                return "polygon is not convex: a vertex lies outside the line of another edge";
+            }
+            if (d > -tolerance) {
+                return "polygon has collinear points (area " + formatFloat(std::fabs(area)) +
+                       " m^2): a vertex lies on the line of another edge";
+            }
+        }
+    }
+    out = poly;
+    return {};
+}
+
+void checkCircle(const char* call, const Circle& circle) {
+    requireCoordinate(call, "circle.center", circle.center);
+    requireFinite(call, "circle.radius", circle.radius);
+    // Smaller than the slop a contact could not resolve it, as for a polygon's edges; the bound
+    // also keeps the lightest circle's inverse mass a finite float (see kMinDensity).
+    if (circle.radius < kLinearSlop) {
+        fail(call, "circle.radius must be >= kLinearSlop (" + formatFloat(kLinearSlop) +
+                       " m) (got " + formatFloat(circle.radius) + ")");
+    }
+    if (circle.radius > kMaxCoordinate) {
+        fail(call, "circle.radius must be <= kMaxCoordinate (" + formatFloat(kMaxCoordinate) +
+                       " m) (got " + formatFloat(circle.radius) + ")");
+    }
+}
+
+}  // namespace pivot

@@ -1,0 +1,22 @@
+// The world's object pools, as the island builder and the island solver reach them.
+#pragma once
+
+#include "core/slot_pool.h"
+#include "joints/mouse_joint.h"
+#include "joints/revolute_joint.h"
+#include "model/body.h"
+#include "model/contact.h"
+#include "model/shape.h"
+
+namespace pivot {
+
+/// The object pools the solver reads and writes.
+struct SolverStorage {
+    SlotPool<Body>& bodies;
+    const SlotPool<Shape>& shapes;
+    SlotPool<RevoluteJoint>& joints;
+    SlotPool<Contact>& contacts;
+    SlotPool<MouseJoint>& mouseJoints;
+};
+
+}  // namespace pivot
