@@ -124,13 +124,13 @@ inline void solveAngleVelocity(const ConstraintBodies& b, AnglePart& a,
     }
 }
 
-/// Baumgarte: an overshot limit asks the velocity phase to remove beta of its (slop-allowing,
-/// clamped) error this step. A limit not yet reached keeps its speculative term.
-inline void prepareLimitBaumgarteBias(AnglePart& a, float beta, float invDt) {
+/// A velocity bias of k times the limit's position error (slop allowed, clamped) for an
+/// overshot limit; a limit not yet reached keeps its speculative term.
+inline void setLimitBias(AnglePart& a, float k) {
     if (!a.limitEnabled) return;
     float error = limitPositionError(a, a.angle);
-    if (a.angle - a.lower <= 0.0f) a.lowerTerm = beta * invDt * std::min(error, 0.0f);
-    if (a.upper - a.angle <= 0.0f) a.upperTerm = -beta * invDt * std::max(error, 0.0f);
+    if (a.angle - a.lower <= 0.0f) a.lowerTerm = k * std::min(error, 0.0f);
+    if (a.upper - a.angle <= 0.0f) a.upperTerm = -k * std::max(error, 0.0f);
 }
 
 /// One NGS solve of the limit on positions: re-measure the angle, rotate the bodies by

@@ -9,8 +9,9 @@
 // where m and i are inverse mass and inverse rotational inertia. An impulse P acts on B and -P
 // on A at the anchor: vB += mB P, wB += iB rB x P, and the opposite on A.
 //
-// The functions here do not know which PositionSolver calls them: the strategies in
-// solver/position_solver.cpp differ only in when they recompute C, r and K.
+// The functions here do not know which strategy calls them: the strategies
+// (src/strategies/position_strategies.h) differ only in when they recompute C, r and K, and in
+// where the bias goes.
 #pragma once
 
 #include <cmath>

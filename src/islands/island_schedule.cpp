@@ -21,24 +21,22 @@ void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodie
 
 void IslandScheduler::planJoints(const IslandView& island, const SlotPool<RevoluteJoint>& joints,
                                  IslandSchedule& schedule) {
-    std::array<std::int32_t, kPositionSolverCount> sizes{};
-    for (int j = 0; j < island.jointCount; ++j) {
-        ++sizes[static_cast<int>(joints[island.joints[j]].solver)];
-    }
+    std::array<std::int32_t, kJointGroupCount> sizes{};
+    for (int j = 0; j < island.jointCount; ++j) ++sizes[jointGroup(joints[island.joints[j]])];
     schedule.groupStart[0] = 0;
-    for (int g = 0; g < kPositionSolverCount; ++g) {
+    for (int g = 0; g < kJointGroupCount; ++g) {
         schedule.groupStart[g + 1] = schedule.groupStart[g] + sizes[g];
     }
 
-    // Island positions of the joints, strategy by strategy, then (if coloured) colour by colour.
+    // Island positions of the joints, group by group, then (if coloured) colour by colour.
     order_.clear();
-    for (int g = 0; g < kPositionSolverCount; ++g) {
+    for (int g = 0; g < kJointGroupCount; ++g) {
         std::vector<Batch>& batches = schedule.jointBatches[g];
         batches.clear();
         if (sizes[g] == 0) continue;
         items_.clear();
         for (int j = 0; j < island.jointCount; ++j) {
-            if (static_cast<int>(joints[island.joints[j]].solver) == g) items_.push_back(j);
+            if (jointGroup(joints[island.joints[j]]) == g) items_.push_back(j);
         }
         if (schedule.colored) {
             coloring_.color(items_.data(), sizes[g], island.jointBodies, fixed_.data(),

@@ -1,8 +1,9 @@
 // The order in which one island's constraints are solved, and which of them may be solved at
 // the same time.
 //
-// Joints are grouped by position strategy (group g of ConstraintGroups is joints
-// [groupStart[g], groupStart[g+1]) of jointIds), in the island's order within a group. A small
+// Joints are grouped by position strategy and joint type (group g of JointGroups is joints
+// [groupStart[g], groupStart[g+1]) of jointIds; joints/joint_types.h orders the groups), in the
+// island's order within a group. A small
 // island is solved in that order by one thread, one serial batch per array.
 //
 // An island with at least kColoringThreshold constraints is coloured (graph_coloring.h): within
@@ -27,6 +28,7 @@
 #include "islands/graph_coloring.h"
 #include "islands/island_set.h"
 #include "islands/team.h"
+#include "joints/joint_types.h"
 #include "joints/revolute_joint.h"
 #include "model/body.h"
 #include "pivot/joint.h"
@@ -44,8 +46,8 @@ struct IslandSchedule {
     bool colored = false;
     std::vector<std::int32_t> jointIds;  // joint pool indices, in solving order
     std::vector<BodyPair> jointPairs;    // their solver bodies
-    std::array<std::int32_t, kPositionSolverCount + 1> groupStart{};
-    std::array<std::vector<Batch>, kPositionSolverCount> jointBatches;  // within each group
+    std::array<std::int32_t, kJointGroupCount + 1> groupStart{};
+    std::array<std::vector<Batch>, kJointGroupCount> jointBatches;  // within each group
     std::vector<std::int32_t> contactIds;  // contact pool indices, in solving order
     std::vector<BodyPair> contactPairs;
     std::vector<Batch> contactBatches;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <vector>
 
 #include "core/index_range.h"
 #include "core/task_pool.h"
@@ -62,5 +63,14 @@ private:
     int member_ = 0;
     int size_ = 1;
 };
+
+/// Runs f(range) on this member's share of each batch in turn, syncing after each.
+template <typename F>
+void forEachBatch(const Team& team, const std::vector<Batch>& batches, F&& f) {
+    for (const Batch& batch : batches) {
+        f(team.share(batch));
+        team.sync();
+    }
+}
 
 }  // namespace pivot

@@ -1,6 +1,18 @@
 // The revolute joint as the solver sees it for one step: its two bodies, the point part and the
-// angle part (motor and limits). Built from the joint each step (island_solver.cpp) into the
-// group of its PositionSolver.
+// angle part (motor and limits), built from the stored joint into the group of its strategy.
+//
+// These are the operations every joint constraint offers the strategies
+// (src/strategies/position_strategies.h); a strategy decides which of them run in which phase
+// and with what factor, the joint only how each maps onto its parts:
+//   warmStart                apply the accumulated impulses
+//   solveVelocity<withBias>  motor, limits, then the pin; with the velocity bias set by setBias
+//   setBias(k)               velocity bias k C from the error at the current radius vectors
+//   restartAt(h)             re-measure radius vectors, effective mass and angle at the given
+//                            poses as at the start of a step of length h, limits unloaded
+//   solvePseudoVelocity      the velocity rows with the bias and without the motor, not
+//                            accumulated into the velocity phase's impulses
+//   freezeMass               radius vectors and effective mass at the given poses
+//   solvePosition<rebuild>   one nonlinear Gauss-Seidel solve on the poses; true if within slop
 #pragma once
 
 #include <cstdint>
@@ -8,6 +20,10 @@
 #include "constraints/angle_part.h"
 #include "constraints/constraint_bodies.h"
 #include "constraints/point_part.h"
+#include "constraints/solver_body.h"
+#include "constraints/step_context.h"
+#include "joints/revolute_joint.h"
+#include "model/body.h"
 
 namespace pivot {
 
@@ -17,36 +33,119 @@ struct RevoluteConstraint {
     AnglePart angle;
     float biasFactor = 0.0f;
     std::int32_t jointIndex = 0;  // where the impulses are stored back
+
+    /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
+    /// stored (unscaled: see startImpulses). Returns the anchors' separation, B minus A.
+    Vec2 prepare(const RevoluteJoint& joint, std::int32_t index, const Body& a, const Body& b,
+                 BodyPair slots, const SolverPose* poses, const StepContext& step) {
+        jointIndex = index;
+        biasFactor = joint.biasFactor();
+        bodies.indexA = slots[0];
+        bodies.indexB = slots[1];
+        bodies.mA = a.invMass;
+        bodies.mB = b.invMass;
+        bodies.iA = a.invInertia;
+        bodies.iB = b.invInertia;
+        point.localRA = joint.localAnchorA - a.localCenter;
+        point.localRB = joint.localAnchorB - b.localCenter;
+        angle.referenceAngle = joint.referenceAngle;
+        angle.limitEnabled = joint.enableLimit;
+        angle.lower = joint.lowerAngle;
+        angle.upper = joint.upperAngle;
+        angle.motorEnabled = joint.enableMotor;
+        angle.motorSpeed = joint.motorSpeed;
+        angle.maxMotorImpulse = step.dt * joint.maxMotorTorque;
+        angle.motorImpulse = joint.motorImpulse;
+        angle.lowerImpulse = joint.lowerImpulse;
+        angle.upperImpulse = joint.upperImpulse;
+        const Vec2 separation = preparePoint(bodies, point, poses);
+        prepareAngle(bodies, angle, poses, step.invDt);
+        return separation;
+    }
+
+    /// Warm starting: impulses scale with the step, so that they keep the force they stand
+    /// for when dt changes. Without it, every impulse starts at zero.
+    void startImpulses(const RevoluteJoint& joint, bool warmStarting, float dtRatio) {
+        if (warmStarting) {
+            point.impulse = dtRatio * joint.impulse;
+            angle.motorImpulse *= dtRatio;
+            angle.lowerImpulse *= dtRatio;
+            angle.upperImpulse *= dtRatio;
+        } else {
+            angle.motorImpulse = 0.0f;
+            angle.lowerImpulse = 0.0f;
+            angle.upperImpulse = 0.0f;
+        }
+    }
+
+    /// A let-go joint's constraint: its bodies' masses are taken as zero, so every solve of it
+    /// applies a zero impulse.
+    void makeInert() {
+        *this = RevoluteConstraint{bodies, PointPart{}, AnglePart{}, 0.0f, jointIndex};
+        bodies.mA = bodies.mB = bodies.iA = bodies.iB = 0.0f;
+    }
+
+    void storeImpulses(RevoluteJoint& joint, float invDt) const {
+        joint.impulse = point.impulse;
+        joint.motorImpulse = angle.motorImpulse;
+        joint.lowerImpulse = angle.lowerImpulse;
+        joint.upperImpulse = angle.upperImpulse;
+        joint.impulseInvDt = invDt;
+    }
+
+    void warmStart(SolverVelocity* velocities) const {
+        const ConstraintBodies& b = bodies;
+        SolverVelocity& A = velocities[b.indexA];
+        SolverVelocity& B = velocities[b.indexB];
+        Vec2 P = point.impulse;
+        float axial = angle.axialImpulse();
+        A.v -= b.mA * P;
+        A.w -= b.iA * (cross(point.rA, P) + axial);
+        B.v += b.mB * P;
+        B.w += b.iB * (cross(point.rB, P) + axial);
+    }
+
+    /// Motor, limits, then the pin: it gets the last word, because a joint that comes apart is
+    /// worse than one that turns a little too far.
+    template <bool withBias>
+    void solveVelocity(SolverVelocity* velocities) {
+        solveAngleVelocity(bodies, angle, velocities);
+        point.impulse +=
+            solvePointVelocity(bodies, point, velocities, withBias ? point.bias : Vec2{});
+    }
+
+    void setBias(const SolverPose* poses, float k) {
+        const SolverPose& A = poses[bodies.indexA];
+        const SolverPose& B = poses[bodies.indexB];
+        Vec2 C = B.c + point.rB - A.c - point.rA;
+        point.bias = k * C;
+        setLimitBias(angle, k);
+    }
+
+    void restartAt(const SolverPose* poses, float invH) {
+        preparePoint(bodies, point, poses);
+        angle.angle = jointAngle(angle, poses, bodies);
+        angle.lowerImpulse = 0.0f;
+        angle.upperImpulse = 0.0f;
+        angle.lowerTerm = std::max(angle.angle - angle.lower, 0.0f) * invH;
+        angle.upperTerm = std::max(angle.upper - angle.angle, 0.0f) * invH;
+    }
+
+    void solvePseudoVelocity(SolverVelocity* pseudo) {
+        solveAngleVelocity<false>(bodies, angle, pseudo);
+        solvePointVelocity(bodies, point, pseudo, point.bias);
+    }
+
+    void freezeMass(const SolverPose* poses) { preparePoint(bodies, point, poses); }
+
+    /// The limit, then the pin. Within slop means both were, as measured before their
+    /// corrections (|C| <= kLinearSlop, limit error <= kAngularSlop).
+    template <bool rebuildMass>
+    bool solvePosition(SolverPose* poses) const {
+        float angularError = solveLimitPosition(bodies, angle, poses, biasFactor);
+        float linearError = solvePointPosition<rebuildMass>(bodies, point, poses, biasFactor);
+        return linearError <= kLinearSlop && angularError <= kAngularSlop;
+    }
 };
-
-/// Applies the accumulated impulses (already scaled for this step) to the velocities.
-inline void warmStart(const RevoluteConstraint& c, SolverVelocity* velocities) {
-    const ConstraintBodies& b = c.bodies;
-    SolverVelocity& A = velocities[b.indexA];
-    SolverVelocity& B = velocities[b.indexB];
-    Vec2 P = c.point.impulse;
-    float axial = c.angle.axialImpulse();
-    A.v -= b.mA * P;
-    A.w -= b.iA * (cross(c.point.rA, P) + axial);
-    B.v += b.mB * P;
-    B.w += b.iB * (cross(c.point.rB, P) + axial);
-}
-
-/// One velocity solve: motor, limits, then the pin (it gets the last word: a joint that comes
-/// apart is worse than one that turns a little too far).
-inline void solveRevoluteVelocity(RevoluteConstraint& c, SolverVelocity* velocities,
-                                  Vec2 pointBias) {
-    solveAngleVelocity(c.bodies, c.angle, velocities);
-    c.point.impulse += solvePointVelocity(c.bodies, c.point, velocities, pointBias);
-}
-
-/// One NGS solve: the limit, then the pin. Returns whether both ended the solve within slop as
-/// measured before their corrections (|C| <= kLinearSlop, limit error <= kAngularSlop).
-template <bool rebuildMass>
-inline bool solveRevolutePosition(const RevoluteConstraint& c, SolverPose* positions) {
-    float angularError = solveLimitPosition(c.bodies, c.angle, positions, c.biasFactor);
-    float linearError = solvePointPosition<rebuildMass>(c.bodies, c.point, positions, c.biasFactor);
-    return linearError <= kLinearSlop && angularError <= kAngularSlop;
-}
 
 }  // namespace pivot

@@ -47,95 +47,53 @@ void integrateVelocities(const Team& team, const IslandView& island, IslandWorks
 // its let-go separation, when it has one. (Its stored reactions are finite: storeJointImpulses
 // lets go of a joint whose are not.) A let-go joint acts on nothing for the rest of this step
 // (makeInert) and is in no island after it.
-bool beyondLetGoSeparation(const RevoluteJoint& joint, Vec2 separation, const StepContext& step) {
+template <typename Joint>
+bool beyondLetGoSeparation(const Joint& joint, Vec2 separation, const StepContext& step) {
     const float limit = joint.letGoSeparation(step.jointLetGoSeparation);
     return limit > 0.0f && !(lengthSquared(separation) <= limit * limit);
 }
 
-// A let-go joint's constraint: its bodies' masses are taken as zero, so every solve of it
-// applies a zero impulse.
-void makeInert(RevoluteConstraint& c) {
-    c = RevoluteConstraint{c.bodies, PointPart{}, AnglePart{}, 0.0f, c.jointIndex};
-    c.bodies.mA = c.bodies.mB = c.bodies.iA = c.bodies.iB = 0.0f;
-}
-
-// Build each joint's solver constraint in its strategy's group (no velocity is touched: the
-// warm start comes after, in warmStartJoints).
+// Build each joint's solver constraint in its group (no velocity is touched: the warm start
+// comes after, in warmStartJoints).
 void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
                    SlotPool<RevoluteJoint>& joints, const StepContext& step, IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
-    for (int g = 0; g < kPositionSolverCount; ++g) {
-        RevoluteConstraints& group = work.groups[g];
+    work.groups.forEachGroup([&](auto, auto& group, int g) {
         const IndexRange mine = team.share(static_cast<int>(group.size()));
         for (int k = mine.begin; k < mine.end; ++k) {
             const std::size_t at = static_cast<std::size_t>(schedule.groupStart[g] + k);
             const std::int32_t jointIndex = schedule.jointIds[at];
-            RevoluteJoint& joint = joints[jointIndex];
-            const Body& a = bodies[joint.bodyA()];
-            const Body& b = bodies[joint.bodyB()];
-            RevoluteConstraint c;
-            c.jointIndex = jointIndex;
-            c.biasFactor = joint.biasFactor();
-            c.bodies.indexA = schedule.jointPairs[at][0];
-            c.bodies.indexB = schedule.jointPairs[at][1];
-            c.bodies.mA = a.invMass;
-            c.bodies.mB = b.invMass;
-            c.bodies.iA = a.invInertia;
-            c.bodies.iB = b.invInertia;
-            c.point.localRA = joint.localAnchorA - a.localCenter;
-            c.point.localRB = joint.localAnchorB - b.localCenter;
-            AnglePart& angle = c.angle;
-            angle.referenceAngle = joint.referenceAngle;
-            angle.limitEnabled = joint.enableLimit;
-            angle.lower = joint.lowerAngle;
-            angle.upper = joint.upperAngle;
-            angle.motorEnabled = joint.enableMotor;
-            angle.motorSpeed = joint.motorSpeed;
-            angle.maxMotorImpulse = step.dt * joint.maxMotorTorque;
-            angle.motorImpulse = joint.motorImpulse;
-            angle.lowerImpulse = joint.lowerImpulse;
-            angle.upperImpulse = joint.upperImpulse;
-            const Vec2 separation = preparePoint(c.bodies, c.point, work.positions.data());
-            prepareAngle(c.bodies, angle, work.positions.data(), step.invDt);
+            auto& joint = joints[jointIndex];
+            auto& c = group[k];
+            c = {};
+            const Vec2 separation =
+                c.prepare(joint, jointIndex, bodies[joint.bodyA()], bodies[joint.bodyB()],
+                          schedule.jointPairs[at], work.positions.data(), step);
             if (beyondLetGoSeparation(joint, separation, step)) {
                 joint.letGoFor(JointLetGoReason::Separation, length(separation));
                 ++report.letGoJoints;
-                makeInert(c);
-            } else if (step.warmStarting) {
-                // Impulses scale with the step: keep the force they stand for when dt changes.
-                c.point.impulse = step.dtRatio * joint.impulse;
-                angle.motorImpulse *= step.dtRatio;
-                angle.lowerImpulse *= step.dtRatio;
-                angle.upperImpulse *= step.dtRatio;
+                c.makeInert();
             } else {
-                angle.motorImpulse = 0.0f;
-                angle.lowerImpulse = 0.0f;
-                angle.upperImpulse = 0.0f;
+                c.startImpulses(joint, step.warmStarting, step.dtRatio);
             }
-            group[k] = c;
         }
-    }
+    });
     prepareVelocityBias(team, work.groups, work.positions.data(), step.invDt);
 }
 
 // A joint whose impulses (or the force and torque they stand for) went non-finite during the
 // step is let go: it keeps nothing.
-void storeJointImpulses(const Team& team, const IslandWorkspace& work,
-                        SlotPool<RevoluteJoint>& joints, const SlotPool<Body>& bodies, float invDt,
-                        IslandReport& report) {
-    for (const RevoluteConstraints& group : work.groups) {
+void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<RevoluteJoint>& joints,
+                        const SlotPool<Body>& bodies, float invDt, IslandReport& report) {
+    work.groups.forEachGroup([&](auto, auto& group, int) {
         const IndexRange mine = team.share(static_cast<int>(group.size()));
         for (int k = mine.begin; k < mine.end; ++k) {
-            const RevoluteConstraint& c = group[k];
-            RevoluteJoint& joint = joints[c.jointIndex];
+            const auto& c = group[k];
+            auto& joint = joints[c.jointIndex];
             // Let go when this step prepared it: it keeps no impulse (an inert constraint's
             // zero impulse can still be 0 * inf = NaN when its island diverged).
             if (joint.letGo) continue;
-            joint.impulse = c.point.impulse;
-            joint.motorImpulse = c.angle.motorImpulse;
-            joint.lowerImpulse = c.angle.lowerImpulse;
-            joint.upperImpulse = c.angle.upperImpulse;
-            joint.impulseInvDt = invDt;
+            c.storeImpulses(joint, invDt);
             if (!joint.hasFiniteReactions()) {
                 // The bodies are still at their start-of-step poses (written back later).
                 const Vec2 pA = transformPoint(bodies[joint.bodyA()].xf, joint.localAnchorA);
@@ -144,7 +102,7 @@ void storeJointImpulses(const Team& team, const IslandWorkspace& work,
                 ++report.letGoJoints;
             }
         }
-    }
+    });
 }
 
 // Mouse joints are few and share no stage with other constraints: the leader solves them.
@@ -275,10 +233,7 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     const std::size_t slots = static_cast<std::size_t>(schedule.slotCount(island));
     resizeBuffer(work.velocities, slots);
     resizeBuffer(work.positions, slots);
-    for (int g = 0; g < kPositionSolverCount; ++g) {
-        resizeBuffer(work.groups[g],
-                     static_cast<std::size_t>(schedule.groupStart[g + 1] - schedule.groupStart[g]));
-    }
+    work.groups.resize(schedule.groupStart);
     work.contactSolver.reset(island.contactCount, step);
     resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
     resizeBuffer(work.positionScratch.pseudo, slots);

@@ -22,7 +22,9 @@
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"
-#include "strategies/position_solver.h"
+#include "strategies/joint_groups.h"
+#include "strategies/position_phase.h"
+#include "strategies/velocity_phase.h"
 
 namespace pivot {
 
@@ -43,7 +45,7 @@ struct IslandWorkspace {
     IslandSchedule schedule;
     std::vector<SolverVelocity> velocities;  // one per solver slot
     std::vector<SolverPose> positions;
-    ConstraintGroups groups;
+    JointGroups groups;
     std::vector<MouseConstraint> mouseConstraints;
     ContactSolver contactSolver;
     PositionPhaseScratch positionScratch;

@@ -1,0 +1,117 @@
+#include "strategies/position_phase.h"
+
+#include <algorithm>
+
+namespace pivot {
+
+namespace {
+
+void solvePseudoVelocityPass(const Team& team, JointGroups& groups, const IslandSchedule& schedule,
+                             SolverPose* poses, std::vector<SolverVelocity>& pseudo, int iterations,
+                             float h) {
+    bool any = false;
+    groups.forEachGroup([&](auto strategy, auto& group, int) {
+        any = any || (decltype(strategy)::kPseudoVelocityPass && !group.empty());
+    });
+    if (!any) return;
+    const IndexRange slots = team.share(static_cast<int>(pseudo.size()));
+    std::fill(pseudo.begin() + slots.begin, pseudo.begin() + slots.end, SolverVelocity{});
+
+    const float invH = 1.0f / h;
+    groups.forEachGroup([&](auto strategy, auto& group, int) {
+        using S = decltype(strategy);
+        if constexpr (S::kPseudoVelocityPass) {
+            const IndexRange mine = team.share(static_cast<int>(group.size()));
+            for (int k = mine.begin; k < mine.end; ++k) S::beginPass(group[k], poses, invH);
+        }
+    });
+    team.sync();
+    for (int it = 0; it < iterations; ++it) {
+        groups.forEachGroup([&](auto strategy, auto& group, int g) {
+            using S = decltype(strategy);
+            if constexpr (S::kPseudoVelocityPass) {
+                forEachBatch(team, schedule.jointBatches[g], [&](IndexRange range) {
+                    for (int k = range.begin; k < range.end; ++k) {
+                        S::solvePass(group[k], pseudo.data());
+                    }
+                });
+            }
+        });
+    }
+    // Bodies no pass joint touches have zero pseudo velocity: adding it is a no-op.
+    for (int i = slots.begin; i < slots.end; ++i) {
+        poses[i].c += h * pseudo[i].v;
+        poses[i].a += h * pseudo[i].w;
+    }
+    team.sync();
+}
+
+}  // namespace
+
+PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
+                                       const IslandSchedule& schedule,
+                                       const ContactSolver& contacts, SolverPose* poses,
+                                       PositionPhaseScratch& scratch, int iterations, float h) {
+    solvePseudoVelocityPass(team, groups, schedule, poses, scratch.pseudo, iterations, h);
+
+    PositionPhaseResult result;
+    bool anyJoint = false;
+    groups.forEachGroup([&](auto strategy, auto& group, int) {
+        anyJoint = anyJoint || (decltype(strategy)::kNgsSweeps && !group.empty());
+    });
+    if (!anyJoint && !contacts.hasPositionConstraints()) {
+        result.solved = true;
+        return result;
+    }
+
+    groups.forEachGroup([&](auto strategy, auto& group, int) {
+        using S = decltype(strategy);
+        if constexpr (S::kNgsSweeps) {
+            const IndexRange mine = team.share(static_cast<int>(group.size()));
+            for (int k = mine.begin; k < mine.end; ++k) S::beginSweeps(group[k], poses);
+        }
+    });
+    team.sync();
+
+    while (result.sweeps < iterations) {
+        ++result.sweeps;
+        SweepTally tally;
+        forEachBatch(team, schedule.contactBatches, [&](IndexRange range) {
+            tally.minSeparation = ContactSolver::minSeparation(
+                tally.minSeparation, contacts.solvePositions(range, poses));
+        });
+        groups.forEachGroup([&](auto strategy, auto& group, int g) {
+            using S = decltype(strategy);
+            if constexpr (S::kNgsSweeps) {
+                forEachBatch(team, schedule.jointBatches[g], [&](IndexRange range) {
+                    bool withinSlop = true;
+                    for (int k = range.begin; k < range.end; ++k) {
+                        // Evaluated for every joint: each solve moves the bodies, whatever the
+                        // others report.
+                        bool ok = S::solvePosition(group[k], poses);
+                        withinSlop = withinSlop && ok;
+                    }
+                    tally.jointsWithinSlop = tally.jointsWithinSlop && withinSlop;
+                });
+            }
+        });
+        if (team.size() > 1) {
+            std::vector<SweepTally>& round = scratch.tallies[result.sweeps & 1];
+            round[team.member()] = tally;
+            team.sync();
+            tally = SweepTally{};
+            for (const SweepTally& t : round) {
+                tally.minSeparation =
+                    ContactSolver::minSeparation(tally.minSeparation, t.minSeparation);
+                tally.jointsWithinSlop = tally.jointsWithinSlop && t.jointsWithinSlop;
+            }
+        }
+        if (ContactSolver::withinTolerance(tally.minSeparation) && tally.jointsWithinSlop) {
+            result.solved = true;
+            break;
+        }
+    }
+    return result;
+}
+
+}  // namespace pivot

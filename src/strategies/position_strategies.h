@@ -1,0 +1,151 @@
+// The position strategies, in one home. Each is a policy over the operations every joint
+// constraint offers (joints/revolute_constraint.h lists them): where its bias goes, and when the
+// error, the radius vectors and the effective mass are measured again. The phases that run them
+// (velocity_phase.cpp, position_phase.cpp) are written once for all strategies and joint types;
+// a new strategy that fits these hooks is one more struct here and its PositionSolver value.
+//
+// Every strategy has:
+//   kSolver, kName, kDefaultBias           its PositionSolver value, testbed name and bias
+//   prepareBias(c, poses, invDt)           at the start of the step, after the joint is built
+//   solveVelocity(c, velocities)           one velocity iteration
+//   kPseudoVelocityPass                    runs the pseudo-velocity pass after integration
+//   kNgsSweeps                             joins the NGS sweeps of the position phase, with
+//     beginSweeps(c, poses)                  before the first sweep
+//     solvePosition(c, poses) -> bool        one solve; true when within slop
+// The maths of each is in docs/position-correction.md.
+#pragma once
+
+#include "constraints/solver_body.h"
+#include "pivot/constants.h"
+#include "pivot/solvers.h"
+
+namespace pivot {
+
+/// No position phase: a share (bias factor / h) of the error measured at the start of the step
+/// is fed back as a velocity in every velocity iteration.
+struct BaumgarteStrategy {
+    static constexpr PositionSolver kSolver = PositionSolver::Baumgarte;
+    static constexpr const char* kName = "baumgarte";
+    static constexpr float kDefaultBias = kDefaultBaumgarteBias;
+    static constexpr bool kPseudoVelocityPass = false;
+    static constexpr bool kNgsSweeps = false;
+
+    template <typename C>
+    static void prepareBias(C& c, const SolverPose* poses, float invDt) {
+        c.setBias(poses, c.biasFactor * invDt);
+    }
+    template <typename C>
+    static void solveVelocity(C& c, SolverVelocity* velocities) {
+        c.template solveVelocity<true>(velocities);
+    }
+    template <typename C>
+    static void beginSweeps(C&, const SolverPose*) {}
+    template <typename C>
+    static bool solvePosition(const C&, SolverPose*) {
+        return true;
+    }
+};
+
+/// Rigid velocities; after integration, the error is measured again and solved for pseudo
+/// velocities (starting at zero, with the bias), which move the poses only.
+struct PseudoVelocityStrategy {
+    static constexpr PositionSolver kSolver = PositionSolver::PseudoVelocity;
+    static constexpr const char* kName = "pseudo_velocity";
+    static constexpr float kDefaultBias = kDefaultPseudoVelocityBias;
+    static constexpr bool kPseudoVelocityPass = true;
+    static constexpr bool kNgsSweeps = false;
+
+    template <typename C>
+    static void prepareBias(C&, const SolverPose*, float) {}
+    template <typename C>
+    static void solveVelocity(C& c, SolverVelocity* velocities) {
+        c.template solveVelocity<false>(velocities);
+    }
+    /// The pass's set-up at the integrated poses (the velocity phase's impulses are stored by
+    /// then, so the constraint's accumulators and bias are free to hold the pass's own).
+    template <typename C>
+    static void beginPass(C& c, const SolverPose* poses, float invH) {
+        c.restartAt(poses, invH);
+        c.setBias(poses, c.biasFactor * invH);
+    }
+    template <typename C>
+    static void solvePass(C& c, SolverVelocity* pseudo) {
+        c.solvePseudoVelocity(pseudo);
+    }
+    template <typename C>
+    static void beginSweeps(C&, const SolverPose*) {}
+    template <typename C>
+    static bool solvePosition(const C&, SolverPose*) {
+        return true;
+    }
+};
+
+/// Rigid velocities; after integration, each solve re-measures the error and radius vectors
+/// and moves the poses at once, with the effective mass of the poses the sweeps start from.
+struct ModifiedNgsStrategy {
+    static constexpr PositionSolver kSolver = PositionSolver::ModifiedNGS;
+    static constexpr const char* kName = "modified_ngs";
+    static constexpr float kDefaultBias = kDefaultNgsBias;
+    static constexpr bool kPseudoVelocityPass = false;
+    static constexpr bool kNgsSweeps = true;
+
+    template <typename C>
+    static void prepareBias(C&, const SolverPose*, float) {}
+    template <typename C>
+    static void solveVelocity(C& c, SolverVelocity* velocities) {
+        c.template solveVelocity<false>(velocities);
+    }
+    template <typename C>
+    static void beginSweeps(C& c, const SolverPose* poses) {
+        c.freezeMass(poses);
+    }
+    template <typename C>
+    static bool solvePosition(const C& c, SolverPose* poses) {
+        return c.template solvePosition<false>(poses);
+    }
+};
+
+/// As ModifiedNGS, with the effective mass rebuilt at every solve.
+struct FullNgsStrategy {
+    static constexpr PositionSolver kSolver = PositionSolver::FullNGS;
+    static constexpr const char* kName = "full_ngs";
+    static constexpr float kDefaultBias = kDefaultNgsBias;
+    static constexpr bool kPseudoVelocityPass = false;
+    static constexpr bool kNgsSweeps = true;
+
+    template <typename C>
+    static void prepareBias(C&, const SolverPose*, float) {}
+    template <typename C>
+    static void solveVelocity(C& c, SolverVelocity* velocities) {
+        c.template solveVelocity<false>(velocities);
+    }
+    template <typename C>
+    static void beginSweeps(C&, const SolverPose*) {}
+    template <typename C>
+    static bool solvePosition(const C& c, SolverPose* poses) {
+        return c.template solvePosition<true>(poses);
+    }
+};
+
+template <typename... Strategies>
+struct StrategyList {
+    static constexpr int kCount = sizeof...(Strategies);
+    /// Calls f(Strategy{}) for each strategy, in PositionSolver order.
+    template <typename F>
+    static void forEach(F&& f) {
+        (f(Strategies{}), ...);
+    }
+    static constexpr bool inSolverOrder() {
+        int expected = 0;
+        return ((static_cast<int>(Strategies::kSolver) == expected++) && ...);
+    }
+};
+
+using PositionStrategies =
+    StrategyList<BaumgarteStrategy, PseudoVelocityStrategy, ModifiedNgsStrategy, FullNgsStrategy>;
+
+static_assert(PositionStrategies::inSolverOrder() &&
+                  PositionStrategies::kCount == kPositionSolverCount,
+              "one strategy per PositionSolver value, in the enum's order");
+
+}  // namespace pivot

@@ -1,0 +1,29 @@
+// The joints' part of the velocity phase, for every strategy and joint type: the bias set-up,
+// the warm start and the velocity iterations.
+//
+// Every stage takes the Team solving the island and the island's schedule: a member solves its
+// share of each batch and the team syncs after each batch (a team of one just runs the loops).
+#pragma once
+
+#include "constraints/solver_body.h"
+#include "islands/island_schedule.h"
+#include "islands/team.h"
+#include "strategies/joint_groups.h"
+
+namespace pivot {
+
+/// After every joint is built: each strategy's bias set-up (Baumgarte's beta / h of the errors
+/// measured at the start of the step). Independent per joint: each member does its share, no
+/// sync.
+void prepareVelocityBias(const Team& team, JointGroups& groups, const SolverPose* poses,
+                         float invDt);
+
+/// Applies every joint's warm-start impulse, group by group.
+void warmStartJoints(const Team& team, JointGroups& groups, const IslandSchedule& schedule,
+                     SolverVelocity* velocities);
+
+/// One velocity iteration over every group, accumulating impulses.
+void solveVelocitySweep(const Team& team, JointGroups& groups, const IslandSchedule& schedule,
+                        SolverVelocity* velocities);
+
+}  // namespace pivot
