@@ -1,14 +1,14 @@
-// Contact bookkeeping: contacts are made when the broad phase reports a new pair of
-// overlapping boxes, updated (narrow phase) at the start of every step, and destroyed when the
-// boxes part or a shape goes. Touching begins and ends are recorded as events.
-#include "world/world_impl.h"
+#include "world/contact_manager.h"
+
+#include "core/buffer.h"
+#include "model/body_edge.h"
 
 namespace pivot {
 
-bool World::Impl::bodiesMayCollide(std::int32_t a, std::int32_t b) const {
-    if (bodies[a].type != BodyType::Dynamic && bodies[b].type != BodyType::Dynamic) return false;
-    for (std::int32_t key = bodies[b].jointList; key != -1;) {
-        const RevoluteJoint& joint = joints[edgeOwner(key)];
+bool ContactManager::bodiesMayCollide(std::int32_t a, std::int32_t b) const {
+    if (bodies_[a].type != BodyType::Dynamic && bodies_[b].type != BodyType::Dynamic) return false;
+    for (std::int32_t key = bodies_[b].jointList; key != -1;) {
+        const RevoluteJoint& joint = joints_[edgeOwner(key)];
         int side = edgeSide(key);
         if (joint.edges[1 - side].body == a && !joint.collideConnected) return false;
         key = joint.edges[side].nextKey;
@@ -16,13 +16,13 @@ bool World::Impl::bodiesMayCollide(std::int32_t a, std::int32_t b) const {
     return true;
 }
 
-void World::Impl::addPair(std::int32_t shapeA, std::int32_t shapeB) {
-    const Shape& a = shapes[shapeA];
-    const Shape& b = shapes[shapeB];
+void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
+    const Shape& a = shapes_[shapeA];
+    const Shape& b = shapes_[shapeB];
     // Cheapest rejections first: most reported pairs that make no contact are filtered out.
     if (a.body == b.body || !filtersAllowContact(a.filter, b.filter)) return;
     std::uint64_t key = PairMap::key(shapeA, shapeB);
-    if (contactPairs.find(key) != -1) return;
+    if (pairs_.find(key) != -1) return;
     if (!bodiesMayCollide(a.body, b.body)) return;
 
     // The narrow phase has polygon-circle but not circle-polygon: put the polygon first.
@@ -31,43 +31,43 @@ void World::Impl::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     Contact contact;
     contact.shapeA = shapeA;
     contact.shapeB = shapeB;
-    contact.edges[0].body = shapes[shapeA].body;
-    contact.edges[1].body = shapes[shapeB].body;
-    contact.friction = mixFriction(shapes[shapeA].friction, shapes[shapeB].friction);
-    contact.restitution = mixRestitution(shapes[shapeA].restitution, shapes[shapeB].restitution);
-    std::int32_t index = contacts.insert(contact);
-    linkEdges(contacts, bodies, &Body::contactList, index);
-    contactPairs.insert(key, index);
+    contact.edges[0].body = shapes_[shapeA].body;
+    contact.edges[1].body = shapes_[shapeB].body;
+    contact.friction = mixFriction(shapes_[shapeA].friction, shapes_[shapeB].friction);
+    contact.restitution = mixRestitution(shapes_[shapeA].restitution, shapes_[shapeB].restitution);
+    std::int32_t index = contacts_.insert(contact);
+    linkEdges(contacts_, bodies_, &Body::contactList, index);
+    pairs_.insert(key, index);
 }
 
-void World::Impl::destroyContact(std::int32_t index) {
-    Contact& contact = contacts[index];
+void ContactManager::destroyContact(std::int32_t index) {
+    Contact& contact = contacts_[index];
     if (contact.touching) {
-        endEvents.push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
+        endEvents_.push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
         // Whatever rested on the contact must notice it is gone.
-        wakeUp(bodies[contact.bodyA()]);
-        wakeUp(bodies[contact.bodyB()]);
+        wakeUp(bodies_[contact.bodyA()]);
+        wakeUp(bodies_[contact.bodyB()]);
     }
-    unlinkEdges(contacts, bodies, &Body::contactList, index);
-    contactPairs.erase(PairMap::key(contact.shapeA, contact.shapeB));
-    contacts.erase(index);
+    unlinkEdges(contacts_, bodies_, &Body::contactList, index);
+    pairs_.erase(PairMap::key(contact.shapeA, contact.shapeB));
+    contacts_.erase(index);
 }
 
 // Two phases, so the narrow phase can run on every worker: first each contact decides its own
-// fate from what it can read (its shapes, bodies and boxes) and updates its own manifold; then,
+// fate from what it can read (its shapes_, bodies_ and boxes) and updates its own manifold; then,
 // in contact order, the consequences that touch shared state (destruction, waking, events) are
 // applied. A contact's fate never depends on another's consequences within the same step.
-void World::Impl::updateContacts() {
+void ContactManager::updateContacts() {
     enum : std::uint8_t { kKeep, kDestroy, kBegan, kEnded };
-    resizeBuffer(contactOutcomes, static_cast<std::size_t>(contacts.capacity()));
-    pool.parallelFor(contacts.capacity(), 512, [&](int begin, int end, int) {
+    resizeBuffer(contactOutcomes_, static_cast<std::size_t>(contacts_.capacity()));
+    pool_.parallelFor(contacts_.capacity(), 512, [&](int begin, int end, int) {
         for (std::int32_t index = begin; index < end; ++index) {
-            std::uint8_t& outcome = contactOutcomes[index];
+            std::uint8_t& outcome = contactOutcomes_[index];
             outcome = kKeep;
-            if (!contacts.isAlive(index)) continue;
-            Contact& contact = contacts[index];
-            const Shape& shapeA = shapes[contact.shapeA];
-            const Shape& shapeB = shapes[contact.shapeB];
+            if (!contacts_.isAlive(index)) continue;
+            Contact& contact = contacts_[index];
+            const Shape& shapeA = shapes_[contact.shapeA];
+            const Shape& shapeB = shapes_[contact.shapeB];
             if (contact.needsFiltering) {
                 if (!bodiesMayCollide(contact.bodyA(), contact.bodyB()) ||
                     !filtersAllowContact(shapeA.filter, shapeB.filter)) {
@@ -76,12 +76,12 @@ void World::Impl::updateContacts() {
                 }
                 contact.needsFiltering = false;
             }
-            const Body& bodyA = bodies[contact.bodyA()];
-            const Body& bodyB = bodies[contact.bodyB()];
+            const Body& bodyA = bodies_[contact.bodyA()];
+            const Body& bodyB = bodies_[contact.bodyB()];
             bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
             bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
             if (!activeA && !activeB) continue;  // both asleep (or static): nothing changed
-            if (!broadPhase.testOverlap(shapeA.proxyId, shapeB.proxyId)) {
+            if (!broadPhase_.testOverlap(shapeA.proxyId, shapeB.proxyId)) {
                 outcome = kDestroy;
                 continue;
             }
@@ -90,17 +90,17 @@ void World::Impl::updateContacts() {
             if (touching != wasTouching) outcome = touching ? kBegan : kEnded;
         }
     });
-    for (std::int32_t index = 0; index < contacts.capacity(); ++index) {
-        switch (contactOutcomes[index]) {
+    for (std::int32_t index = 0; index < contacts_.capacity(); ++index) {
+        switch (contactOutcomes_[index]) {
             case kKeep: break;
             case kDestroy: destroyContact(index); break;
             case kBegan:
             case kEnded: {
-                const Contact& contact = contacts[index];
-                wakeUp(bodies[contact.bodyA()]);
-                wakeUp(bodies[contact.bodyB()]);
+                const Contact& contact = contacts_[index];
+                wakeUp(bodies_[contact.bodyA()]);
+                wakeUp(bodies_[contact.bodyB()]);
                 std::vector<ContactEvent>& events =
-                    contactOutcomes[index] == kBegan ? beginEvents : endEvents;
+                    contactOutcomes_[index] == kBegan ? beginEvents_ : endEvents_;
                 events.push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
                 break;
             }
@@ -108,116 +108,133 @@ void World::Impl::updateContacts() {
     }
 }
 
-void World::Impl::countCategories(const Filter& filter, int delta) {
+void ContactManager::update() {
+    beginEvents_.clear();
+    endEvents_.clear();
+    if (newShapes_) {
+        findNewContacts();
+        newShapes_ = false;
+    }
+    updateContacts();
+}
+
+void ContactManager::afterSolve(const std::vector<std::int32_t>& solvedBodies) {
+    // Every non-static body solved this step moved: sweep its broad-phase boxes.
+    synchronizeSolvedBodies(solvedBodies);
+    findNewContacts();
+}
+
+void ContactManager::countCategories(const Filter& filter, int delta) {
     for (int bit = 0; bit < 16; ++bit) {
-        if (filter.categoryBits & (1u << bit)) categoryCounts[bit] += delta;
+        if (filter.categoryBits & (1u << bit)) categoryCounts_[bit] += delta;
     }
 }
 
-std::uint16_t World::Impl::presentCategories() const {
+std::uint16_t ContactManager::presentCategories() const {
     std::uint16_t present = 0;
     for (int bit = 0; bit < 16; ++bit) {
-        if (categoryCounts[bit] > 0) present = static_cast<std::uint16_t>(present | (1u << bit));
+        if (categoryCounts_[bit] > 0) present = static_cast<std::uint16_t>(present | (1u << bit));
     }
     return present;
 }
 
-void World::Impl::findNewContacts() {
+void ContactManager::findNewContacts() {
     // The cheap, read-only part of addPair's test runs inside the (parallel) queries.
     auto mayPair = [this](std::int32_t a, std::int32_t b) {
-        const Shape& shapeA = shapes[a];
-        const Shape& shapeB = shapes[b];
+        const Shape& shapeA = shapes_[a];
+        const Shape& shapeB = shapes_[b];
         return shapeA.body != shapeB.body && filtersAllowContact(shapeA.filter, shapeB.filter);
     };
     const std::uint16_t present = presentCategories();
     auto mayMeetAnything = [this, present](std::int32_t s) {
-        const Filter& filter = shapes[s].filter;
+        const Filter& filter = shapes_[s].filter;
         return filter.groupIndex > 0 || (filter.maskBits & present) != 0;
     };
-    broadPhase.updatePairs(pool, mayMeetAnything, mayPair,
-                           [this](std::int32_t a, std::int32_t b) { addPair(a, b); });
+    broadPhase_.updatePairs(pool_, mayMeetAnything, mayPair,
+                            [this](std::int32_t a, std::int32_t b) { addPair(a, b); });
 }
 
-void World::Impl::synchronizeShapes(std::int32_t bodyIndex, bool swept) {
-    const Body& body = bodies[bodyIndex];
-    for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
-        Shape& shape = shapes[s];
+void ContactManager::synchronizeShapes(std::int32_t bodyIndex, bool swept) {
+    const Body& body = bodies_[bodyIndex];
+    for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
+        Shape& shape = shapes_[s];
         // The box kept from the last sync is the box at the start of this step's motion.
         AABB after = computeShapeBox(shape, body.xf);
         AABB before = swept ? shape.box : after;
         shape.box = after;
         Vec2 displacement =
             0.5f * (after.lower + after.upper) - 0.5f * (before.lower + before.upper);
-        broadPhase.moveProxy(shape.proxyId, combine(before, after), displacement);
+        broadPhase_.moveProxy(shape.proxyId, combine(before, after), displacement);
     }
 }
 
-void World::Impl::synchronizeSolvedBodies() {
-    resizeBuffer(shapeMoves, static_cast<std::size_t>(shapes.capacity()));
-    const int count = static_cast<int>(islands.bodies.size());
+void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& solvedBodies) {
+    resizeBuffer(shapeMoves_, static_cast<std::size_t>(shapes_.capacity()));
+    const int count = static_cast<int>(solvedBodies.size());
     // A box costs about a tenth of a microsecond, a hand-off to the workers tens: share out
     // only big batches.
-    pool.parallelFor(count, 1024, [&](int begin, int end, int) {
+    pool_.parallelFor(count, 1024, [&](int begin, int end, int) {
         for (int i = begin; i < end; ++i) {
-            const Body& body = bodies[islands.bodies[i]];
+            const Body& body = bodies_[solvedBodies[i]];
             if (body.type == BodyType::Static) continue;
-            for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
-                Shape& shape = shapes[s];
+            for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
+                Shape& shape = shapes_[s];
                 AABB after = computeShapeBox(shape, body.xf);
-                ShapeMove& move = shapeMoves[s];
+                ShapeMove& move = shapeMoves_[s];
                 move.swept = combine(shape.box, after);
                 move.displacement =
                     0.5f * (after.lower + after.upper) - 0.5f * (shape.box.lower + shape.box.upper);
-                move.needed = broadPhase.needsMove(shape.proxyId, move.swept, move.displacement);
+                move.needed = broadPhase_.needsMove(shape.proxyId, move.swept, move.displacement);
                 shape.box = after;
             }
         }
     });
     // Re-insertions change the tree: one at a time, in a fixed order.
-    for (std::int32_t b : islands.bodies) {
-        const Body& body = bodies[b];
+    for (std::int32_t b : solvedBodies) {
+        const Body& body = bodies_[b];
         if (body.type == BodyType::Static) continue;
-        for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
-            const ShapeMove& move = shapeMoves[s];
-            if (move.needed) broadPhase.moveProxy(shapes[s].proxyId, move.swept, move.displacement);
+        for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
+            const ShapeMove& move = shapeMoves_[s];
+            if (move.needed)
+                broadPhase_.moveProxy(shapes_[s].proxyId, move.swept, move.displacement);
         }
     }
 }
 
-void World::Impl::refilterBodyPair(std::int32_t a, std::int32_t b) {
-    for (std::int32_t key = bodies[b].contactList; key != -1;) {
-        Contact& contact = contacts[edgeOwner(key)];
+void ContactManager::refilterBodyPair(std::int32_t a, std::int32_t b) {
+    for (std::int32_t key = bodies_[b].contactList; key != -1;) {
+        Contact& contact = contacts_[edgeOwner(key)];
         int side = edgeSide(key);
         if (contact.edges[1 - side].body == a) contact.needsFiltering = true;
         key = contact.edges[side].nextKey;
     }
     for (std::int32_t body : {a, b}) {
-        for (std::int32_t s = bodies[body].shapeList; s != -1; s = shapes[s].next) {
-            broadPhase.touchProxy(shapes[s].proxyId);
+        for (std::int32_t s = bodies_[body].shapeList; s != -1; s = shapes_[s].next) {
+            broadPhase_.touchProxy(shapes_[s].proxyId);
         }
     }
-    newShapes = true;
+    newShapes_ = true;
 }
 
-void World::Impl::refilterBody(std::int32_t bodyIndex) {
-    Body& body = bodies[bodyIndex];
+void ContactManager::refilterBody(std::int32_t bodyIndex) {
+    Body& body = bodies_[bodyIndex];
     for (std::int32_t key = body.contactList; key != -1;) {
-        Contact& contact = contacts[edgeOwner(key)];
+        Contact& contact = contacts_[edgeOwner(key)];
         int side = edgeSide(key);
         contact.needsFiltering = true;
-        wakeUp(bodies[contact.edges[1 - side].body]);
+        wakeUp(bodies_[contact.edges[1 - side].body]);
         key = contact.edges[side].nextKey;
     }
     for (std::int32_t key = body.jointList; key != -1;) {
-        const RevoluteJoint& joint = joints[edgeOwner(key)];
+        const RevoluteJoint& joint = joints_[edgeOwner(key)];
         int side = edgeSide(key);
-        wakeUp(bodies[joint.edges[1 - side].body]);
+        wakeUp(bodies_[joint.edges[1 - side].body]);
         key = joint.edges[side].nextKey;
     }
-    for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
-        broadPhase.touchProxy(shapes[s].proxyId);
+    for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
+        broadPhase_.touchProxy(shapes_[s].proxyId);
     }
-    newShapes = true;
+    newShapes_ = true;
 }
 
 }  // namespace pivot

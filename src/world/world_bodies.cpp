@@ -61,7 +61,7 @@ void World::destroyBody(BodyId id) {
         const Contact& contact = w.contacts[edgeOwner(body.contactList)];
         wakeUp(w.bodies[contact.bodyA()]);
         wakeUp(w.bodies[contact.bodyB()]);
-        w.destroyContact(edgeOwner(body.contactList));
+        w.contactManager.destroyContact(edgeOwner(body.contactList));
     }
     while (body.shapeList != -1) w.removeShape(body.shapeList);
     while (body.mouseList != -1) w.removeMouseJoint(body.mouseList);
@@ -113,7 +113,7 @@ void World::setBodyType(BodyId id, BodyType type) {
     body.awake = true;
     // Contacts that became static-static or kinematic-static go at the next step's contact
     // update; pairs that were not allowed to collide before are found then.
-    w.refilterBody(index);
+    w.contactManager.refilterBody(index);
 }
 Vec2 World::bodyPosition(BodyId id) const {
     return impl_->bodies[impl_->bodyIndex("World::bodyPosition", id)].xf.p;
@@ -198,8 +198,8 @@ void World::setBodyTransform(BodyId id, Vec2 position, float angle) {
     b.angle = angle;
     b.center = transformPoint(b.xf, b.localCenter);
     // A teleport is not a motion: the broad-phase boxes jump without a swept extent.
-    w.synchronizeShapes(index, false);
-    w.newShapes = true;
+    w.contactManager.synchronizeShapes(index, false);
+    w.contactManager.markNewShapes();
     wakeUp(b);
 }
 

@@ -27,10 +27,10 @@ std::vector<ContactData> World::contacts() const {
 }
 
 std::vector<ContactEvent> World::contactBeginEvents() const {
-    return impl_->beginEvents;
+    return impl_->contactManager.beginEvents();
 }
 std::vector<ContactEvent> World::contactEndEvents() const {
-    return impl_->endEvents;
+    return impl_->contactManager.endEvents();
 }
 
 }  // namespace pivot

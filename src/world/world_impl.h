@@ -1,6 +1,9 @@
-// World's private state. The public facade is split by concept: world.cpp (lifetime, step,
-// settings), world_bodies.cpp, world_shapes.cpp, world_joints.cpp, world_contacts.cpp; the
-// contact bookkeeping is in contact_manager.cpp and the step pipeline in step.cpp.
+// World's private state: the settings, the object pools, and the three parts that work on
+// them: the contact manager (broad phase, pairs, narrow phase, contact events), the stepper
+// (islands and their solving, on the task pool) and, in world_hash.cpp, the state hash. The
+// public facade is split by concept: world.cpp (lifetime, settings), world_bodies.cpp,
+// world_shapes.cpp, world_joints.cpp, world_mouse.cpp, world_contacts.cpp; step.cpp runs the
+// stages of a step.
 #pragma once
 
 #include <array>
@@ -8,20 +11,18 @@
 #include <string>
 #include <vector>
 
-#include "collision/broad_phase.h"
 #include "core/buffer.h"
-#include "core/pair_map.h"
 #include "core/slot_pool.h"
 #include "core/task_pool.h"
 #include "core/validation.h"
-#include "islands/island_builder.h"
 #include "joints/mouse_joint.h"
 #include "joints/revolute_joint.h"
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"
 #include "pivot/world.h"
-#include "solver/island_solver.h"
+#include "solver/stepper.h"
+#include "world/contact_manager.h"
 
 namespace pivot {
 
@@ -43,36 +44,16 @@ struct World::Impl {
     SlotPool<RevoluteJoint> joints;
     SlotPool<Contact> contacts;
     SlotPool<MouseJoint> mouseJoints;
-    BroadPhase broadPhase;
-    PairMap contactPairs;  // shape pair -> contact index
-    // How many shapes carry each category bit: a moved shape whose mask admits none of the
-    // categories present (and no group can override) has nothing to meet, and is not queried.
-    std::array<std::int32_t, 16> categoryCounts{};
-    void countCategories(const Filter& filter, int delta);
-    std::uint16_t presentCategories() const;
-    bool newShapes = false;  // pairs to find before the next step's contact update
+    TaskPool pool;  // before the parts that share it
+    ContactManager contactManager;
+    Stepper stepper;
 
-    std::vector<ContactEvent> beginEvents;
-    std::vector<ContactEvent> endEvents;
     std::vector<JointLetGoEvent> letGoEvents;  // joints let go by the last step
     std::vector<WorldEdgeEvent> edgeEvents;    // bodies held at the world's edge by it
     std::vector<BodyId> discarded;             // bodies whose solved state it discarded
 
     float previousInvDt = 0.0f;  // 1/dt of the last step; 0 before the first
     StepStats stats;
-    TaskPool pool;
-    IslandBuilder islandBuilder;
-    IslandSet islands;
-    std::vector<IslandWorkspace> workspaces;    // one per worker
-    std::vector<IslandReport> reports;          // one per island of the current step
-    std::vector<int> smallIslands;              // islands solved whole by one worker
-    std::vector<std::uint8_t> contactOutcomes;  // updateContacts' first phase, per contact slot
-    BufferBounds reservedFor;                   // the pool capacities the island set was sized for
-    BufferBounds reservedWorkspaceFor;          // the island totals the workspaces were sized for
-    /// Sizes the island set for the world's pool capacities (see buffer.h), when they grew.
-    void reserveStepBuffers();
-    /// Sizes the workspaces for this step's island totals, when they passed the last record.
-    void reserveWorkspaces();
 
     void step(float dt, int velocityIterations, int positionIterations);
     void recordLetGoJoints(const IslandSet::Range& island);
@@ -95,36 +76,6 @@ struct World::Impl {
     void removeShape(std::int32_t shapeIndex);
     void removeMouseJoint(std::int32_t mouseIndex);
     void wakeAll();
-
-    // Contact bookkeeping (contact_manager.cpp).
-    /// A broad-phase pair: makes a contact unless one exists or the pair may not collide.
-    void addPair(std::int32_t shapeA, std::int32_t shapeB);
-    void destroyContact(std::int32_t contactIndex);
-    /// Re-filters flagged contacts, drops those whose boxes parted, and recomputes the
-    /// manifolds of contacts with an awake body.
-    void updateContacts();
-    void findNewContacts();
-    /// Moves a body's broad-phase boxes to its current transform, covering the whole motion
-    /// since the last sync when `swept` (a step), or not (a teleport).
-    void synchronizeShapes(std::int32_t bodyIndex, bool swept);
-    /// synchronizeShapes for every body solved this step, with the boxes computed and the
-    /// containment tests made on every worker; only the re-insertions are made in turn.
-    void synchronizeSolvedBodies();
-    struct ShapeMove {
-        AABB swept;
-        Vec2 displacement;
-        bool needed = false;
-    };
-    std::vector<ShapeMove> shapeMoves;  // per shape slot, for synchronizeSolvedBodies
-    /// Whether two bodies may collide at all: one must be dynamic, and no joint between them
-    /// may forbid it.
-    bool bodiesMayCollide(std::int32_t bodyA, std::int32_t bodyB) const;
-    /// Flags the contacts between two bodies for re-filtering and makes the broad phase report
-    /// their shapes again (after a joint between them appeared or went).
-    void refilterBodyPair(std::int32_t bodyA, std::int32_t bodyB);
-    /// Flags every contact of a body for re-filtering, wakes the bodies it touches or is jointed
-    /// to, and makes the broad phase report its shapes again (after its type changed).
-    void refilterBody(std::int32_t body);
 };
 
 /// Checks a handle against a pool; returns the slot index or throws pivot::Error.

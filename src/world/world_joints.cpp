@@ -12,7 +12,7 @@ void World::Impl::removeJoint(std::int32_t index) {
     joints.erase(index);
     wakeUp(bodies[a]);
     wakeUp(bodies[b]);
-    if (preventedCollision) refilterBodyPair(a, b);
+    if (preventedCollision) contactManager.refilterBodyPair(a, b);
 }
 
 JointId World::createJoint(const RevoluteJointDef& def) {
@@ -72,7 +72,7 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     std::int32_t index = w.joints.insert(joint);
     linkEdges(w.joints, w.bodies, &Body::jointList, index);
     // A joint that forbids its bodies to collide ends any contact between them.
-    if (!def.collideConnected) w.refilterBodyPair(a, b);
+    if (!def.collideConnected) w.contactManager.refilterBodyPair(a, b);
     wakeUp(w.bodies[a]);
     wakeUp(w.bodies[b]);
     return w.jointId(index);

@@ -28,7 +28,7 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
     Body& body = w.bodies[bodyIndex];
     requireMotionAfterMassChange(
         call, bodyAfterMassChange(body, w.shapes, MassChange{body.type, &shape}), body);
-    w.countCategories(shape.filter, +1);
+    w.contactManager.countCategories(shape.filter, +1);
     shape.next = body.shapeList;
     std::int32_t index = w.shapes.insert(shape);
     if (body.shapeList != -1) w.shapes[body.shapeList].prev = index;
@@ -36,8 +36,8 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
     ++body.shapeCount;
     updateBodyMass(body, w.shapes);
     w.shapes[index].box = computeShapeBox(w.shapes[index], body.xf);
-    w.shapes[index].proxyId = w.broadPhase.createProxy(w.shapes[index].box, index);
-    w.newShapes = true;
+    w.shapes[index].proxyId = w.contactManager.broadPhase().createProxy(w.shapes[index].box, index);
+    w.contactManager.markNewShapes();
     wakeUp(body);
     return w.shapeId(index);
 }
@@ -46,15 +46,16 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
 
 void World::Impl::removeShape(std::int32_t index) {
     const Shape& shape = shapes[index];
-    countCategories(shape.filter, -1);
+    contactManager.countCategories(shape.filter, -1);
     Body& body = bodies[shape.body];
     for (std::int32_t key = body.contactList; key != -1;) {
         std::int32_t contactIndex = edgeOwner(key);
         const Contact& contact = contacts[contactIndex];
         key = contact.edges[edgeSide(key)].nextKey;
-        if (contact.shapeA == index || contact.shapeB == index) destroyContact(contactIndex);
+        if (contact.shapeA == index || contact.shapeB == index)
+            contactManager.destroyContact(contactIndex);
     }
-    broadPhase.destroyProxy(shape.proxyId);
+    contactManager.broadPhase().destroyProxy(shape.proxyId);
     if (shape.prev != -1) {
         shapes[shape.prev].next = shape.next;
     } else {
@@ -174,17 +175,17 @@ void World::setShapeFilter(ShapeId id, const Filter& filter) {
     Impl& w = *impl_;
     std::int32_t index = w.shapeIndex("World::setShapeFilter", id);
     Shape& shape = w.shapes[index];
-    w.countCategories(shape.filter, -1);
+    w.contactManager.countCategories(shape.filter, -1);
     shape.filter = filter;
-    w.countCategories(shape.filter, +1);
+    w.contactManager.countCategories(shape.filter, +1);
     // Existing contacts may now be forbidden; pairs the old filter refused may now be allowed.
     for (std::int32_t key = w.bodies[shape.body].contactList; key != -1;) {
         Contact& contact = w.contacts[edgeOwner(key)];
         if (contact.shapeA == index || contact.shapeB == index) contact.needsFiltering = true;
         key = contact.edges[edgeSide(key)].nextKey;
     }
-    w.broadPhase.touchProxy(shape.proxyId);
-    w.newShapes = true;
+    w.contactManager.broadPhase().touchProxy(shape.proxyId);
+    w.contactManager.markNewShapes();
     wakeUp(w.bodies[shape.body]);
 }
 

@@ -1,0 +1,113 @@
+#include "solver/stepper.h"
+
+#include <algorithm>
+
+namespace pivot {
+
+namespace {
+// Below this many island bodies in a step, the islands are solved on the calling thread.
+constexpr std::size_t kParallelBodies = 512;
+
+// A count that grew past the last reservation is reserved for rounded up to a power of two,
+// so a count that grows one at a time reserves again only when it has doubled.
+std::size_t withRoom(std::size_t reserved, std::size_t needed) {
+    if (needed <= reserved) return reserved;
+    std::size_t rounded = 16;
+    while (rounded < needed) rounded *= 2;
+    return rounded;
+}
+BufferBounds withRoom(const BufferBounds& reserved, const BufferBounds& needed) {
+    return {withRoom(reserved.bodies, needed.bodies), withRoom(reserved.joints, needed.joints),
+            withRoom(reserved.contacts, needed.contacts),
+            withRoom(reserved.mouseJoints, needed.mouseJoints)};
+}
+}  // namespace
+
+void Stepper::reserveStepBuffers(const SolverStorage& storage) {
+    const auto count = [](std::int32_t n) { return static_cast<std::size_t>(n); };
+    const BufferBounds bound = withRoom(
+        reservedFor_, {count(storage.bodies.capacity()), count(storage.joints.capacity()),
+                       count(storage.contacts.capacity()), count(storage.mouseJoints.capacity())});
+    if (bound == reservedFor_) return;
+    reservedFor_ = bound;
+    islands_.reserve(bound);
+    builder_.reserve(bound);
+    reports_.reserve(bound.bodies);
+    smallIslands_.reserve(bound.bodies);
+}
+
+// The solver's arrays hold one island at a time, and no island holds more than all of this
+// step's islands together: a workspace reserved for those totals never grows while it solves,
+// whatever the islands merge and split into. The totals themselves (awake bodies, touching
+// contacts) reach a record now and then, and the reservation then at least doubles.
+void Stepper::reserveWorkspaces() {
+    BufferBounds& reserved = reservedWorkspaceFor_;
+    const BufferBounds bound =
+        withRoom(reserved, {islands_.bodies.size(), islands_.joints.size(),
+                            islands_.contacts.size(), islands_.mouseJoints.size()});
+    if (bound == reserved) return;
+    reserved = bound;
+    // The first workspace may solve any island. With several workers the others solve only
+    // islands too small to be coloured: fewer than kColoringThreshold joints and contacts, and
+    // (being connected) at most one more body than that besides the static bodies they touch.
+    reserveWorkspace(workspaces_[0], reserved);
+    const std::size_t small = kColoringThreshold;
+    const BufferBounds smallIsland{std::min(reserved.bodies, 2 * small),
+                                   std::min(reserved.joints, small),
+                                   std::min(reserved.contacts, small), reserved.mouseJoints};
+    for (std::size_t w = 1; w < workspaces_.size(); ++w) {
+        reserveWorkspace(workspaces_[w], smallIsland);
+    }
+}
+
+StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
+    reserveStepBuffers(storage);
+    builder_.build(storage, islands_);
+    reserveWorkspaces();
+    const int islandCount = static_cast<int>(islands_.ranges.size());
+    resizeBuffer(reports_, static_cast<std::size_t>(islandCount));
+    // A coloured island is solved by every worker together, one island at a time; the others
+    // are shared out among the workers whole. Sharing out costs a hand-off per step: worth it
+    // only with enough bodies to solve.
+    const bool teams = pool_.workerCount() > 1;
+    smallIslands_.clear();
+    for (int i = 0; i < islandCount; ++i) {
+        if (!teams || !isColored(islands_.view(i))) {
+            smallIslands_.push_back(i);
+            continue;
+        }
+        IslandWorkspace& workspace = workspaces_[0];
+        planIsland(islands_, i, workspace, storage, context, pool_.workerCount());
+        pool_.region([&](int member) {
+            IslandReport report =
+                solveIsland(Team(pool_, member), islands_, i, workspace, storage, context);
+            if (member == 0) reports_[i] = report;
+        });
+    }
+    const int smallCount = static_cast<int>(smallIslands_.size());
+    const int islandsPerChunk = islands_.bodies.size() < kParallelBodies ? smallCount : 1;
+    pool_.parallelFor(smallCount, islandsPerChunk, [&](int begin, int end, int worker) {
+        for (int k = begin; k < end; ++k) {
+            const int i = smallIslands_[k];
+            reports_[i] = solveIsland(islands_, i, workspaces_[worker], storage, context);
+        }
+    });
+
+    StepTotals totals;
+    for (int i = 0; i < islandCount; ++i) {
+        const IslandReport& report = reports_[i];
+        const IslandSet::Range& r = islands_.ranges[i];
+        ++totals.islands;
+        totals.bodies += r.bodyEnd - r.bodyBegin;
+        totals.joints += r.jointEnd - r.jointBegin;
+        totals.translationClamps += report.translationClamps;
+        totals.rotationClamps += report.rotationClamps;
+        totals.letGoJoints += report.letGoJoints;
+        totals.edgeBodies += report.edgeBodies;
+        totals.discardedBodies += report.discardedBodies;
+        totals.positionIterations = std::max(totals.positionIterations, report.positionIterations);
+    }
+    return totals;
+}
+
+}  // namespace pivot

@@ -1,0 +1,108 @@
+// Contact bookkeeping: contacts are made when the broad phase reports a new pair of
+// overlapping boxes, updated (narrow phase) at the start of every step, and destroyed when the
+// boxes part or a shape goes. Touching begins and ends are recorded as events. The manager owns
+// the broad phase and the pair map; the world owns the pools it works on.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "collision/broad_phase.h"
+#include "core/pair_map.h"
+#include "core/slot_pool.h"
+#include "core/task_pool.h"
+#include "joints/revolute_joint.h"
+#include "model/body.h"
+#include "model/contact.h"
+#include "model/shape.h"
+#include "pivot/world.h"
+
+namespace pivot {
+
+class ContactManager {
+public:
+    ContactManager(SlotPool<Body>& bodies, SlotPool<Shape>& shapes, SlotPool<RevoluteJoint>& joints,
+                   SlotPool<Contact>& contacts, TaskPool& pool, std::uint32_t worldId)
+        : bodies_(bodies),
+          shapes_(shapes),
+          joints_(joints),
+          contacts_(contacts),
+          pool_(pool),
+          worldId_(worldId) {}
+
+    BroadPhase& broadPhase() { return broadPhase_; }
+    const BroadPhase& broadPhase() const { return broadPhase_; }
+
+    /// Shapes were added or moved outside a step: their pairs are found before the next
+    /// step's contact update.
+    void markNewShapes() { newShapes_ = true; }
+    bool hasNewShapes() const { return newShapes_; }
+
+    /// Keeps count of the shapes carrying each category bit (delta +1 on creation, -1 on
+    /// destruction): a moved shape whose mask admits none of the categories present, and no
+    /// group can override, has nothing to meet and is not queried.
+    void countCategories(const Filter& filter, int delta);
+
+    /// The start of a step: forgets the last step's events, finds the pairs of new shapes,
+    /// re-filters flagged contacts, drops those whose boxes parted and recomputes the manifolds
+    /// of contacts with an awake body.
+    void update();
+    /// The end of a step: sweeps the boxes of the bodies solved (`solvedBodies`, static ones
+    /// skipped) and makes contacts of the new overlapping pairs.
+    void afterSolve(const std::vector<std::int32_t>& solvedBodies);
+
+    void destroyContact(std::int32_t contactIndex);
+    /// Moves a body's broad-phase boxes to its current transform, covering the whole motion
+    /// since the last sync when `swept` (a step), or not (a teleport).
+    void synchronizeShapes(std::int32_t bodyIndex, bool swept);
+    /// Flags the contacts between two bodies for re-filtering and makes the broad phase report
+    /// their shapes again (after a joint between them appeared or went).
+    void refilterBodyPair(std::int32_t bodyA, std::int32_t bodyB);
+    /// Flags every contact of a body for re-filtering, wakes the bodies it touches or is jointed
+    /// to, and makes the broad phase report its shapes again (after its type changed).
+    void refilterBody(std::int32_t body);
+
+    /// Touching began and ended since the last step began (shape destruction included).
+    const std::vector<ContactEvent>& beginEvents() const { return beginEvents_; }
+    const std::vector<ContactEvent>& endEvents() const { return endEvents_; }
+
+private:
+    /// A broad-phase pair: makes a contact unless one exists or the pair may not collide.
+    void addPair(std::int32_t shapeA, std::int32_t shapeB);
+    void findNewContacts();
+    void updateContacts();
+    /// synchronizeShapes for every body solved this step, with the boxes computed and the
+    /// containment tests made on every worker; only the re-insertions are made in turn.
+    void synchronizeSolvedBodies(const std::vector<std::int32_t>& solvedBodies);
+    /// Whether two bodies may collide at all: one must be dynamic, and no joint between them
+    /// may forbid it.
+    bool bodiesMayCollide(std::int32_t bodyA, std::int32_t bodyB) const;
+    std::uint16_t presentCategories() const;
+    ShapeId shapeId(std::int32_t index) const {
+        return {index, shapes_.generation(index), worldId_};
+    }
+
+    SlotPool<Body>& bodies_;
+    SlotPool<Shape>& shapes_;
+    SlotPool<RevoluteJoint>& joints_;
+    SlotPool<Contact>& contacts_;
+    TaskPool& pool_;
+    std::uint32_t worldId_;
+
+    BroadPhase broadPhase_;
+    PairMap pairs_;  // shape pair -> contact index
+    std::array<std::int32_t, 16> categoryCounts_{};
+    bool newShapes_ = false;
+    std::vector<ContactEvent> beginEvents_;
+    std::vector<ContactEvent> endEvents_;
+    std::vector<std::uint8_t> contactOutcomes_;  // updateContacts' first phase, per contact slot
+    struct ShapeMove {
+        AABB swept;
+        Vec2 displacement;
+        bool needed = false;
+    };
+    std::vector<ShapeMove> shapeMoves_;  // per shape slot, for synchronizeSolvedBodies
+};
+
+}  // namespace pivot

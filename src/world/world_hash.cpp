@@ -1,0 +1,194 @@
+// World::stateHash: what a determinism check and the "a refused call changes nothing" checks
+// compare.
+#include "core/state_hash.h"
+#include "world/world_impl.h"
+
+namespace pivot {
+
+// Everything a public call can change goes in, so that "the hash is unchanged" means "the world
+// is unchanged": settings, every field of every object (derived ones too, such as the inverse
+// mass, so that a forgotten recomputation shows), the list links, the broad phase's boxes, the
+// contacts with their manifolds, and what the last step reported. Only scratch buffers that
+// every step rebuilds are left out.
+std::uint64_t World::stateHash() const {
+    const Impl& w = *impl_;
+    StateHasher h;
+    h.add(w.gravity);
+    h.add(static_cast<std::int32_t>(w.defaultPositionSolver));
+    h.add(w.warmStarting);
+    h.add(static_cast<std::int32_t>(w.contactCorrection));
+    h.add(w.contactBiasFactor);
+    h.add(w.restitutionThreshold);
+    h.add(w.enableSleep);
+    h.add(w.jointLetGoSeparation);
+    h.add(w.previousInvDt);
+    h.add(w.contactManager.hasNewShapes());
+
+    h.add(w.bodies.size());
+    w.bodies.forEach([&](std::int32_t index, const Body& b) {
+        h.add(index);
+        h.add(static_cast<std::int32_t>(w.bodies.generation(index)));
+        h.add(static_cast<std::int32_t>(b.type));
+        h.add(b.xf);
+        h.add(b.localCenter);
+        h.add(b.center);
+        h.add(b.angle);
+        h.add(b.linearVelocity);
+        h.add(b.angularVelocity);
+        h.add(b.force);
+        h.add(b.torque);
+        h.add(b.mass);
+        h.add(b.invMass);
+        h.add(b.inertia);
+        h.add(b.invInertia);
+        h.add(b.linearDamping);
+        h.add(b.angularDamping);
+        h.add(b.gravityScale);
+        h.add(b.fixedRotation);
+        h.add(b.userData);
+        h.add(b.shapeList);
+        h.add(b.jointList);
+        h.add(b.contactList);
+        h.add(b.mouseList);
+        h.add(b.shapeCount);
+        h.add(b.awake);
+        h.add(b.allowSleep);
+        h.add(b.sleepTime);
+    });
+    h.add(w.shapes.size());
+    w.shapes.forEach([&](std::int32_t index, const Shape& s) {
+        h.add(index);
+        h.add(static_cast<std::int32_t>(w.shapes.generation(index)));
+        h.add(s.body);
+        h.add(static_cast<std::int32_t>(s.type));
+        if (s.type == ShapeType::Circle) {
+            h.add(s.circle.center);
+            h.add(s.circle.radius);
+        } else {
+            h.add(s.polygon.count);
+            for (int i = 0; i < s.polygon.count; ++i) h.add(s.polygon.vertices[i]);
+        }
+        h.add(s.density);
+        h.add(s.friction);
+        h.add(s.restitution);
+        h.add(static_cast<std::int32_t>(s.filter.categoryBits | (s.filter.maskBits << 16)));
+        h.add(static_cast<std::int32_t>(s.filter.groupIndex));
+        h.add(s.userData);
+        h.add(s.prev);
+        h.add(s.next);
+        const AABB& box = w.contactManager.broadPhase().fatBox(s.proxyId);
+        h.add(box.lower);
+        h.add(box.upper);
+    });
+    h.add(w.joints.size());
+    w.joints.forEach([&](std::int32_t index, const RevoluteJoint& j) {
+        h.add(index);
+        h.add(static_cast<std::int32_t>(w.joints.generation(index)));
+        for (const BodyEdge& e : j.edges) {
+            h.add(e.body);
+            h.add(e.prevKey);
+            h.add(e.nextKey);
+        }
+        h.add(j.localAnchorA);
+        h.add(j.localAnchorB);
+        h.add(j.referenceAngle);
+        h.add(static_cast<std::int32_t>(j.solver));
+        h.add(j.hasBiasOverride);
+        h.add(j.biasOverride);
+        h.add(j.collideConnected);
+        h.add(j.userData);
+        h.add(j.enableLimit);
+        h.add(j.lowerAngle);
+        h.add(j.upperAngle);
+        h.add(j.enableMotor);
+        h.add(j.motorSpeed);
+        h.add(j.maxMotorTorque);
+        h.add(j.impulse);
+        h.add(j.motorImpulse);
+        h.add(j.lowerImpulse);
+        h.add(j.upperImpulse);
+        h.add(j.impulseInvDt);
+        h.add(j.letGo);
+        h.add(static_cast<std::int32_t>(j.letGoReason));
+        h.add(j.letGoAt);
+        h.add(j.hasLetGoOverride);
+        h.add(j.letGoOverride);
+    });
+    h.add(w.mouseJoints.size());
+    w.mouseJoints.forEach([&](std::int32_t index, const MouseJoint& m) {
+        h.add(index);
+        h.add(static_cast<std::int32_t>(w.mouseJoints.generation(index)));
+        h.add(m.body);
+        h.add(m.next);
+        h.add(m.localAnchor);
+        h.add(m.target);
+        h.add(m.maxForce);
+        h.add(m.hertz);
+        h.add(m.dampingRatio);
+        h.add(m.impulse);
+    });
+    h.add(w.contacts.size());
+    w.contacts.forEach([&](std::int32_t index, const Contact& c) {
+        h.add(index);
+        for (const BodyEdge& e : c.edges) {
+            h.add(e.body);
+            h.add(e.prevKey);
+            h.add(e.nextKey);
+        }
+        h.add(c.shapeA);
+        h.add(c.shapeB);
+        h.add(c.friction);
+        h.add(c.restitution);
+        h.add(c.touching);
+        h.add(c.needsFiltering);
+        const Manifold& m = c.manifold;
+        h.add(static_cast<std::int32_t>(m.type));
+        h.add(m.localNormal);
+        h.add(m.localPoint);
+        h.add(m.pointCount);
+        for (int i = 0; i < m.pointCount; ++i) {
+            h.add(m.points[i].localPoint);
+            h.add(m.points[i].normalImpulse);
+            h.add(m.points[i].tangentImpulse);
+            h.add(static_cast<std::int32_t>(m.points[i].id));
+        }
+    });
+    for (const std::vector<ContactEvent>* events :
+         {&w.contactManager.beginEvents(), &w.contactManager.endEvents()}) {
+        h.add(static_cast<std::int32_t>(events->size()));
+        for (const ContactEvent& e : *events) {
+            h.add(e.shapeA.index);
+            h.add(static_cast<std::int32_t>(e.shapeA.generation));
+            h.add(e.shapeB.index);
+            h.add(static_cast<std::int32_t>(e.shapeB.generation));
+        }
+    }
+    h.add(static_cast<std::int32_t>(w.letGoEvents.size()));
+    for (const JointLetGoEvent& e : w.letGoEvents) {
+        h.add(e.joint.index);
+        h.add(static_cast<std::int32_t>(e.joint.generation));
+        h.add(static_cast<std::int32_t>(e.reason));
+        h.add(e.separation);
+    }
+    h.add(static_cast<std::int32_t>(w.discarded.size()));
+    for (BodyId b : w.discarded) {
+        h.add(b.index);
+        h.add(static_cast<std::int32_t>(b.generation));
+    }
+    h.add(static_cast<std::int32_t>(w.edgeEvents.size()));
+    for (const WorldEdgeEvent& e : w.edgeEvents) {
+        h.add(e.body.index);
+        h.add(static_cast<std::int32_t>(e.body.generation));
+        h.add(e.reached);
+    }
+    const StepStats& s = w.stats;
+    for (int value :
+         {s.islandCount, s.bodyCount, s.jointCount, s.translationClamps, s.rotationClamps,
+          s.positionIterations, s.contactCount, s.touchingCount, s.sleepingBodyCount,
+          s.letGoJointCount, s.discardedBodyCount, s.edgeBodyCount}) {
+        h.add(static_cast<std::int32_t>(value));
+    }
+    return h.value();
+}
+
+}  // namespace pivot
