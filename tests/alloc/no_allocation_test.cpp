@@ -72,7 +72,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene,
                                     std::to_string(std::get<1>(info.param)) + "_workers";
                          });
 
-// Big islands are coloured and solved by every worker together (src/solver/team.h): their
+// Big islands are coloured and solved by every worker together (src/islands/team.h): their
 // schedules and arrays are reused too. A 30 x 30 joint grid and a 40-row pyramid, side by side.
 TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
     for (int workers : {1, 2}) {

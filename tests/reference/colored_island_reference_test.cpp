@@ -1,4 +1,4 @@
-// A coloured island (src/solver/island_schedule.h) is solved in another order than Box2D 2.4.1
+// A coloured island (src/islands/island_schedule.h) is solved in another order than Box2D 2.4.1
 // solves it, so the bits differ; the joints must hold as well as Box2D's do.
 #include <box2d/box2d.h>
 #include <gtest/gtest.h>

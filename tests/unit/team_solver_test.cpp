@@ -1,5 +1,5 @@
 // Big islands: graph colouring and the team of workers that solves one island together
-// (src/solver/graph_coloring.h, island_schedule.h, team.h).
+// (src/islands/graph_coloring.h, island_schedule.h, team.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
