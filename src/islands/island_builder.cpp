@@ -77,7 +77,7 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet
 
         for (std::int32_t key = body.jointList; key != -1;) {
             std::int32_t jointIndex = edgeOwner(key);
-            const RevoluteJoint& joint = storage.joints[jointIndex];
+            const Joint& joint = storage.joints[jointIndex];
             int side = edgeSide(key);
             key = joint.edges[side].nextKey;
             // A let-go joint neither connects nor is solved (World::isJointLetGo).

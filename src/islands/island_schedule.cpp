@@ -5,7 +5,7 @@
 namespace pivot {
 
 void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodies,
-                           const SlotPool<RevoluteJoint>& joints, IslandSchedule& schedule) {
+                           const SlotPool<Joint>& joints, IslandSchedule& schedule) {
     schedule.colored = isColored(island);
     schedule.fixedCopies.clear();
     if (schedule.colored) {
@@ -19,7 +19,7 @@ void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodie
     if (schedule.colored) giveFixedBodiesPrivateSlots(island, schedule);
 }
 
-void IslandScheduler::planJoints(const IslandView& island, const SlotPool<RevoluteJoint>& joints,
+void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Joint>& joints,
                                  IslandSchedule& schedule) {
     std::array<std::int32_t, kJointGroupCount> sizes{};
     for (int j = 0; j < island.jointCount; ++j) ++sizes[jointGroup(joints[island.joints[j]])];

@@ -29,7 +29,7 @@
 #include "islands/island_set.h"
 #include "islands/team.h"
 #include "joints/joint_types.h"
-#include "joints/revolute_joint.h"
+#include "joints/joint.h"
 #include "model/body.h"
 #include "pivot/joint.h"
 
@@ -71,7 +71,7 @@ class IslandScheduler {
 public:
     /// Plans `island` into `schedule`. Allocates only while its buffers grow.
     void plan(const IslandView& island, const SlotPool<Body>& bodies,
-              const SlotPool<RevoluteJoint>& joints, IslandSchedule& schedule);
+              const SlotPool<Joint>& joints, IslandSchedule& schedule);
     /// Room to plan an island holding every body, joint and contact of the world.
     void reserve(const BufferBounds& bound) {
         fixed_.reserve(bound.bodies);
@@ -80,7 +80,7 @@ public:
     }
 
 private:
-    void planJoints(const IslandView& island, const SlotPool<RevoluteJoint>& joints,
+    void planJoints(const IslandView& island, const SlotPool<Joint>& joints,
                     IslandSchedule& schedule);
     void planContacts(const IslandView& island, IslandSchedule& schedule);
     void giveFixedBodiesPrivateSlots(const IslandView& island, IslandSchedule& schedule);

@@ -3,7 +3,7 @@
 
 #include "core/slot_pool.h"
 #include "joints/mouse_joint.h"
-#include "joints/revolute_joint.h"
+#include "joints/joint.h"
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"
@@ -14,7 +14,7 @@ namespace pivot {
 struct SolverStorage {
     SlotPool<Body>& bodies;
     const SlotPool<Shape>& shapes;
-    SlotPool<RevoluteJoint>& joints;
+    SlotPool<Joint>& joints;
     SlotPool<Contact>& contacts;
     SlotPool<MouseJoint>& mouseJoints;
 };

@@ -8,8 +8,11 @@
 // within a group.
 #pragma once
 
+#include <type_traits>
+#include <variant>
+
+#include "joints/joint.h"
 #include "joints/revolute_constraint.h"
-#include "joints/revolute_joint.h"
 #include "pivot/solvers.h"
 
 namespace pivot {
@@ -41,8 +44,20 @@ constexpr int jointGroup(int solver, int typeIndex) {
 }
 
 /// A stored joint's group.
-inline int jointGroup(const RevoluteJoint& joint) {
-    return jointGroup(static_cast<int>(joint.solver), 0);
+inline int jointGroup(const Joint& joint) {
+    return jointGroup(static_cast<int>(joint.solver), joint.typeIndex());
 }
+
+// Each joint type's constraint names its storage (Constraint::Storage), in the same order as
+// the alternatives of JointData, so that a stored joint's type index is its constraint's.
+template <typename List, typename Data>
+struct StorageOrderMatches;
+template <typename... Constraints, typename... Storages>
+struct StorageOrderMatches<JointTypeList<Constraints...>, std::variant<Storages...>> {
+    static constexpr bool value = sizeof...(Constraints) == sizeof...(Storages) &&
+                                  (std::is_same_v<typename Constraints::Storage, Storages> && ...);
+};
+static_assert(StorageOrderMatches<JointConstraintTypes, JointData>::value,
+              "JointData and JointConstraintTypes list the joint types in the same order");
 
 }  // namespace pivot

@@ -22,12 +22,15 @@
 #include "constraints/point_part.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "joints/joint.h"
 #include "joints/revolute_joint.h"
 #include "model/body.h"
 
 namespace pivot {
 
 struct RevoluteConstraint {
+    using Storage = RevoluteJoint;
+
     ConstraintBodies bodies;
     PointPart point;
     AnglePart angle;
@@ -36,8 +39,9 @@ struct RevoluteConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
     /// stored (unscaled: see startImpulses). Returns the anchors' separation, B minus A.
-    Vec2 prepare(const RevoluteJoint& joint, std::int32_t index, const Body& a, const Body& b,
+    Vec2 prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
                  BodyPair slots, const SolverPose* poses, const StepContext& step) {
+        const RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();
         bodies.indexA = slots[0];
@@ -49,15 +53,15 @@ struct RevoluteConstraint {
         point.localRA = joint.localAnchorA - a.localCenter;
         point.localRB = joint.localAnchorB - b.localCenter;
         angle.referenceAngle = joint.referenceAngle;
-        angle.limitEnabled = joint.enableLimit;
-        angle.lower = joint.lowerAngle;
-        angle.upper = joint.upperAngle;
-        angle.motorEnabled = joint.enableMotor;
-        angle.motorSpeed = joint.motorSpeed;
-        angle.maxMotorImpulse = step.dt * joint.maxMotorTorque;
-        angle.motorImpulse = joint.motorImpulse;
-        angle.lowerImpulse = joint.lowerImpulse;
-        angle.upperImpulse = joint.upperImpulse;
+        angle.limitEnabled = revolute.enableLimit;
+        angle.lower = revolute.lowerAngle;
+        angle.upper = revolute.upperAngle;
+        angle.motorEnabled = revolute.enableMotor;
+        angle.motorSpeed = revolute.motorSpeed;
+        angle.maxMotorImpulse = step.dt * revolute.maxMotorTorque;
+        angle.motorImpulse = revolute.motorImpulse;
+        angle.lowerImpulse = revolute.lowerImpulse;
+        angle.upperImpulse = revolute.upperImpulse;
         const Vec2 separation = preparePoint(bodies, point, poses);
         prepareAngle(bodies, angle, poses, step.invDt);
         return separation;
@@ -65,9 +69,9 @@ struct RevoluteConstraint {
 
     /// Warm starting: impulses scale with the step, so that they keep the force they stand
     /// for when dt changes. Without it, every impulse starts at zero.
-    void startImpulses(const RevoluteJoint& joint, bool warmStarting, float dtRatio) {
+    void startImpulses(const Joint& joint, bool warmStarting, float dtRatio) {
         if (warmStarting) {
-            point.impulse = dtRatio * joint.impulse;
+            point.impulse = dtRatio * std::get<RevoluteJoint>(joint.data).impulse;
             angle.motorImpulse *= dtRatio;
             angle.lowerImpulse *= dtRatio;
             angle.upperImpulse *= dtRatio;
@@ -85,11 +89,12 @@ struct RevoluteConstraint {
         bodies.mA = bodies.mB = bodies.iA = bodies.iB = 0.0f;
     }
 
-    void storeImpulses(RevoluteJoint& joint, float invDt) const {
-        joint.impulse = point.impulse;
-        joint.motorImpulse = angle.motorImpulse;
-        joint.lowerImpulse = angle.lowerImpulse;
-        joint.upperImpulse = angle.upperImpulse;
+    void storeImpulses(Joint& joint, float invDt) const {
+        RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
+        revolute.impulse = point.impulse;
+        revolute.motorImpulse = angle.motorImpulse;
+        revolute.lowerImpulse = angle.lowerImpulse;
+        revolute.upperImpulse = angle.upperImpulse;
         joint.impulseInvDt = invDt;
     }
 

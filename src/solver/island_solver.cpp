@@ -56,7 +56,7 @@ bool beyondLetGoSeparation(const Joint& joint, Vec2 separation, const StepContex
 // Build each joint's solver constraint in its group (no velocity is touched: the warm start
 // comes after, in warmStartJoints).
 void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
-                   SlotPool<RevoluteJoint>& joints, const StepContext& step, IslandReport& report) {
+                   SlotPool<Joint>& joints, const StepContext& step, IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
     work.groups.forEachGroup([&](auto, auto& group, int g) {
         const IndexRange mine = team.share(static_cast<int>(group.size()));
@@ -83,7 +83,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
 
 // A joint whose impulses (or the force and torque they stand for) went non-finite during the
 // step is let go: it keeps nothing.
-void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<RevoluteJoint>& joints,
+void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
                         const SlotPool<Body>& bodies, float invDt, IslandReport& report) {
     work.groups.forEachGroup([&](auto, auto& group, int) {
         const IndexRange mine = team.share(static_cast<int>(group.size()));

@@ -18,7 +18,6 @@
 #include "islands/solver_storage.h"
 #include "islands/team.h"
 #include "joints/mouse_joint.h"
-#include "joints/revolute_joint.h"
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"

@@ -8,7 +8,7 @@ namespace pivot {
 bool ContactManager::bodiesMayCollide(std::int32_t a, std::int32_t b) const {
     if (bodies_[a].type != BodyType::Dynamic && bodies_[b].type != BodyType::Dynamic) return false;
     for (std::int32_t key = bodies_[b].jointList; key != -1;) {
-        const RevoluteJoint& joint = joints_[edgeOwner(key)];
+        const Joint& joint = joints_[edgeOwner(key)];
         int side = edgeSide(key);
         if (joint.edges[1 - side].body == a && !joint.collideConnected) return false;
         key = joint.edges[side].nextKey;
@@ -226,7 +226,7 @@ void ContactManager::refilterBody(std::int32_t bodyIndex) {
         key = contact.edges[side].nextKey;
     }
     for (std::int32_t key = body.jointList; key != -1;) {
-        const RevoluteJoint& joint = joints_[edgeOwner(key)];
+        const Joint& joint = joints_[edgeOwner(key)];
         int side = edgeSide(key);
         wakeUp(bodies_[joint.edges[1 - side].body]);
         key = joint.edges[side].nextKey;

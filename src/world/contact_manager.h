@@ -12,7 +12,7 @@
 #include "core/pair_map.h"
 #include "core/slot_pool.h"
 #include "core/task_pool.h"
-#include "joints/revolute_joint.h"
+#include "joints/joint.h"
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"
@@ -22,7 +22,7 @@ namespace pivot {
 
 class ContactManager {
 public:
-    ContactManager(SlotPool<Body>& bodies, SlotPool<Shape>& shapes, SlotPool<RevoluteJoint>& joints,
+    ContactManager(SlotPool<Body>& bodies, SlotPool<Shape>& shapes, SlotPool<Joint>& joints,
                    SlotPool<Contact>& contacts, TaskPool& pool, std::uint32_t worldId)
         : bodies_(bodies),
           shapes_(shapes),
@@ -85,7 +85,7 @@ private:
 
     SlotPool<Body>& bodies_;
     SlotPool<Shape>& shapes_;
-    SlotPool<RevoluteJoint>& joints_;
+    SlotPool<Joint>& joints_;
     SlotPool<Contact>& contacts_;
     TaskPool& pool_;
     std::uint32_t worldId_;

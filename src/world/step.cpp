@@ -18,7 +18,7 @@ void World::Impl::recordLetGoJoints(const IslandSet::Range& island) {
     const IslandSet& islands = stepper.islands();
     for (std::int32_t k = island.jointBegin; k < island.jointEnd; ++k) {
         const std::int32_t index = islands.joints[static_cast<std::size_t>(k)];
-        const RevoluteJoint& joint = joints[index];
+        const Joint& joint = joints[index];
         if (joint.letGo) letGoEvents.push_back({jointId(index), joint.letGoReason, joint.letGoAt});
     }
 }

@@ -52,7 +52,7 @@ void World::destroyBody(BodyId id) {
     Body& body = w.bodies[index];
     // Joints first (waking what they held), then contacts (waking what touched), then shapes.
     while (body.jointList != -1) {
-        const RevoluteJoint& joint = w.joints[edgeOwner(body.jointList)];
+        const Joint& joint = w.joints[edgeOwner(body.jointList)];
         wakeUp(w.bodies[joint.bodyA()]);
         wakeUp(w.bodies[joint.bodyB()]);
         w.removeJoint(edgeOwner(body.jointList));

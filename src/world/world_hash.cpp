@@ -5,6 +5,21 @@
 
 namespace pivot {
 
+namespace {
+void hashJointData(StateHasher& h, const RevoluteJoint& j) {
+    h.add(j.enableLimit);
+    h.add(j.lowerAngle);
+    h.add(j.upperAngle);
+    h.add(j.enableMotor);
+    h.add(j.motorSpeed);
+    h.add(j.maxMotorTorque);
+    h.add(j.impulse);
+    h.add(j.motorImpulse);
+    h.add(j.lowerImpulse);
+    h.add(j.upperImpulse);
+}
+}  // namespace
+
 // Everything a public call can change goes in, so that "the hash is unchanged" means "the world
 // is unchanged": settings, every field of every object (derived ones too, such as the inverse
 // mass, so that a forgotten recomputation shows), the list links, the broad phase's boxes, the
@@ -81,7 +96,7 @@ std::uint64_t World::stateHash() const {
         h.add(box.upper);
     });
     h.add(w.joints.size());
-    w.joints.forEach([&](std::int32_t index, const RevoluteJoint& j) {
+    w.joints.forEach([&](std::int32_t index, const Joint& j) {
         h.add(index);
         h.add(static_cast<std::int32_t>(w.joints.generation(index)));
         for (const BodyEdge& e : j.edges) {
@@ -97,16 +112,7 @@ std::uint64_t World::stateHash() const {
         h.add(j.biasOverride);
         h.add(j.collideConnected);
         h.add(j.userData);
-        h.add(j.enableLimit);
-        h.add(j.lowerAngle);
-        h.add(j.upperAngle);
-        h.add(j.enableMotor);
-        h.add(j.motorSpeed);
-        h.add(j.maxMotorTorque);
-        h.add(j.impulse);
-        h.add(j.motorImpulse);
-        h.add(j.lowerImpulse);
-        h.add(j.upperImpulse);
+        std::visit([&](const auto& data) { hashJointData(h, data); }, j.data);
         h.add(j.impulseInvDt);
         h.add(j.letGo);
         h.add(static_cast<std::int32_t>(j.letGoReason));

@@ -15,8 +15,8 @@
 #include "core/slot_pool.h"
 #include "core/task_pool.h"
 #include "core/validation.h"
+#include "joints/joint.h"
 #include "joints/mouse_joint.h"
-#include "joints/revolute_joint.h"
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"
@@ -41,7 +41,7 @@ struct World::Impl {
 
     SlotPool<Body> bodies;
     SlotPool<Shape> shapes;
-    SlotPool<RevoluteJoint> joints;
+    SlotPool<Joint> joints;
     SlotPool<Contact> contacts;
     SlotPool<MouseJoint> mouseJoints;
     TaskPool pool;  // before the parts that share it

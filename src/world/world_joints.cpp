@@ -5,7 +5,7 @@
 namespace pivot {
 
 void World::Impl::removeJoint(std::int32_t index) {
-    const RevoluteJoint& joint = joints[index];
+    const Joint& joint = joints[index];
     std::int32_t a = joint.bodyA(), b = joint.bodyB();
     bool preventedCollision = !joint.collideConnected;
     unlinkEdges(joints, bodies, &Body::jointList, index);
@@ -42,7 +42,8 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     checkLimit(call, "def.limit", def.limit);
     checkMotor(call, "def.motor", def.motor);
 
-    RevoluteJoint joint;
+    Joint joint;
+    RevoluteJoint& revolute = joint.data.emplace<RevoluteJoint>();
     joint.edges[0].body = a;
     joint.edges[1].body = b;
     const Body& bodyA = w.bodies[a];
@@ -59,12 +60,12 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     joint.solver = solver;
     joint.hasBiasOverride = def.biasFactor.has_value();
     joint.biasOverride = def.biasFactor.value_or(0.0f);
-    joint.enableLimit = def.limit.enabled;
-    joint.lowerAngle = def.limit.lower;
-    joint.upperAngle = def.limit.upper;
-    joint.enableMotor = def.motor.enabled;
-    joint.motorSpeed = def.motor.speed;
-    joint.maxMotorTorque = def.motor.maxTorque;
+    revolute.enableLimit = def.limit.enabled;
+    revolute.lowerAngle = def.limit.lower;
+    revolute.upperAngle = def.limit.upper;
+    revolute.enableMotor = def.motor.enabled;
+    revolute.motorSpeed = def.motor.speed;
+    revolute.maxMotorTorque = def.motor.maxTorque;
     joint.collideConnected = def.collideConnected;
     joint.hasLetGoOverride = def.letGoSeparation.has_value();
     joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
@@ -98,15 +99,15 @@ BodyId World::jointBodyB(JointId id) const {
     return impl_->bodyId(impl_->joints[impl_->jointIndex("World::jointBodyB", id)].bodyB());
 }
 Vec2 World::jointAnchorA(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointAnchorA", id)];
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointAnchorA", id)];
     return transformPoint(impl_->bodies[j.bodyA()].xf, j.localAnchorA);
 }
 Vec2 World::jointAnchorB(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointAnchorB", id)];
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointAnchorB", id)];
     return transformPoint(impl_->bodies[j.bodyB()].xf, j.localAnchorB);
 }
 float World::jointSeparation(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointSeparation", id)];
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointSeparation", id)];
     Vec2 pA = transformPoint(impl_->bodies[j.bodyA()].xf, j.localAnchorA);
     Vec2 pB = transformPoint(impl_->bodies[j.bodyB()].xf, j.localAnchorB);
     return distance(pA, pB);
@@ -116,7 +117,7 @@ bool World::isJointLetGo(JointId id) const {
 }
 
 void World::rearmJoint(JointId id) {
-    RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::rearmJoint", id)];
+    Joint& j = impl_->joints[impl_->jointIndex("World::rearmJoint", id)];
     if (!j.letGo) return;
     j.letGo = false;  // letGoFor cleared its impulses
     wakeUp(impl_->bodies[j.bodyA()]);
@@ -124,13 +125,13 @@ void World::rearmJoint(JointId id) {
 }
 
 float World::jointLetGoSeparation(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointLetGoSeparation", id)];
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointLetGoSeparation", id)];
     return j.letGoSeparation(impl_->jointLetGoSeparation);
 }
 
 void World::setJointLetGoSeparation(JointId id, std::optional<float> separation) {
     const char* call = "World::setJointLetGoSeparation";
-    RevoluteJoint& j = impl_->joints[impl_->jointIndex(call, id)];
+    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     if (separation) requireNonNegative(call, "separation", *separation);
     j.hasLetGoOverride = separation.has_value();
     j.letGoOverride = separation.value_or(0.0f);
@@ -140,54 +141,59 @@ std::vector<JointLetGoEvent> World::jointLetGoEvents() const {
     return impl_->letGoEvents;
 }
 Vec2 World::jointReactionForce(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointReactionForce", id)];
-    return j.impulseInvDt * j.impulse;
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointReactionForce", id)];
+    return j.impulseInvDt * std::get<RevoluteJoint>(j.data).impulse;
 }
 
 float World::jointAngle(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointAngle", id)];
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointAngle", id)];
     return impl_->bodies[j.bodyB()].angle - impl_->bodies[j.bodyA()].angle - j.referenceAngle;
 }
 float World::jointSpeed(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointSpeed", id)];
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointSpeed", id)];
     return impl_->bodies[j.bodyB()].angularVelocity - impl_->bodies[j.bodyA()].angularVelocity;
 }
 float World::jointReactionTorque(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointReactionTorque", id)];
-    return j.impulseInvDt * (j.motorImpulse + j.lowerImpulse - j.upperImpulse);
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointReactionTorque", id)];
+    const RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+    return j.impulseInvDt * (r.motorImpulse + r.lowerImpulse - r.upperImpulse);
 }
 float World::jointMotorTorque(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointMotorTorque", id)];
-    return j.impulseInvDt * j.motorImpulse;
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointMotorTorque", id)];
+    return j.impulseInvDt * std::get<RevoluteJoint>(j.data).motorImpulse;
 }
 
 JointLimit World::jointLimit(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointLimit", id)];
-    return {j.enableLimit, j.lowerAngle, j.upperAngle};
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointLimit", id)];
+    const RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+    return {r.enableLimit, r.lowerAngle, r.upperAngle};
 }
 void World::setJointLimit(JointId id, const JointLimit& limit) {
     const char* call = "World::setJointLimit";
-    RevoluteJoint& j = impl_->joints[impl_->jointIndex(call, id)];
+    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     checkLimit(call, "limit", limit);
-    j.enableLimit = limit.enabled;
-    j.lowerAngle = limit.lower;
-    j.upperAngle = limit.upper;
-    j.lowerImpulse = 0.0f;
-    j.upperImpulse = 0.0f;
+    RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+    r.enableLimit = limit.enabled;
+    r.lowerAngle = limit.lower;
+    r.upperAngle = limit.upper;
+    r.lowerImpulse = 0.0f;
+    r.upperImpulse = 0.0f;
     wakeUp(impl_->bodies[j.bodyA()]);
     wakeUp(impl_->bodies[j.bodyB()]);
 }
 JointMotor World::jointMotor(JointId id) const {
-    const RevoluteJoint& j = impl_->joints[impl_->jointIndex("World::jointMotor", id)];
-    return {j.enableMotor, j.motorSpeed, j.maxMotorTorque};
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointMotor", id)];
+    const RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+    return {r.enableMotor, r.motorSpeed, r.maxMotorTorque};
 }
 void World::setJointMotor(JointId id, const JointMotor& motor) {
     const char* call = "World::setJointMotor";
-    RevoluteJoint& j = impl_->joints[impl_->jointIndex(call, id)];
+    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     checkMotor(call, "motor", motor);
-    j.enableMotor = motor.enabled;
-    j.motorSpeed = motor.speed;
-    j.maxMotorTorque = motor.maxTorque;
+    RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+    r.enableMotor = motor.enabled;
+    r.motorSpeed = motor.speed;
+    r.maxMotorTorque = motor.maxTorque;
     wakeUp(impl_->bodies[j.bodyA()]);
     wakeUp(impl_->bodies[j.bodyB()]);
 }
@@ -198,7 +204,7 @@ PositionSolver World::jointPositionSolver(JointId id) const {
 
 void World::setJointPositionSolver(JointId id, PositionSolver solver) {
     const char* call = "World::setJointPositionSolver";
-    RevoluteJoint& j = impl_->joints[impl_->jointIndex(call, id)];
+    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     checkSolver(call, "solver", solver);
     j.solver = solver;
     wakeUp(impl_->bodies[j.bodyA()]);
@@ -211,7 +217,7 @@ float World::jointBiasFactor(JointId id) const {
 
 void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     const char* call = "World::setJointBiasFactor";
-    RevoluteJoint& j = impl_->joints[impl_->jointIndex(call, id)];
+    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     if (biasFactor) checkBiasFactor(call, "biasFactor", *biasFactor);
     j.hasBiasOverride = biasFactor.has_value();
     j.biasOverride = biasFactor.value_or(0.0f);
@@ -230,7 +236,7 @@ void World::setJointUserData(JointId id, std::uint64_t userData) {
 std::vector<JointId> World::jointIds() const {
     std::vector<JointId> ids;
     impl_->joints.forEach(
-        [&](std::int32_t index, const RevoluteJoint&) { ids.push_back(impl_->jointId(index)); });
+        [&](std::int32_t index, const Joint&) { ids.push_back(impl_->jointId(index)); });
     return ids;
 }
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "joints/revolute_joint.h"
+#include "joints/joint.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -200,15 +200,16 @@ TEST(JointLetGo, EventsAreTheSameOnAnyNumberOfWorkers) {
 // A stored impulse that is finite but stands for an infinite force (1e37 N s over a 1/60 s step)
 // must not reach jointReactionForce: the step lets such a joint go as non-finite.
 TEST(JointLetGo, AReactionThatWouldOverflowIsNotFinite) {
-    RevoluteJoint joint;
+    Joint joint;
+    RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
     joint.impulseInvDt = 60.0f;
-    joint.impulse = {1e37f, 0.0f};
+    revolute.impulse = {1e37f, 0.0f};
     EXPECT_FALSE(joint.hasFiniteReactions());
-    joint.impulse = {1e30f, 0.0f};
+    revolute.impulse = {1e30f, 0.0f};
     EXPECT_TRUE(joint.hasFiniteReactions());
-    joint.motorImpulse = 3e36f;
-    joint.lowerImpulse = 3e36f;  // each times 60 is finite, their sum is not
-    EXPECT_TRUE(std::isfinite(60.0f * joint.motorImpulse));
+    revolute.motorImpulse = 3e36f;
+    revolute.lowerImpulse = 3e36f;  // each times 60 is finite, their sum is not
+    EXPECT_TRUE(std::isfinite(60.0f * revolute.motorImpulse));
     EXPECT_FALSE(joint.hasFiniteReactions());
     joint.letGoFor(JointLetGoReason::NonFinite, 1.0f);
     EXPECT_TRUE(joint.hasFiniteReactions());

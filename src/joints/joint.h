@@ -1,0 +1,63 @@
+// Joint storage: what persists between steps for every joint, whatever its type. The fields all
+// types share are here; each type's own settings and accumulated impulses are its alternative of
+// `data` (revolute_joint.h, ...), in the order of joints/joint_types.h. The per-step solver
+// state lives in each type's constraint, built afresh for each island each step.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <variant>
+
+#include "joints/revolute_joint.h"
+#include "model/body_edge.h"
+#include "pivot/joint.h"
+#include "pivot/math.h"
+
+namespace pivot {
+
+using JointData = std::variant<RevoluteJoint>;
+
+struct Joint {
+    BodyEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
+    Vec2 localAnchorA;  // origin-relative, in body A's frame
+    Vec2 localAnchorB;
+    float referenceAngle = 0.0f;  // rad, angleB - angleA when the joint angle is zero
+    PositionSolver solver = PositionSolver::FullNGS;
+    bool hasBiasOverride = false;
+    float biasOverride = 0.0f;
+    bool collideConnected = false;
+    std::uint64_t userData = 0;
+    JointData data;
+    float impulseInvDt = 0.0f;  // 1/dt of the last step solved: impulse * impulseInvDt is a force
+    // Let go (World::isJointLetGo): no longer solved until rearmed. The reason and separation
+    // are those of the step that let it go.
+    bool letGo = false;
+    JointLetGoReason letGoReason = JointLetGoReason::Separation;
+    float letGoAt = 0.0f;           // m, the separation then
+    bool hasLetGoOverride = false;  // letGoOverride replaces WorldDef::jointLetGoSeparation
+    float letGoOverride = 0.0f;     // m; 0: never
+
+    std::int32_t bodyA() const { return edges[0].body; }
+    std::int32_t bodyB() const { return edges[1].body; }
+    /// The position in joints/joint_types.h's list.
+    int typeIndex() const { return static_cast<int>(data.index()); }
+    float biasFactor() const { return hasBiasOverride ? biasOverride : defaultBiasFactor(solver); }
+    /// m, beyond which the joint is let go; 0: never.
+    float letGoSeparation(float worldSetting) const {
+        return hasLetGoOverride ? letGoOverride : worldSetting;
+    }
+    /// Whether the stored impulses, and the forces and torques they stand for (impulse / dt),
+    /// are all finite: what the reaction queries report must be.
+    bool hasFiniteReactions() const {
+        return std::visit([&](const auto& d) { return d.hasFiniteReactions(impulseInvDt); }, data);
+    }
+    /// Lets the joint go: it keeps no impulse and is not solved until rearmed.
+    void letGoFor(JointLetGoReason reason, float separation) {
+        letGo = true;
+        letGoReason = reason;
+        letGoAt = separation;
+        std::visit([](auto& d) { d.clearImpulses(); }, data);
+    }
+};
+
+}  // namespace pivot
