@@ -114,9 +114,9 @@ struct RevoluteConstraint {
     /// worse than one that turns a little too far.
     template <bool withBias>
     void solveVelocity(SolverVelocity* velocities) {
+        const Vec2 bias = withBias ? point.bias : Vec2{};
         solveAngleVelocity(bodies, angle, velocities);
-        point.impulse +=
-            solvePointVelocity(bodies, point, velocities, withBias ? point.bias : Vec2{});
+        point.impulse += solvePointVelocity(bodies, point, velocities, bias);
     }
 
     void setBias(const SolverPose* poses, float k) {

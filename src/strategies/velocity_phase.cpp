@@ -2,6 +2,20 @@
 
 namespace pivot {
 
+namespace {
+// One velocity iteration over one group. A function of its own, rather than a lambda nested in
+// the loop over groups, gives the compiler the same tight loop for every group.
+template <typename S, typename C>
+void sweepGroup(const Team& team, const std::vector<Batch>& batches, C* constraints,
+                SolverVelocity* velocities) {
+    for (const Batch& batch : batches) {
+        const IndexRange range = team.share(batch);
+        for (int k = range.begin; k < range.end; ++k) S::solveVelocity(constraints[k], velocities);
+        team.sync();
+    }
+}
+}  // namespace
+
 void prepareVelocityBias(const Team& team, JointGroups& groups, const SolverPose* poses,
                          float invDt) {
     groups.forEachGroup([&](auto strategy, auto& group, int) {
@@ -23,10 +37,7 @@ void warmStartJoints(const Team& team, JointGroups& groups, const IslandSchedule
 void solveVelocitySweep(const Team& team, JointGroups& groups, const IslandSchedule& schedule,
                         SolverVelocity* velocities) {
     groups.forEachGroup([&](auto strategy, auto& group, int g) {
-        using S = decltype(strategy);
-        forEachBatch(team, schedule.jointBatches[g], [&](IndexRange range) {
-            for (int k = range.begin; k < range.end; ++k) S::solveVelocity(group[k], velocities);
-        });
+        sweepGroup<decltype(strategy)>(team, schedule.jointBatches[g], group.data(), velocities);
     });
 }
 
