@@ -1,9 +1,10 @@
-// The revolute joint and the choice of algorithm that corrects its position error.
+// The joints, and the choice of algorithm that corrects each one's position error.
 //
-// A revolute joint pins a point of body A to a point of body B: C = (cB + rB) - (cA + rA) = 0,
-// where c is a body's centre of mass and r the anchor relative to it. The velocity solver keeps
-// dC/dt at zero; because it does so only to first order, C drifts, and each joint's
-// PositionSolver says how that drift is removed (see docs/position-correction.md).
+// A joint constrains two bodies: a revolute joint pins a point of body A to a point of body B,
+// C = (cB + rB) - (cA + rA) = 0, where c is a body's centre of mass and r the anchor relative to
+// it; a distance joint holds its two anchors a length apart, C = |pB - pA| - length. The velocity
+// solver keeps dC/dt at zero; because it does so only to first order, C drifts, and each
+// joint's PositionSolver says how that drift is removed (see docs/position-correction.md).
 #pragma once
 
 #include <cstdint>
@@ -14,6 +15,16 @@
 #include "pivot/solvers.h"
 
 namespace pivot {
+
+/// The kinds of joint. A JointId names a joint of any type; calls made for one type (such as
+/// World::jointLimit, for revolute joints) refuse a joint of another with pivot::Error.
+enum class JointType : std::uint8_t {
+    Revolute,
+    Distance,
+};
+
+/// The type's name: "revolute", "distance"; "invalid" for a value out of range.
+const char* jointTypeName(JointType type);
 
 /// Bounds on the joint angle (angleB - angleA - referenceAngle), rad, lower <= upper. The limit
 /// is corrected by the joint's PositionSolver like the pin; it allows kAngularSlop.
@@ -86,6 +97,50 @@ struct RevoluteJointDef {
         def.worldAnchor = anchor;
         return def;
     }
+};
+
+/// A spring on a joint's free coordinate, soft as a spring of `hertz` with `dampingRatio` on the
+/// joint's effective mass would be (so the frequency does not depend on the masses). A spring
+/// has no position correction: it is its own.
+struct JointSpring {
+    bool enabled = false;
+    float hertz = 0.0f;         ///< > 0 when enabled, at most kMaxMagnitude
+    float dampingRatio = 0.0f;  ///< >= 0; 1 is critical damping
+};
+
+/// Bounds on a distance joint's length, m, 0 <= min <= max.
+struct LengthLimit {
+    bool enabled = false;
+    float min = 0.0f;
+    float max = 0.0f;
+};
+
+/// Everything needed to create a distance joint: a rod, a rope or a spring between two anchors.
+///  - spring off, limit off: a rigid rod of `length`;
+///  - spring off, limit on: a rope, free while its length is within [min, max] (min == max: a
+///    rod of that length);
+///  - spring on: a spring towards `length`, and with the limit on, never shorter than min or
+///    longer than max.
+/// The rod and the limits are corrected by the joint's PositionSolver; the spring is soft.
+struct DistanceJointDef {
+    BodyId bodyA;
+    BodyId bodyB;
+    Vec2 localAnchorA;  ///< m, in body A's frame (origin-relative)
+    Vec2 localAnchorB;  ///< m, in body B's frame
+    /// m, the rest length, in [kLinearSlop, kMaxCoordinate]. Unset: the anchors' distance when
+    /// the joint is created.
+    std::optional<float> length;
+    LengthLimit limit;
+    JointSpring spring;
+    /// Unset: the world's default (WorldDef::defaultPositionSolver).
+    std::optional<PositionSolver> positionSolver;
+    /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
+    std::optional<float> biasFactor;
+    /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far its
+    /// length is outside what the joint allows (World::jointSeparation).
+    std::optional<float> letGoSeparation;
+    bool collideConnected = false;
+    std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
 };
 
 /// A mouse joint pulls one point of a body towards a target that the caller moves, like a

@@ -259,18 +259,23 @@ public:
 
     // --- joints -----------------------------------------------------------------------------
     JointId createJoint(const RevoluteJointDef& def);
+    JointId createJoint(const DistanceJointDef& def);
     void destroyJoint(JointId id);
     bool isValid(JointId id) const;
     int jointCount() const;
     /// Every joint, in creation-slot order.
     std::vector<JointId> jointIds() const;
 
+    JointType jointType(JointId id) const;
     BodyId jointBodyA(JointId id) const;
     BodyId jointBodyB(JointId id) const;
     Vec2 jointAnchorA(JointId id) const;  ///< m, the pin on body A in world coordinates
     Vec2 jointAnchorB(JointId id) const;  ///< m, the pin on body B in world coordinates
-    /// m, |anchorB - anchorA|: how far the joint has come apart.
+    /// m, how far the joint has come apart: for a revolute joint |anchorB - anchorA|, for a
+    /// distance joint how far its length is from its rest length (a rod) or outside its limit.
     float jointSeparation(JointId id) const;
+    /// m, |anchorB - anchorA|.
+    float jointLength(JointId id) const;
     /// Whether the engine has let go of the joint (JointLetGoReason says when it does). A
     /// let-go joint is not solved, so it cannot drag NaN or energy into everything it touches;
     /// it stays let go until rearmJoint.
@@ -289,25 +294,36 @@ public:
     /// The joints let go during the last step, in the order the step reached them (the same
     /// for every worker count). Cleared when the next step starts.
     std::vector<JointLetGoEvent> jointLetGoEvents() const;
-    /// rad, angleB - angleA - referenceAngle.
+    /// rad, angleB - angleA - referenceAngle (a distance joint's reference angle is 0).
     float jointAngle(JointId id) const;
     /// rad/s, angular velocity of B relative to A.
     float jointSpeed(JointId id) const;
     /// N, the force the joint applied to body B in the last step that solved it (a sleeping
     /// joint keeps reporting the force it held when it fell asleep).
     Vec2 jointReactionForce(JointId id) const;
-    /// N m, the torque about the pin the joint applied to body B in that step (motor plus
-    /// limits).
+    /// N m, the torque about the pin the joint applied to body B in that step (revolute: motor
+    /// plus limits; a distance joint applies none).
     float jointReactionTorque(JointId id) const;
-    /// N m, the motor's share of it.
-    float jointMotorTorque(JointId id) const;
 
+    // Revolute joints (the calls from here to setJointMotor refuse other types).
+    /// N m, the motor's share of the reaction torque.
+    float jointMotorTorque(JointId id) const;
     JointLimit jointLimit(JointId id) const;
     /// Changing the limit wakes the joint's bodies and restarts the limit's impulses.
     void setJointLimit(JointId id, const JointLimit& limit);
     JointMotor jointMotor(JointId id) const;
     /// Wakes the joint's bodies.
     void setJointMotor(JointId id, const JointMotor& motor);
+
+    // Distance joints (these calls refuse other types). Each setter wakes the joint's bodies;
+    // changing the limit restarts its impulses.
+    float distanceJointRestLength(JointId id) const;
+    /// m, in [kLinearSlop, kMaxCoordinate].
+    void setDistanceJointRestLength(JointId id, float length);
+    LengthLimit distanceJointLimit(JointId id) const;
+    void setDistanceJointLimit(JointId id, const LengthLimit& limit);
+    JointSpring distanceJointSpring(JointId id) const;
+    void setDistanceJointSpring(JointId id, const JointSpring& spring);
 
     PositionSolver jointPositionSolver(JointId id) const;
     /// Takes effect from the next step and wakes the joint's bodies. A bias factor left to its
@@ -316,7 +332,7 @@ public:
     float jointBiasFactor(JointId id) const;
     /// A value in [0, 1], or nullopt for the solver's default.
     void setJointBiasFactor(JointId id, std::optional<float> biasFactor);
-    /// The value of RevoluteJointDef::userData, or the last one set; pivot2d never reads it.
+    /// The value of the def's userData, or the last one set; pivot2d never reads it.
     std::uint64_t jointUserData(JointId id) const;
     void setJointUserData(JointId id, std::uint64_t userData);
 

@@ -1,6 +1,7 @@
 // Joint storage: what persists between steps for every joint, whatever its type. The fields all
 // types share are here; each type's own settings and accumulated impulses are its alternative of
-// `data` (revolute_joint.h, ...), in the order of joints/joint_types.h. The per-step solver
+// `data` (revolute_joint.h, distance_joint.h), in the order of joints/joint_types.h and of the
+// public JointType. The per-step solver
 // state lives in each type's constraint, built afresh for each island each step.
 #pragma once
 
@@ -8,6 +9,7 @@
 #include <cstdint>
 #include <variant>
 
+#include "joints/distance_joint.h"
 #include "joints/revolute_joint.h"
 #include "model/body_edge.h"
 #include "pivot/joint.h"
@@ -15,7 +17,7 @@
 
 namespace pivot {
 
-using JointData = std::variant<RevoluteJoint>;
+using JointData = std::variant<RevoluteJoint, DistanceJoint>;
 
 struct Joint {
     BodyEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
@@ -45,6 +47,16 @@ struct Joint {
     /// m, beyond which the joint is let go; 0: never.
     float letGoSeparation(float worldSetting) const {
         return hasLetGoOverride ? letGoOverride : worldSetting;
+    }
+    JointType type() const { return static_cast<JointType>(data.index()); }
+    /// m, |anchorB - anchorA| with the bodies at these transforms.
+    float anchorDistance(const Transform& xfA, const Transform& xfB) const {
+        return distance(transformPoint(xfA, localAnchorA), transformPoint(xfB, localAnchorB));
+    }
+    /// m, how far the joint is from what it allows with the bodies at these transforms.
+    float separation(const Transform& xfA, const Transform& xfB) const {
+        const float d = anchorDistance(xfA, xfB);
+        return std::visit([&](const auto& data) { return data.separation(d); }, data);
     }
     /// Whether the stored impulses, and the forces and torques they stand for (impulse / dt),
     /// are all finite: what the reaction queries report must be.

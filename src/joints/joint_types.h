@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "joints/distance_constraint.h"
 #include "joints/joint.h"
 #include "joints/revolute_constraint.h"
 #include "pivot/solvers.h"
@@ -33,7 +34,7 @@ struct JointTypeList {
     }
 };
 
-using JointConstraintTypes = JointTypeList<RevoluteConstraint>;
+using JointConstraintTypes = JointTypeList<RevoluteConstraint, DistanceConstraint>;
 
 constexpr int kJointTypeCount = JointConstraintTypes::kCount;
 constexpr int kJointGroupCount = kPositionSolverCount * kJointTypeCount;
@@ -59,5 +60,9 @@ struct StorageOrderMatches<JointTypeList<Constraints...>, std::variant<Storages.
 };
 static_assert(StorageOrderMatches<JointConstraintTypes, JointData>::value,
               "JointData and JointConstraintTypes list the joint types in the same order");
+static_assert(
+    std::is_same_v<std::variant_alternative_t<static_cast<int>(JointType::Distance), JointData>,
+                   DistanceJoint>,
+    "JointData lists the joint types in the order of the public JointType");
 
 }  // namespace pivot

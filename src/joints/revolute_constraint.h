@@ -38,9 +38,9 @@ struct RevoluteConstraint {
     std::int32_t jointIndex = 0;  // where the impulses are stored back
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
-    /// stored (unscaled: see startImpulses). Returns the anchors' separation, B minus A.
-    Vec2 prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
-                 BodyPair slots, const SolverPose* poses, const StepContext& step) {
+    /// stored (unscaled: see startImpulses). Returns the anchors' separation squared, m^2.
+    float prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
+                  BodyPair slots, const SolverPose* poses, const StepContext& step) {
         const RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();
@@ -64,7 +64,7 @@ struct RevoluteConstraint {
         angle.upperImpulse = revolute.upperImpulse;
         const Vec2 separation = preparePoint(bodies, point, poses);
         prepareAngle(bodies, angle, poses, step.invDt);
-        return separation;
+        return lengthSquared(separation);
     }
 
     /// Warm starting: impulses scale with the step, so that they keep the force they stand

@@ -31,6 +31,8 @@ struct RevoluteJoint {
                std::isfinite(invDt * motorImpulse) && std::isfinite(invDt * lowerImpulse) &&
                std::isfinite(invDt * upperImpulse);
     }
+    /// m: a pin's separation is how far apart its anchors are.
+    float separation(float anchorDistance) const { return anchorDistance; }
     void clearImpulses() {
         impulse = Vec2{};
         motorImpulse = lowerImpulse = upperImpulse = 0.0f;

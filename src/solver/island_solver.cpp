@@ -43,14 +43,13 @@ void integrateVelocities(const Team& team, const IslandView& island, IslandWorks
     }
 }
 
-// Whether a step that reaches `joint` with its anchors `separation` apart lets it go: beyond
-// its let-go separation, when it has one. (Its stored reactions are finite: storeJointImpulses
-// lets go of a joint whose are not.) A let-go joint acts on nothing for the rest of this step
-// (makeInert) and is in no island after it.
-template <typename Joint>
-bool beyondLetGoSeparation(const Joint& joint, Vec2 separation, const StepContext& step) {
+// Whether a step that reaches `joint` at a separation of sqrt(separationSquared) lets it go:
+// beyond its let-go separation, when it has one. (Its stored reactions are finite:
+// storeJointImpulses lets go of a joint whose are not.) A let-go joint acts on nothing for the
+// rest of this step (makeInert) and is in no island after it.
+bool beyondLetGoSeparation(const Joint& joint, float separationSquared, const StepContext& step) {
     const float limit = joint.letGoSeparation(step.jointLetGoSeparation);
-    return limit > 0.0f && !(lengthSquared(separation) <= limit * limit);
+    return limit > 0.0f && !(separationSquared <= limit * limit);
 }
 
 // Build each joint's solver constraint in its group (no velocity is touched: the warm start
@@ -66,11 +65,11 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
             auto& joint = joints[jointIndex];
             auto& c = group[k];
             c = {};
-            const Vec2 separation =
+            const float separationSquared =
                 c.prepare(joint, jointIndex, bodies[joint.bodyA()], bodies[joint.bodyB()],
                           schedule.jointPairs[at], work.positions.data(), step);
-            if (beyondLetGoSeparation(joint, separation, step)) {
-                joint.letGoFor(JointLetGoReason::Separation, length(separation));
+            if (beyondLetGoSeparation(joint, separationSquared, step)) {
+                joint.letGoFor(JointLetGoReason::Separation, std::sqrt(separationSquared));
                 ++report.letGoJoints;
                 c.makeInert();
             } else {
@@ -96,9 +95,9 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
             c.storeImpulses(joint, invDt);
             if (!joint.hasFiniteReactions()) {
                 // The bodies are still at their start-of-step poses (written back later).
-                const Vec2 pA = transformPoint(bodies[joint.bodyA()].xf, joint.localAnchorA);
-                const Vec2 pB = transformPoint(bodies[joint.bodyB()].xf, joint.localAnchorB);
-                joint.letGoFor(JointLetGoReason::NonFinite, distance(pA, pB));
+                const float separation =
+                    joint.separation(bodies[joint.bodyA()].xf, bodies[joint.bodyB()].xf);
+                joint.letGoFor(JointLetGoReason::NonFinite, separation);
                 ++report.letGoJoints;
             }
         }

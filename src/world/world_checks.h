@@ -65,6 +65,33 @@ inline void requireMotionAfterMassChange(const char* call, const Body& after, co
     }
 }
 
+inline void checkRestLength(const char* call, const char* field, float length) {
+    requireFinite(call, field, length);
+    if (!(length >= kLinearSlop && length <= kMaxCoordinate)) {
+        fail(call, std::string(field) + " must be in [kLinearSlop, kMaxCoordinate] (" +
+                       formatFloat(kLinearSlop) + " to " + formatFloat(kMaxCoordinate) +
+                       " m) (got " + formatFloat(length) + ")");
+    }
+}
+
+inline void checkLengthLimit(const char* call, const std::string& field, const LengthLimit& limit) {
+    requireInRange(call, (field + ".min").c_str(), limit.min, 0.0f, kMaxCoordinate);
+    requireInRange(call, (field + ".max").c_str(), limit.max, 0.0f, kMaxCoordinate);
+    if (limit.min > limit.max) {
+        fail(call, field + ".min must be <= " + field + ".max (got " + formatFloat(limit.min) +
+                       " > " + formatFloat(limit.max) + ")");
+    }
+}
+
+inline void checkSpring(const char* call, const std::string& field, const JointSpring& spring) {
+    requireNonNegative(call, (field + ".hertz").c_str(), spring.hertz);
+    requireNonNegative(call, (field + ".dampingRatio").c_str(), spring.dampingRatio);
+    if (spring.enabled && spring.hertz <= 0.0f) {
+        fail(call, field + ".hertz must be > 0 when the spring is enabled (got " +
+                       formatFloat(spring.hertz) + ")");
+    }
+}
+
 inline void checkBiasFactor(const char* call, const char* field, float bias) {
     requireInRange(call, field, bias, 0.0f, 1.0f);
 }

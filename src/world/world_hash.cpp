@@ -18,6 +18,22 @@ void hashJointData(StateHasher& h, const RevoluteJoint& j) {
     h.add(j.lowerImpulse);
     h.add(j.upperImpulse);
 }
+void hashJointData(StateHasher& h, const DistanceJoint& j) {
+    // The type first (a revolute joint's data goes in without it, so that worlds of revolute
+    // joints keep the hashes recorded before there were other types).
+    h.add(static_cast<std::int32_t>(JointType::Distance));
+    h.add(j.length);
+    h.add(j.enableLimit);
+    h.add(j.minLength);
+    h.add(j.maxLength);
+    h.add(j.enableSpring);
+    h.add(j.hertz);
+    h.add(j.dampingRatio);
+    h.add(j.impulse);
+    h.add(j.lowerImpulse);
+    h.add(j.upperImpulse);
+    h.add(j.axis);
+}
 }  // namespace
 
 // Everything a public call can change goes in, so that "the hash is unchanged" means "the world

@@ -72,6 +72,16 @@ struct World::Impl {
         return {index, mouseJoints.generation(index), id};
     }
 
+    /// A joint's slot index after checking that it is of `type`, or pivot::Error naming both
+    /// types.
+    std::int32_t jointIndexOfType(const char* call, JointId id, JointType type) const;
+    template <typename T>
+    T& jointData(const char* call, JointId id, JointType type) {
+        return std::get<T>(joints[jointIndexOfType(call, id, type)].data);
+    }
+
+    /// Stores a checked joint, links it to its bodies and wakes them.
+    JointId addJoint(const Joint& joint);
     void removeJoint(std::int32_t jointIndex);
     void removeShape(std::int32_t shapeIndex);
     void removeMouseJoint(std::int32_t mouseIndex);

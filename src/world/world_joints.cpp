@@ -4,6 +4,48 @@
 
 namespace pivot {
 
+namespace {
+void setLimit(DistanceJoint& joint, const LengthLimit& limit) {
+    joint.enableLimit = limit.enabled;
+    joint.minLength = limit.min;
+    joint.maxLength = limit.max;
+}
+void setSpring(DistanceJoint& joint, const JointSpring& spring) {
+    joint.enableSpring = spring.enabled;
+    joint.hertz = spring.hertz;
+    joint.dampingRatio = spring.dampingRatio;
+}
+}  // namespace
+
+const char* jointTypeName(JointType type) {
+    switch (type) {
+        case JointType::Revolute: return "revolute";
+        case JointType::Distance: return "distance";
+    }
+    return "invalid";
+}
+
+std::int32_t World::Impl::jointIndexOfType(const char* call, JointId id, JointType type) const {
+    const std::int32_t index = jointIndex(call, id);
+    const JointType actual = joints[index].type();
+    if (actual != type) {
+        fail(call, "joint " + std::to_string(index) + " is a " + jointTypeName(actual) +
+                       " joint; this call is for " + jointTypeName(type) + " joints");
+    }
+    return index;
+}
+
+JointId World::Impl::addJoint(const Joint& joint) {
+    const std::int32_t a = joint.bodyA(), b = joint.bodyB();
+    const std::int32_t index = joints.insert(joint);
+    linkEdges(joints, bodies, &Body::jointList, index);
+    // A joint that forbids its bodies to collide ends any contact between them.
+    if (!joint.collideConnected) contactManager.refilterBodyPair(a, b);
+    wakeUp(bodies[a]);
+    wakeUp(bodies[b]);
+    return jointId(index);
+}
+
 void World::Impl::removeJoint(std::int32_t index) {
     const Joint& joint = joints[index];
     std::int32_t a = joint.bodyA(), b = joint.bodyB();
@@ -70,13 +112,49 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     joint.hasLetGoOverride = def.letGoSeparation.has_value();
     joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
     joint.userData = def.userData;
-    std::int32_t index = w.joints.insert(joint);
-    linkEdges(w.joints, w.bodies, &Body::jointList, index);
-    // A joint that forbids its bodies to collide ends any contact between them.
-    if (!def.collideConnected) w.contactManager.refilterBodyPair(a, b);
-    wakeUp(w.bodies[a]);
-    wakeUp(w.bodies[b]);
-    return w.jointId(index);
+    return w.addJoint(joint);
+}
+
+JointId World::createJoint(const DistanceJointDef& def) {
+    const char* call = "World::createJoint";
+    Impl& w = *impl_;
+    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
+    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
+    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
+    requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
+    PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
+    checkSolver(call, "def.positionSolver", solver);
+    if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
+    if (def.letGoSeparation) {
+        requireNonNegative(call, "def.letGoSeparation", *def.letGoSeparation);
+    }
+    const Body& bodyA = w.bodies[a];
+    const Body& bodyB = w.bodies[b];
+    const float anchorDistance = distance(transformPoint(bodyA.xf, def.localAnchorA),
+                                          transformPoint(bodyB.xf, def.localAnchorB));
+    const float length = def.length.value_or(anchorDistance);
+    checkRestLength(call, def.length ? "def.length" : "def.length (the anchors' distance)", length);
+    checkLengthLimit(call, "def.limit", def.limit);
+    checkSpring(call, "def.spring", def.spring);
+
+    Joint joint;
+    DistanceJoint& distanceJoint = joint.data.emplace<DistanceJoint>();
+    joint.edges[0].body = a;
+    joint.edges[1].body = b;
+    joint.localAnchorA = def.localAnchorA;
+    joint.localAnchorB = def.localAnchorB;
+    joint.solver = solver;
+    joint.hasBiasOverride = def.biasFactor.has_value();
+    joint.biasOverride = def.biasFactor.value_or(0.0f);
+    joint.collideConnected = def.collideConnected;
+    joint.hasLetGoOverride = def.letGoSeparation.has_value();
+    joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
+    joint.userData = def.userData;
+    distanceJoint.length = length;
+    setLimit(distanceJoint, def.limit);
+    setSpring(distanceJoint, def.spring);
+    return w.addJoint(joint);
 }
 
 void World::destroyJoint(JointId id) {
@@ -108,9 +186,14 @@ Vec2 World::jointAnchorB(JointId id) const {
 }
 float World::jointSeparation(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndex("World::jointSeparation", id)];
-    Vec2 pA = transformPoint(impl_->bodies[j.bodyA()].xf, j.localAnchorA);
-    Vec2 pB = transformPoint(impl_->bodies[j.bodyB()].xf, j.localAnchorB);
-    return distance(pA, pB);
+    return j.separation(impl_->bodies[j.bodyA()].xf, impl_->bodies[j.bodyB()].xf);
+}
+float World::jointLength(JointId id) const {
+    const Joint& j = impl_->joints[impl_->jointIndex("World::jointLength", id)];
+    return j.anchorDistance(impl_->bodies[j.bodyA()].xf, impl_->bodies[j.bodyB()].xf);
+}
+JointType World::jointType(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointType", id)].type();
 }
 bool World::isJointLetGo(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::isJointLetGo", id)].letGo;
@@ -142,6 +225,9 @@ std::vector<JointLetGoEvent> World::jointLetGoEvents() const {
 }
 Vec2 World::jointReactionForce(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndex("World::jointReactionForce", id)];
+    if (const auto* distance = std::get_if<DistanceJoint>(&j.data)) {
+        return (j.impulseInvDt * distance->axialImpulse()) * distance->axis;
+    }
     return j.impulseInvDt * std::get<RevoluteJoint>(j.data).impulse;
 }
 
@@ -155,22 +241,25 @@ float World::jointSpeed(JointId id) const {
 }
 float World::jointReactionTorque(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndex("World::jointReactionTorque", id)];
-    const RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
-    return j.impulseInvDt * (r.motorImpulse + r.lowerImpulse - r.upperImpulse);
+    const RevoluteJoint* r = std::get_if<RevoluteJoint>(&j.data);
+    return r ? j.impulseInvDt * (r->motorImpulse + r->lowerImpulse - r->upperImpulse) : 0.0f;
 }
 float World::jointMotorTorque(JointId id) const {
-    const Joint& j = impl_->joints[impl_->jointIndex("World::jointMotorTorque", id)];
+    const char* call = "World::jointMotorTorque";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Revolute);
+    const Joint& j = impl_->joints[index];
     return j.impulseInvDt * std::get<RevoluteJoint>(j.data).motorImpulse;
 }
 
 JointLimit World::jointLimit(JointId id) const {
-    const Joint& j = impl_->joints[impl_->jointIndex("World::jointLimit", id)];
+    const Joint& j =
+        impl_->joints[impl_->jointIndexOfType("World::jointLimit", id, JointType::Revolute)];
     const RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
     return {r.enableLimit, r.lowerAngle, r.upperAngle};
 }
 void World::setJointLimit(JointId id, const JointLimit& limit) {
     const char* call = "World::setJointLimit";
-    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
+    Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Revolute)];
     checkLimit(call, "limit", limit);
     RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
     r.enableLimit = limit.enabled;
@@ -182,18 +271,64 @@ void World::setJointLimit(JointId id, const JointLimit& limit) {
     wakeUp(impl_->bodies[j.bodyB()]);
 }
 JointMotor World::jointMotor(JointId id) const {
-    const Joint& j = impl_->joints[impl_->jointIndex("World::jointMotor", id)];
+    const Joint& j =
+        impl_->joints[impl_->jointIndexOfType("World::jointMotor", id, JointType::Revolute)];
     const RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
     return {r.enableMotor, r.motorSpeed, r.maxMotorTorque};
 }
 void World::setJointMotor(JointId id, const JointMotor& motor) {
     const char* call = "World::setJointMotor";
-    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
+    Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Revolute)];
     checkMotor(call, "motor", motor);
     RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
     r.enableMotor = motor.enabled;
     r.motorSpeed = motor.speed;
     r.maxMotorTorque = motor.maxTorque;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+float World::distanceJointRestLength(JointId id) const {
+    return impl_
+        ->jointData<DistanceJoint>("World::distanceJointRestLength", id, JointType::Distance)
+        .length;
+}
+void World::setDistanceJointRestLength(JointId id, float length) {
+    const char* call = "World::setDistanceJointRestLength";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
+    checkRestLength(call, "length", length);
+    Joint& j = impl_->joints[index];
+    std::get<DistanceJoint>(j.data).length = length;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+LengthLimit World::distanceJointLimit(JointId id) const {
+    const DistanceJoint& d =
+        impl_->jointData<DistanceJoint>("World::distanceJointLimit", id, JointType::Distance);
+    return {d.enableLimit, d.minLength, d.maxLength};
+}
+void World::setDistanceJointLimit(JointId id, const LengthLimit& limit) {
+    const char* call = "World::setDistanceJointLimit";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
+    checkLengthLimit(call, "limit", limit);
+    Joint& j = impl_->joints[index];
+    DistanceJoint& d = std::get<DistanceJoint>(j.data);
+    setLimit(d, limit);
+    d.lowerImpulse = d.upperImpulse = 0.0f;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+JointSpring World::distanceJointSpring(JointId id) const {
+    const DistanceJoint& d =
+        impl_->jointData<DistanceJoint>("World::distanceJointSpring", id, JointType::Distance);
+    return {d.enableSpring, d.hertz, d.dampingRatio};
+}
+void World::setDistanceJointSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setDistanceJointSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    setSpring(std::get<DistanceJoint>(j.data), spring);
     wakeUp(impl_->bodies[j.bodyA()]);
     wakeUp(impl_->bodies[j.bodyB()]);
 }
