@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <typeinfo>
 #include <utility>
 
@@ -462,6 +463,7 @@ private:
             {6, &Driver::createCircle},
             {8, &Driver::createPolygon},
             {7, &Driver::createJoint},
+            {3, &Driver::createDistanceJoint},
             {2, &Driver::createMouseJoint},
             {3, &Driver::destroyBody},
             {2, &Driver::destroyShape},
@@ -655,6 +657,98 @@ private:
             joints_.remember(id);
             if (world_->jointBodyA(id) != a.value || world_->jointBodyB(id) != b.value) {
                 failure("createJoint: wrong bodies");
+            }
+        });
+    }
+
+    Arg<LengthLimit> lengthLimit() {
+        LengthLimit l;
+        l.enabled = random_.chance(0.4f);
+        Arg<float> min = values_->nonNegativeUpTo(3.0f, kMaxCoordinate);
+        l.min = min.value;
+        l.max = min.value + random_.uniform(0.0f, 4.0f);
+        bool bad = min.bad || !(l.max <= kMaxCoordinate);
+        if (!bad && hostile_ > 0.0f && random_.chance(0.2f)) {
+            l.max = l.min - random_.uniform(0.1f, 1.0f) - 0.5f * l.min;  // below min
+            bad = true;
+        }
+        return {l, bad};
+    }
+
+    Arg<JointSpring> spring() {
+        JointSpring sp;
+        sp.enabled = random_.chance(0.3f);
+        Arg<float> hertz = values_->nonNegative(4.0f);
+        Arg<float> damping = values_->nonNegative(1.0f);
+        sp.hertz = hertz.value;
+        sp.dampingRatio = damping.value;
+        return {sp, hertz.bad || damping.bad || (sp.enabled && sp.hertz == 0.0f)};
+    }
+
+    /// Whether a rest length is one the API accepts.
+    static bool badRestLength(float length) {
+        return !(length >= kLinearSlop && length <= kMaxCoordinate);
+    }
+
+    bool isType(const Arg<JointId>& joint, JointType type) const {
+        return !joint.bad && world_->jointType(joint.value) == type;
+    }
+
+    void createDistanceJoint() {
+        if (world_->jointCount() >= kMaxJoints) {
+            destroyJoint();
+            return;
+        }
+        Arg<BodyId> a = pickBody();
+        Arg<BodyId> b = random_.chance(0.05f) ? a : pickBody();
+        DistanceJointDef def;
+        def.bodyA = a.value;
+        def.bodyB = b.value;
+        bool bad = a.bad || b.bad || a.value == b.value;
+        Arg<Vec2> localA = values_->coordinate(1.0f);
+        Arg<Vec2> localB = values_->coordinate(1.0f);
+        def.localAnchorA = localA.value;
+        def.localAnchorB = localB.value;
+        bad = bad || localA.bad || localB.bad;
+        if (random_.chance(0.5f)) {
+            Arg<float> length = values_->nonNegativeUpTo(5.0f, kMaxCoordinate);
+            def.length = length.value;
+            bad = bad || length.bad || badRestLength(length.value);
+        } else if (!bad) {
+            // The anchors' distance, as the world measures it.
+            const Vec2 pA = transformPoint(world_->bodyTransform(a.value), def.localAnchorA);
+            const Vec2 pB = transformPoint(world_->bodyTransform(b.value), def.localAnchorB);
+            bad = badRestLength(distance(pA, pB));
+        }
+        Arg<LengthLimit> l = lengthLimit();
+        Arg<JointSpring> sp = spring();
+        def.limit = l.value;
+        def.spring = sp.value;
+        bad = bad || l.bad || sp.bad;
+        if (random_.chance(0.7f)) {
+            Arg<PositionSolver> s = solver();
+            def.positionSolver = s.value;
+            bad = bad || s.bad;
+        }
+        if (random_.chance(0.4f)) {
+            Arg<float> bias = values_->fraction();
+            def.biasFactor = bias.value;
+            bad = bad || bias.bad;
+        }
+        if (random_.chance(0.2f)) {
+            Arg<float> letGo = values_->nonNegativeUpTo(20.0f, kMaxMagnitude);
+            def.letGoSeparation = letGo.value;
+            bad = bad || letGo.bad;
+        }
+        def.collideConnected = random_.chance(0.3f);
+        def.userData = random_.next();
+        trace("createDistanceJoint a=" + idText(a.value) + " b=" + idText(b.value));
+        attempt("World::createJoint", verdict(bad), [&] {
+            JointId id = journal_.createJoint(def);
+            noteTag(id);
+            joints_.remember(id);
+            if (world_->jointType(id) != JointType::Distance) {
+                failure("createJoint: not a distance joint");
             }
         });
     }
@@ -947,19 +1041,53 @@ private:
 
     void changeJoint() {
         Arg<JointId> joint = pickJoint();
-        switch (random_.below(7)) {
+        switch (random_.below(8)) {
+            case 7: {
+                const bool other = !joint.bad && !isType(joint, JointType::Distance);
+                switch (random_.below(3)) {
+                    case 0: {
+                        Arg<float> length = values_->nonNegativeUpTo(5.0f, kMaxCoordinate);
+                        const bool bad = length.bad || badRestLength(length.value);
+                        trace("setDistanceJointRestLength " + idText(joint.value));
+                        attempt("World::setDistanceJointRestLength",
+                                verdict(joint.bad || other || bad), [&] {
+                                    journal_.setDistanceJointRestLength(joint.value, length.value);
+                                });
+                        break;
+                    }
+                    case 1: {
+                        Arg<LengthLimit> l = lengthLimit();
+                        trace("setDistanceJointLimit " + idText(joint.value));
+                        attempt("World::setDistanceJointLimit",
+                                verdict(joint.bad || other || l.bad),
+                                [&] { journal_.setDistanceJointLimit(joint.value, l.value); });
+                        break;
+                    }
+                    default: {
+                        Arg<JointSpring> sp = spring();
+                        trace("setDistanceJointSpring " + idText(joint.value));
+                        attempt("World::setDistanceJointSpring",
+                                verdict(joint.bad || other || sp.bad),
+                                [&] { journal_.setDistanceJointSpring(joint.value, sp.value); });
+                        break;
+                    }
+                }
+                break;
+            }
             case 0: {
                 Arg<JointLimit> l = limit();
                 trace("setJointLimit " + idText(joint.value) + " " + text(l.value.lower) + ".." +
                       text(l.value.upper));
-                attempt("World::setJointLimit", verdict(joint.bad || l.bad),
+                const bool other = !joint.bad && !isType(joint, JointType::Revolute);
+                attempt("World::setJointLimit", verdict(joint.bad || other || l.bad),
                         [&] { journal_.setJointLimit(joint.value, l.value); });
                 break;
             }
             case 1: {
                 Arg<JointMotor> m = motor();
                 trace("setJointMotor " + idText(joint.value) + " " + text(m.value.speed));
-                attempt("World::setJointMotor", verdict(joint.bad || m.bad),
+                const bool other = !joint.bad && !isType(joint, JointType::Revolute);
+                attempt("World::setJointMotor", verdict(joint.bad || other || m.bad),
                         [&] { journal_.setJointMotor(joint.value, m.value); });
                 break;
             }
@@ -1158,9 +1286,8 @@ private:
             {"World::jointSpeed", [&] { w.jointSpeed(joint.value); }},
             {"World::jointReactionForce", [&] { w.jointReactionForce(joint.value); }},
             {"World::jointReactionTorque", [&] { w.jointReactionTorque(joint.value); }},
-            {"World::jointMotorTorque", [&] { w.jointMotorTorque(joint.value); }},
-            {"World::jointLimit", [&] { w.jointLimit(joint.value); }},
-            {"World::jointMotor", [&] { w.jointMotor(joint.value); }},
+            {"World::jointType", [&] { w.jointType(joint.value); }},
+            {"World::jointLength", [&] { w.jointLength(joint.value); }},
             {"World::jointPositionSolver", [&] { w.jointPositionSolver(joint.value); }},
             {"World::jointBiasFactor", [&] { w.jointBiasFactor(joint.value); }},
             {"World::isJointLetGo", [&] { w.isJointLetGo(joint.value); }},
@@ -1181,6 +1308,26 @@ private:
                 break;
             }
             case 1: {
+                if (random_.chance(0.3f)) {
+                    // Calls for one joint type, which refuse the others.
+                    const bool notRevolute = !joint.bad && !isType(joint, JointType::Revolute);
+                    const bool notDistance = !joint.bad && !isType(joint, JointType::Distance);
+                    std::vector<std::tuple<const char*, bool, std::function<void()>>> typed = {
+                        {"World::jointMotorTorque", notRevolute,
+                         [&] { w.jointMotorTorque(joint.value); }},
+                        {"World::jointLimit", notRevolute, [&] { w.jointLimit(joint.value); }},
+                        {"World::jointMotor", notRevolute, [&] { w.jointMotor(joint.value); }},
+                        {"World::distanceJointRestLength", notDistance,
+                         [&] { w.distanceJointRestLength(joint.value); }},
+                        {"World::distanceJointLimit", notDistance,
+                         [&] { w.distanceJointLimit(joint.value); }},
+                        {"World::distanceJointSpring", notDistance,
+                         [&] { w.distanceJointSpring(joint.value); }},
+                    };
+                    auto& q = typed[random_.below(static_cast<int>(typed.size()))];
+                    attempt(std::get<0>(q), verdict(joint.bad || std::get<1>(q)), std::get<2>(q));
+                    break;
+                }
                 auto& q = jointQueries[random_.below(static_cast<int>(jointQueries.size()))];
                 attempt(q.first, verdict(joint.bad), q.second);
                 break;

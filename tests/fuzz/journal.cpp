@@ -107,6 +107,20 @@ JointId Journal::createJoint(const RevoluteJointDef& def) {
     return id;
 }
 
+JointId Journal::createJoint(const DistanceJointDef& def) {
+    JointId id = world_->createJoint(def);
+    lines_.push_back("distance " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " +
+                     nameOf('b', def.bodyB) + " " + num(def.localAnchorA) + " " +
+                     num(def.localAnchorB) + " " + num(def.length.has_value()) + " " +
+                     num(def.length.value_or(0.0f)) + " " + num(def.limit.enabled) + " " +
+                     num(def.limit.min) + " " + num(def.limit.max) + " " + num(def.spring.enabled) +
+                     " " + num(def.spring.hertz) + " " + num(def.spring.dampingRatio) + " " +
+                     num(def.positionSolver ? int(*def.positionSolver) : -1) + " " +
+                     num(def.biasFactor.value_or(-1.0f)) + " " + num(def.collideConnected) + " " +
+                     num(def.letGoSeparation.value_or(-1.0f)));
+    return id;
+}
+
 MouseJointId Journal::createMouseJoint(const MouseJointDef& def) {
     MouseJointId id = world_->createMouseJoint(def);
     lines_.push_back("mouse " + nameNew('m', id) + " " + nameOf('b', def.body) + " " +
@@ -191,6 +205,20 @@ void Journal::setJointLimit(JointId id, const JointLimit& limit) {
     world_->setJointLimit(id, limit);
     lines_.push_back("limit " + nameOf('j', id) + " " + num(limit.enabled) + " " +
                      num(limit.lower) + " " + num(limit.upper));
+}
+void Journal::setDistanceJointRestLength(JointId id, float length) {
+    world_->setDistanceJointRestLength(id, length);
+    lines_.push_back("restLength " + nameOf('j', id) + " " + num(length));
+}
+void Journal::setDistanceJointLimit(JointId id, const LengthLimit& limit) {
+    world_->setDistanceJointLimit(id, limit);
+    lines_.push_back("lengthLimit " + nameOf('j', id) + " " + num(limit.enabled) + " " +
+                     num(limit.min) + " " + num(limit.max));
+}
+void Journal::setDistanceJointSpring(JointId id, const JointSpring& spring) {
+    world_->setDistanceJointSpring(id, spring);
+    lines_.push_back("spring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
+                     num(spring.hertz) + " " + num(spring.dampingRatio));
 }
 void Journal::setJointMotor(JointId id, const JointMotor& motor) {
     world_->setJointMotor(id, motor);
@@ -435,6 +463,30 @@ ReplayResult replay(std::istream& in) {
             const float letGo = f.optionalFloat(-1.0f);
             if (letGo >= 0.0f) def.letGoSeparation = letGo;
             call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "distance") {
+            std::string name = f.word();
+            DistanceJointDef def;
+            def.bodyA = body(f.word());
+            def.bodyB = body(f.word());
+            def.localAnchorA = f.v();
+            def.localAnchorB = f.v();
+            const bool hasLength = f.b();
+            const float length = f.f();
+            if (hasLength) def.length = length;
+            def.limit.enabled = f.b();
+            def.limit.min = f.f();
+            def.limit.max = f.f();
+            def.spring.enabled = f.b();
+            def.spring.hertz = f.f();
+            def.spring.dampingRatio = f.f();
+            int solver = f.i();
+            if (solver >= 0) def.positionSolver = static_cast<PositionSolver>(solver);
+            float bias = f.f();
+            if (bias >= 0.0f) def.biasFactor = bias;
+            def.collideConnected = f.b();
+            const float letGo = f.f();
+            if (letGo >= 0.0f) def.letGoSeparation = letGo;
+            call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
         } else if (command == "mouse") {
             std::string name = f.word();
             MouseJointDef def;
@@ -517,6 +569,24 @@ ReplayResult replay(std::istream& in) {
             l.lower = f.f();
             l.upper = f.f();
             call = [&w, j, l] { w.setJointLimit(j, l); };
+        } else if (command == "restLength") {
+            JointId j = joint(f.word());
+            const float length = f.f();
+            call = [&w, j, length] { w.setDistanceJointRestLength(j, length); };
+        } else if (command == "lengthLimit") {
+            JointId j = joint(f.word());
+            LengthLimit l;
+            l.enabled = f.b();
+            l.min = f.f();
+            l.max = f.f();
+            call = [&w, j, l] { w.setDistanceJointLimit(j, l); };
+        } else if (command == "spring") {
+            JointId j = joint(f.word());
+            JointSpring sp;
+            sp.enabled = f.b();
+            sp.hertz = f.f();
+            sp.dampingRatio = f.f();
+            call = [&w, j, sp] { w.setDistanceJointSpring(j, sp); };
         } else if (command == "motor") {
             JointId j = joint(f.word());
             JointMotor m;

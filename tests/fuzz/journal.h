@@ -32,6 +32,7 @@ public:
     ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     JointId createJoint(const RevoluteJointDef& def);
+    JointId createJoint(const DistanceJointDef& def);
     MouseJointId createMouseJoint(const MouseJointDef& def);
     void destroyBody(BodyId id);
     void destroyShape(ShapeId id);
@@ -51,6 +52,9 @@ public:
     void setShapeDensity(ShapeId id, float density);
     void setShapeFilter(ShapeId id, const Filter& filter);
     void setJointLimit(JointId id, const JointLimit& limit);
+    void setDistanceJointRestLength(JointId id, float length);
+    void setDistanceJointLimit(JointId id, const LengthLimit& limit);
+    void setDistanceJointSpring(JointId id, const JointSpring& spring);
     void setJointMotor(JointId id, const JointMotor& motor);
     void setJointPositionSolver(JointId id, PositionSolver solver);
     void setJointBiasFactor(JointId id, std::optional<float> bias);
