@@ -38,6 +38,8 @@ double limitViolation(const Scene& scene) {
     const World& world = *scene.world;
     double worst = 0.0;
     for (JointId id : scene.joints) {
+        // Angle limits: a distance joint's length limit is part of its separation instead.
+        if (world.jointType(id) != JointType::Revolute) continue;
         JointLimit limit = world.jointLimit(id);
         if (!limit.enabled) continue;
         double angle = world.jointAngle(id);

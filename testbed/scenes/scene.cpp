@@ -9,6 +9,15 @@ RevoluteJointDef SceneOptions::jointAt(BodyId a, BodyId b, Vec2 anchor) const {
     return def;
 }
 
+DistanceJointDef SceneOptions::distanceJoint(BodyId a, BodyId b) const {
+    DistanceJointDef def;
+    def.bodyA = a;
+    def.bodyB = b;
+    def.positionSolver = solver;
+    def.biasFactor = biasFactor;
+    return def;
+}
+
 const std::vector<SceneInfo>& allScenes() {
     static const std::vector<SceneInfo> scenes = {
         {"pendulum", "1 m ball on a massless 5 m stick, spun at 100 rad/s about the pivot",
@@ -34,6 +43,11 @@ const std::vector<SceneInfo>& allScenes() {
          buildRagdoll},
         {"ragdoll_motorized", "the ragdoll with a holding motor in every joint",
          buildMotorizedRagdoll},
+        {"distance_pendulum",
+         "the pendulum on a 5 m distance joint (a rod) instead of a pin, spun at 100 rad/s",
+         buildDistancePendulum},
+        {"rope", "30 planks tied end to end by 0.3-0.6 m ropes (distance limits), released level",
+         buildRope},
     };
     return scenes;
 }

@@ -26,6 +26,8 @@ struct SceneOptions {
 
     /// A revolute joint def at a world anchor carrying this scene's solver and bias.
     RevoluteJointDef jointAt(BodyId a, BodyId b, Vec2 anchor) const;
+    /// A distance joint def between the bodies' origins carrying this scene's solver and bias.
+    DistanceJointDef distanceJoint(BodyId a, BodyId b) const;
 };
 
 struct Scene {
@@ -75,6 +77,8 @@ void buildPendulumDrag(Scene& scene, const SceneOptions& options);
 void buildChainDrag(Scene& scene, const SceneOptions& options);
 void buildRagdoll(Scene& scene, const SceneOptions& options);
 void buildMotorizedRagdoll(Scene& scene, const SceneOptions& options);
+void buildDistancePendulum(Scene& scene, const SceneOptions& options);
+void buildRope(Scene& scene, const SceneOptions& options);
 /// 20 light links holding a ball 3,000 times heavier (not in the testbed table yet).
 void buildMassRatio(Scene& scene, const SceneOptions& options);
 
