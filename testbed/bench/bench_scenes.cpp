@@ -1,6 +1,6 @@
 #include "bench/bench_scenes.h"
 
-#include "reference/box2d_scenes.h"
+#include "box2d/box2d_scenes.h"
 #include "scenes/scene.h"
 
 namespace pivot::bench {
@@ -307,7 +307,7 @@ std::vector<BenchScene> benchScenes() {
         });
     };
     heavy.buildBox2d = [] {
-        auto scene = std::make_shared<reference::Box2dScene>(reference::box2dBridgeHeavy(false));
+        auto scene = std::make_shared<box2d::Box2dScene>(box2d::buildBridgeHeavy(false));
         scene->world->SetAllowSleeping(false);
         return Stepper([scene](int i) {
             scene->beforeStep(*scene, i);

@@ -1,6 +1,6 @@
-#include "reference/box2d_scenes.h"
+#include "box2d/box2d_scenes.h"
 
-namespace pivot::reference {
+namespace pivot::box2d {
 
 namespace {
 
@@ -46,7 +46,7 @@ b2RevoluteJoint* pin(Box2dScene& scene, b2Body* a, b2Body* b, b2Vec2 anchor) {
 
 }  // namespace
 
-Box2dScene box2dPendulum(float spin, bool continuous) {
+Box2dScene buildSpinningPendulum(float spin, bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);
     b2Body* anchor = staticBody(*scene.world);
@@ -64,7 +64,7 @@ Box2dScene box2dPendulum(float spin, bool continuous) {
     return scene;
 }
 
-Box2dScene box2dLimitedPendulum(bool continuous) {
+Box2dScene buildLimitedPendulum(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);
     b2Body* anchor = staticBody(*scene.world);
@@ -79,7 +79,7 @@ Box2dScene box2dLimitedPendulum(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dDoublePendulum(bool continuous) {
+Box2dScene buildDoublePendulum(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);
     b2Body* previous = staticBody(*scene.world);
@@ -95,7 +95,7 @@ Box2dScene box2dDoublePendulum(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dMotorWheel(bool continuous) {
+Box2dScene buildMotorWheel(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 center(0.0f, 5.0f);
     b2Body* anchor = staticBody(*scene.world);
@@ -114,7 +114,7 @@ Box2dScene box2dMotorWheel(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dBridge(bool continuous) {
+Box2dScene buildBridge(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     b2Body* groundBody = ground(*scene.world);
     b2PolygonShape plank;
@@ -138,8 +138,8 @@ Box2dScene box2dBridge(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dBridgeHeavy(bool continuous) {
-    Box2dScene scene = box2dBridge(continuous);
+Box2dScene buildBridgeHeavy(bool continuous) {
+    Box2dScene scene = buildBridge(continuous);
     scene.beforeStep = [](Box2dScene& s, int step) {
         if (step != 120) return;  // 2 s at 60 Hz
         float bridgeMass = 0.0f;
@@ -160,7 +160,7 @@ Box2dScene box2dBridgeHeavy(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dChain(bool continuous) {
+Box2dScene buildChain(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     b2Body* previous = ground(*scene.world);
     b2PolygonShape box;
@@ -183,7 +183,7 @@ Box2dScene box2dChain(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dMassRatio(bool continuous) {
+Box2dScene buildMassRatio(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     b2Body* previous = staticBody(*scene.world);
     b2PolygonShape box;
@@ -206,4 +206,4 @@ Box2dScene box2dMassRatio(bool continuous) {
     return scene;
 }
 
-}  // namespace pivot::reference
+}  // namespace pivot::box2d
