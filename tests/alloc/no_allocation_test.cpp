@@ -8,6 +8,7 @@
 #include <new>
 
 #include "scenes/metrics.h"
+#include "scenes/parts.h"
 #include "scenes/scene.h"
 
 namespace {
@@ -79,19 +80,13 @@ TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
         WorldDef def;
         def.workerCount = workers;
         World world(def);
-        ShapeDef ground;
-        ground.density = 0.0f;
-        world.createShape(world.createBody(BodyDef{}), ground,
-                          Polygon::box(50.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
-        ShapeDef box;
-        for (int row = 0; row < 40; ++row) {
-            for (int i = 0; i < 40 - row; ++i) {
-                BodyDef body;
-                body.type = BodyType::Dynamic;
-                body.position = {-0.55f * float(39 - row) + 1.1f * float(i), 0.5f + float(row)};
-                world.createShape(world.createBody(body), box, Polygon::box(0.5f, 0.5f));
-            }
-        }
+        addShelf(world, -50.0f, 50.0f, 0.0f);
+        PyramidSpec pyramid;  // as the coloured-island reference test's
+        pyramid.rows = 40;
+        pyramid.pitchX = 1.1f;
+        pyramid.pitchY = 1.0f;
+        pyramid.floorGap = 0.0f;
+        addPyramid(world, pyramid);
         ShapeDef circle;
         circle.filter.categoryBits = 0x0002;
         circle.filter.maskBits = 0x0001;
