@@ -1,5 +1,7 @@
 #include "box2d/box2d_scenes.h"
 
+#include "box2d/parts.h"
+
 namespace pivot::box2d {
 
 namespace {
@@ -162,24 +164,9 @@ Box2dScene buildBridgeHeavy(bool continuous) {
 
 Box2dScene buildChain(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
-    b2Body* previous = ground(*scene.world);
-    b2PolygonShape box;
-    box.SetAsBox(0.6f, 0.125f);
-    b2FixtureDef fixture;
-    fixture.shape = &box;
-    fixture.density = 20.0f;
-    fixture.friction = 0.2f;
-    const float y = 25.0f;
-    for (int i = 0; i < 30; ++i) {
-        b2BodyDef def;
-        def.type = b2_dynamicBody;
-        def.position.Set(0.5f + static_cast<float>(i), y);
-        b2Body* link = scene.world->CreateBody(&def);
-        link->CreateFixture(&fixture);
-        pin(scene, previous, link, b2Vec2(static_cast<float>(i), y));
-        scene.bodies.push_back(link);
-        previous = link;
-    }
+    Chain chain = addChain(*scene.world, ground(*scene.world), 0.0f, 25.0f);
+    scene.bodies = std::move(chain.links);
+    scene.joints = std::move(chain.joints);
     return scene;
 }
 

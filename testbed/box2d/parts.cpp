@@ -61,31 +61,38 @@ JointGrid addJointGrid(b2World& world, const scenes::JointGridSpec& spec) {
     return grid;
 }
 
-void addChains(b2World& world, int count) {
-    addShelf(world, -10.0f, static_cast<float>(count) * scenes::kChainPitch + 10.0f, 0.0f);
+Chain addChain(b2World& world, b2Body* root, float x0, float y) {
     b2PolygonShape box;
     box.SetAsBox(0.6f, 0.125f);
     b2FixtureDef fixture;
     fixture.shape = &box;
     fixture.density = 20.0f;
     fixture.friction = 0.2f;
+    Chain chain;
+    b2Body* previous = root;
+    scenes::layChain(x0, y, [&](Vec2 centre, Vec2 anchor) {
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(centre.x, centre.y);
+        b2Body* link = world.CreateBody(&def);
+        link->CreateFixture(&fixture);
+        b2RevoluteJointDef joint;
+        joint.Initialize(previous, link, b2Vec2(anchor.x, anchor.y));
+        chain.joints.push_back(world.CreateJoint(&joint));
+        chain.links.push_back(link);
+        previous = link;
+    });
+    return chain;
+}
+
+void addChains(b2World& world, int count) {
+    addShelf(world, -10.0f, static_cast<float>(count) * scenes::kChainPitch + 10.0f, 0.0f);
     const float y = 25.0f;
     for (int c = 0; c < count; ++c) {
         const float x0 = static_cast<float>(c) * scenes::kChainPitch;
         b2BodyDef rootDef;
         rootDef.position.Set(x0, y);
-        b2Body* previous = world.CreateBody(&rootDef);
-        for (int i = 0; i < 30; ++i) {
-            b2BodyDef def;
-            def.type = b2_dynamicBody;
-            def.position.Set(x0 + 0.5f + static_cast<float>(i), y);
-            b2Body* body = world.CreateBody(&def);
-            body->CreateFixture(&fixture);
-            b2RevoluteJointDef joint;
-            joint.Initialize(previous, body, b2Vec2(x0 + static_cast<float>(i), y));
-            world.CreateJoint(&joint);
-            previous = body;
-        }
+        addChain(world, world.CreateBody(&rootDef), x0, y);
     }
 }
 

@@ -24,6 +24,14 @@ struct JointGrid {
 /// As scenes::addJointGrid.
 JointGrid addJointGrid(b2World& world, const scenes::JointGridSpec& spec);
 
+struct Chain {
+    std::vector<b2Body*> links;
+    std::vector<b2Joint*> joints;
+};
+
+/// As scenes::addChain.
+Chain addChain(b2World& world, b2Body* root, float x0, float y);
+
 /// As scenes::addChains.
 void addChains(b2World& world, int count);
 

@@ -56,25 +56,12 @@ JointGrid addJointGrid(World& world, const JointGridSpec& spec) {
 
 void addChains(World& world, int count) {
     addShelf(world, -10.0f, static_cast<float>(count) * kChainPitch + 10.0f, 0.0f);
-    ShapeDef link;
-    link.density = 20.0f;
-    link.friction = 0.2f;
-    const Polygon box = Polygon::box(0.6f, 0.125f);
     const float y = 25.0f;
     for (int c = 0; c < count; ++c) {
         const float x0 = static_cast<float>(c) * kChainPitch;
-        BodyId previous = world.createBody(BodyDef{});
-        world.setBodyTransform(previous, {x0, y}, 0.0f);
-        for (int i = 0; i < 30; ++i) {
-            BodyDef def;
-            def.type = BodyType::Dynamic;
-            def.position = {x0 + 0.5f + static_cast<float>(i), y};
-            BodyId body = world.createBody(def);
-            world.createShape(body, link, box);
-            world.createJoint(
-                RevoluteJointDef::atWorldAnchor(previous, body, {x0 + static_cast<float>(i), y}));
-            previous = body;
-        }
+        BodyId root = world.createBody(BodyDef{});
+        world.setBodyTransform(root, {x0, y}, 0.0f);
+        addChain(world, root, x0, y, RevoluteJointDef::atWorldAnchor);
     }
 }
 

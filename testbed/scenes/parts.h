@@ -1,5 +1,5 @@
 // Parts that the benchmark, the tests and the testbed build into worlds: a shelf, a pyramid of
-// boxes, a jointed grid of circles, rows of chains. Each part's layout is written once here, as
+// boxes, a jointed grid of circles, chains. Each part's layout is written once here, as
 // a template that hands out positions; the pivot2d builders below and their Box2D twins
 // (testbed/box2d/parts.h) both take it, so the two engines get the same bodies in the same
 // creation order.
@@ -111,12 +111,49 @@ JointGrid addJointGrid(World& world, const JointGridSpec& spec);
 
 // --- chains ----------------------------------------------------------------------------------
 
+/// The testbed chain (Box2D's testbed chain): 30 links, boxes of 1.2 x 0.25 m (density 20,
+/// friction 0.2) with joints 1 m apart, neighbours overlapping by 0.2 m, laid out horizontally
+/// from its root at (x0, y). Calls link(centre, anchor) for each link from the root out, anchor
+/// being the link's joint to the one before it (the first: to the root).
+template <typename Link>
+void layChain(float x0, float y, Link&& link) {
+    for (int i = 0; i < 30; ++i) {
+        link(Vec2{x0 + 0.5f + static_cast<float>(i), y}, Vec2{x0 + static_cast<float>(i), y});
+    }
+}
+
+struct Chain {
+    std::vector<BodyId> links;
+    std::vector<JointId> joints;
+};
+
+/// The chain from `root`, each joint def made by jointAt(bodyA, bodyB, anchor).
+template <typename JointAt>
+Chain addChain(World& world, BodyId root, float x0, float y, JointAt&& jointAt) {
+    ShapeDef shape;
+    shape.density = 20.0f;
+    shape.friction = 0.2f;
+    const Polygon box = Polygon::box(0.6f, 0.125f);
+    Chain chain;
+    BodyId previous = root;
+    layChain(x0, y, [&](Vec2 centre, Vec2 anchor) {
+        BodyDef def;
+        def.type = BodyType::Dynamic;
+        def.position = centre;
+        BodyId link = world.createBody(def);
+        world.createShape(link, shape, box);
+        chain.joints.push_back(world.createJoint(jointAt(previous, link, anchor)));
+        chain.links.push_back(link);
+        previous = link;
+    });
+    return chain;
+}
+
 /// m between the roots of neighbouring chains, so that they never meet.
 constexpr float kChainPitch = 32.0f;
 
-/// `count` testbed chains (as buildChain: 30 links of 1.2 x 0.25 m, density 20, friction 0.2,
-/// joints 1 m apart, released horizontally at y = 25), each hanging from a static root body of
-/// its own, kChainPitch apart, over one shelf.
+/// `count` chains released horizontally at y = 25, each from a static root body of its own,
+/// kChainPitch apart, over one shelf; joints made with RevoluteJointDef::atWorldAnchor.
 void addChains(World& world, int count);
 
 }  // namespace pivot::scenes

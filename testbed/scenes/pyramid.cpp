@@ -13,7 +13,8 @@ void buildPyramid(Scene& scene, const SceneOptions& options) {
     PyramidSpec pyramid;
     pyramid.rows = 20;
     pyramid.pitchX = 1.05f;
-    scene.bodies = addPyramid(*scene.world, pyramid);
+    const std::vector<BodyId> boxes = addPyramid(*scene.world, pyramid);
+    scene.bodies.insert(scene.bodies.end(), boxes.begin(), boxes.end());
 }
 
 }  // namespace pivot::scenes
