@@ -1,4 +1,4 @@
-#include "reference_command.h"
+#include "app/reference_command.h"
 
 #include <cstdarg>
 #include <cstdio>
