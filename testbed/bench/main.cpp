@@ -3,49 +3,18 @@
 // engines so drift affects both alike), takes the median milliseconds per step of each engine
 // and prints the ratio box2d / pivot ("speedup"). Then it reports heap bytes per body, joint and
 // contact, counted by a replaced global operator new.
-#include <malloc.h>
-
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
-#include <new>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "bench/bench_scenes.h"
-
-// --- heap accounting ------------------------------------------------------------------------
-// Live bytes allocated through operator new (Box2D allocates with malloc and is not counted).
-static std::atomic<long long> gLiveBytes{0};
-
-void* operator new(std::size_t size) {
-    void* p = std::malloc(size == 0 ? 1 : size);
-    if (!p) throw std::bad_alloc();
-    gLiveBytes += static_cast<long long>(malloc_usable_size(p));
-    return p;
-}
-void operator delete(void* p) noexcept {
-    if (!p) return;
-    gLiveBytes -= static_cast<long long>(malloc_usable_size(p));
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    operator delete(p);
-}
-void* operator new[](std::size_t size) {
-    return operator new(size);
-}
-void operator delete[](void* p) noexcept {
-    operator delete(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    operator delete(p);
-}
+#include "heap/counting_new.h"
 
 namespace {
 
@@ -140,14 +109,10 @@ Result runScene(const bench::BenchScene& scene, const Options& options) {
     return result;
 }
 
-long long liveBytes() {
-    return gLiveBytes.load();
-}
-
 // Heap bytes per body (with one circle), per joint and per contact, from worlds built to size.
 void reportMemory(std::ostream& out) {
     const int n = 10000;
-    long long before = liveBytes();
+    long long before = heap::liveBytes();
     auto world = std::make_unique<World>();
     std::vector<BodyId> bodies;
     for (int i = 0; i < n; ++i) {
@@ -157,20 +122,16 @@ void reportMemory(std::ostream& out) {
         bodies.push_back(world->createBody(def));
         world->createShape(bodies.back(), ShapeDef{}, Circle{{0, 0}, 0.25f});
     }
-    long long withBodies = liveBytes();
+    long long withBodies = heap::liveBytes();
     for (int i = 1; i < n; ++i) {
         world->createJoint(RevoluteJointDef::atWorldAnchor(bodies[i - 1], bodies[i], {0, 0}));
     }
-    long long withJoints = liveBytes();
+    long long withJoints = heap::liveBytes();
     world.reset();
     (void)before;
 
     // Contacts: a settled pyramid, measured across its first step (the step also sizes the
     // solver's reusable buffers, which are counted here too).
-    bench::BenchScene pyramid;
-    for (const bench::BenchScene& s : bench::benchScenes()) {
-        if (s.name == "pyramid_40") pyramid = s;
-    }
     auto world2 = std::make_unique<World>();
     {
         ShapeDef def;
@@ -190,10 +151,10 @@ void reportMemory(std::ostream& out) {
             }
         }
     }
-    long long beforeStep = liveBytes();
+    long long beforeStep = heap::liveBytes();
     world2->step(1.0f / 60.0f);
     world2->step(1.0f / 60.0f);
-    long long afterStep = liveBytes();
+    long long afterStep = heap::liveBytes();
     int contacts = world2->lastStepStats().contactCount;
     char line[256];
     std::snprintf(line, sizeof line,

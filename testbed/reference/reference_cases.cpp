@@ -12,19 +12,19 @@ const std::vector<ReferenceCase>& referenceCases() {
     static const std::vector<ReferenceCase> cases = {
         {"pendulum_1", false,
          [](Scene& s, const SceneOptions& o) { scenes::buildSpinningPendulum(s, o, 1.0f); },
-         [](bool continuous) { return box2dPendulum(1.0f, continuous); }},
+         [](bool continuous) { return box2d::buildSpinningPendulum(1.0f, continuous); }},
         {"pendulum_10", false,
          [](Scene& s, const SceneOptions& o) { scenes::buildSpinningPendulum(s, o, 10.0f); },
-         [](bool continuous) { return box2dPendulum(10.0f, continuous); }},
+         [](bool continuous) { return box2d::buildSpinningPendulum(10.0f, continuous); }},
         {"pendulum_100", false,
          [](Scene& s, const SceneOptions& o) { scenes::buildSpinningPendulum(s, o, 100.0f); },
-         [](bool continuous) { return box2dPendulum(100.0f, continuous); }},
-        {"pendulum_limit", false, scenes::buildLimitedPendulum, box2dLimitedPendulum},
-        {"motor_wheel", false, scenes::buildMotorWheel, box2dMotorWheel},
-        {"double_pendulum", true, scenes::buildDoublePendulum, box2dDoublePendulum},
-        {"bridge", true, scenes::buildBridge, box2dBridge},
-        {"chain", true, scenes::buildChain, box2dChain},
-        {"bridge_heavy", true, scenes::buildBridgeHeavy, box2dBridgeHeavy},
+         [](bool continuous) { return box2d::buildSpinningPendulum(100.0f, continuous); }},
+        {"pendulum_limit", false, scenes::buildLimitedPendulum, box2d::buildLimitedPendulum},
+        {"motor_wheel", false, scenes::buildMotorWheel, box2d::buildMotorWheel},
+        {"double_pendulum", true, scenes::buildDoublePendulum, box2d::buildDoublePendulum},
+        {"bridge", true, scenes::buildBridge, box2d::buildBridge},
+        {"chain", true, scenes::buildChain, box2d::buildChain},
+        {"bridge_heavy", true, scenes::buildBridgeHeavy, box2d::buildBridgeHeavy},
     };
     return cases;
 }
@@ -41,7 +41,7 @@ TrajectoryDifference compareTrajectories(const ReferenceCase& c,
                                          const scenes::SceneOptions& options, int steps) {
     const float dt = 1.0f / 60.0f;
     scenes::Scene ours = buildPivotCase(c, options);
-    Box2dScene theirs = c.buildBox2d(false);
+    box2d::Box2dScene theirs = c.buildBox2d(false);
     TrajectoryDifference d;
     for (int s = 0; s < steps; ++s) {
         if (ours.beforeStep) ours.beforeStep(ours, s);
@@ -80,7 +80,7 @@ scenes::Scene buildPivotCase(const ReferenceCase& c, const scenes::SceneOptions&
     return scene;
 }
 
-double box2dEnergy(const Box2dScene& scene) {
+double box2dEnergy(const box2d::Box2dScene& scene) {
     const b2Vec2 g = scene.world->GetGravity();
     double energy = 0.0;
     for (const b2Body* body : scene.bodies) {
@@ -97,7 +97,7 @@ double box2dEnergy(const Box2dScene& scene) {
     return energy;
 }
 
-scenes::RunMetrics runBox2d(Box2dScene& scene, const scenes::RunSettings& settings,
+scenes::RunMetrics runBox2d(box2d::Box2dScene& scene, const scenes::RunSettings& settings,
                             const std::function<void(int)>& afterStep) {
     using Clock = std::chrono::steady_clock;
     const float dt = 1.0f / settings.hz;

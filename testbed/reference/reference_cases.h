@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "reference/box2d_scenes.h"
+#include "box2d/box2d_scenes.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
 
@@ -19,7 +19,7 @@ struct ReferenceCase {
     /// steps and the rest by statistics; otherwise trajectories must agree for the whole run.
     bool chaotic = false;
     std::function<void(scenes::Scene&, const scenes::SceneOptions&)> buildPivot;
-    std::function<Box2dScene(bool continuous)> buildBox2d;
+    std::function<box2d::Box2dScene(bool continuous)> buildBox2d;
 };
 
 const std::vector<ReferenceCase>& referenceCases();
@@ -48,11 +48,11 @@ void PrintTo(const ReferenceCase& c, std::ostream* out);
 scenes::Scene buildPivotCase(const ReferenceCase& c, const scenes::SceneOptions& options);
 
 /// The Box2D side's metrics, measured exactly as scenes::runScene measures pivot2d's.
-scenes::RunMetrics runBox2d(Box2dScene& scene, const scenes::RunSettings& settings,
+scenes::RunMetrics runBox2d(box2d::Box2dScene& scene, const scenes::RunSettings& settings,
                             const std::function<void(int)>& afterStep = {});
 
 /// Kinetic plus gravitational potential energy of the Box2D scene's bodies, as
 /// scenes::mechanicalEnergy.
-double box2dEnergy(const Box2dScene& scene);
+double box2dEnergy(const box2d::Box2dScene& scene);
 
 }  // namespace pivot::reference

@@ -3,38 +3,10 @@
 // step to the next. Counted with a replaced global operator new.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
+#include "heap/counting_new.h"
 #include "scenes/metrics.h"
+#include "scenes/parts.h"
 #include "scenes/scene.h"
-
-namespace {
-std::atomic<long> gAllocations{0};
-}
-
-void* operator new(std::size_t size) {
-    ++gAllocations;
-    void* p = std::malloc(size == 0 ? 1 : size);
-    if (!p) throw std::bad_alloc();
-    return p;
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void* operator new[](std::size_t size) {
-    return operator new(size);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
 
 using namespace pivot;
 using namespace pivot::scenes;
@@ -52,9 +24,9 @@ TEST_P(EveryScene, StepsWithoutAllocatingOnceWarm) {
         if (scene.beforeStep) scene.beforeStep(scene, i);
         world.step(1.0f / 60.0f);
     }
-    long before = gAllocations.load();
+    heap::Counter counter;
     for (int i = 0; i < 300; ++i) world.step(1.0f / 60.0f);
-    EXPECT_EQ(gAllocations.load() - before, 0) << std::get<0>(GetParam());
+    EXPECT_EQ(counter.allocations(), 0) << std::get<0>(GetParam());
 }
 
 namespace {
@@ -79,19 +51,13 @@ TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
         WorldDef def;
         def.workerCount = workers;
         World world(def);
-        ShapeDef ground;
-        ground.density = 0.0f;
-        world.createShape(world.createBody(BodyDef{}), ground,
-                          Polygon::box(50.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
-        ShapeDef box;
-        for (int row = 0; row < 40; ++row) {
-            for (int i = 0; i < 40 - row; ++i) {
-                BodyDef body;
-                body.type = BodyType::Dynamic;
-                body.position = {-0.55f * float(39 - row) + 1.1f * float(i), 0.5f + float(row)};
-                world.createShape(world.createBody(body), box, Polygon::box(0.5f, 0.5f));
-            }
-        }
+        addShelf(world, -50.0f, 50.0f, 0.0f);
+        PyramidSpec pyramid;  // as the coloured-island reference test's
+        pyramid.rows = 40;
+        pyramid.pitchX = 1.1f;
+        pyramid.pitchY = 1.0f;
+        pyramid.floorGap = 0.0f;
+        addPyramid(world, pyramid);
         ShapeDef circle;
         circle.filter.categoryBits = 0x0002;
         circle.filter.maskBits = 0x0001;
@@ -115,9 +81,9 @@ TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
             }
         }
         for (int i = 0; i < 600; ++i) world.step(1.0f / 60.0f);
-        long before = gAllocations.load();
+        heap::Counter counter;
         for (int i = 0; i < 300; ++i) world.step(1.0f / 60.0f);
-        EXPECT_EQ(gAllocations.load() - before, 0) << workers << " workers";
+        EXPECT_EQ(counter.allocations(), 0) << workers << " workers";
     }
 }
 
@@ -159,12 +125,12 @@ TEST(ChurningContacts, StepWithoutAllocatingOnceWarm) {
         }
         for (int i = 0; i < 600; ++i) world.step(1.0f / 60.0f);
         int stepsThatAllocated = 0;
-        long total = 0;
+        long long total = 0;
         std::size_t begins = 0, ends = 0;
         for (int i = 0; i < 10000; ++i) {
-            long before = gAllocations.load();
+            heap::Counter counter;
             world.step(1.0f / 60.0f);
-            long made = gAllocations.load() - before;
+            long long made = counter.allocations();
             total += made;
             if (made > 0) ++stepsThatAllocated;
             // After the count: the event lists are returned as copies, which allocate.

@@ -7,50 +7,34 @@
 #include <cmath>
 #include <vector>
 
-#include "islands/island_schedule.h"
+#include "box2d/parts.h"
 #include "pivot/pivot.h"
+#include "scenes/parts.h"
+#include "islands/island_schedule.h"
 
 using namespace pivot;
 
 namespace {
 
-constexpr int kSize = 30;  // 1,740 joints: one coloured island
 constexpr int kSteps = 300;
 constexpr float kDt = 1.0f / 60.0f;
 
-bool isPinned(int row, int col) {
-    return row == 0 && std::abs(col - kSize / 2) <= 1;
+// A grid of circles, each jointed to its neighbours above and to the left, hanging from three
+// bodies of its top row.
+scenes::JointGridSpec grid() {
+    scenes::JointGridSpec spec;
+    spec.size = 30;  // 1,740 joints: one coloured island
+    spec.pinnedHalfWidth = 1;
+    spec.order = scenes::GridOrder::RowByRow;
+    return spec;
 }
 
-// The worst pin separation over the run of a kSize x kSize grid of circles, each jointed to its
-// neighbours above and to the left, hanging from three bodies of its top row.
+// The worst pin separation over the run.
 float pivotWorstSeparation(int workers) {
     WorldDef def;
     def.workerCount = workers;
     World world(def);
-    std::vector<BodyId> bodies;
-    std::vector<JointId> joints;
-    ShapeDef shape;
-    shape.filter.categoryBits = 0x0002;
-    shape.filter.maskBits = 0x0001;
-    for (int row = 0; row < kSize; ++row) {
-        for (int col = 0; col < kSize; ++col) {
-            BodyDef body;
-            body.type = isPinned(row, col) ? BodyType::Static : BodyType::Dynamic;
-            body.position = {float(col), -float(row)};
-            BodyId id = world.createBody(body);
-            world.createShape(id, shape, Circle{{0.0f, 0.0f}, 0.4f});
-            bodies.push_back(id);
-            if (row > 0) {
-                joints.push_back(world.createJoint(RevoluteJointDef::atWorldAnchor(
-                    bodies[(row - 1) * kSize + col], id, {float(col), 0.5f - float(row)})));
-            }
-            if (col > 0) {
-                joints.push_back(world.createJoint(RevoluteJointDef::atWorldAnchor(
-                    bodies[row * kSize + col - 1], id, {float(col) - 0.5f, -float(row)})));
-            }
-        }
-    }
+    const std::vector<JointId> joints = scenes::addJointGrid(world, grid()).joints;
     EXPECT_GE(int(joints.size()), kColoringThreshold);
     float worst = 0.0f;
     for (int i = 0; i < kSteps; ++i) {
@@ -62,36 +46,7 @@ float pivotWorstSeparation(int workers) {
 
 float box2dWorstSeparation() {
     b2World world(b2Vec2(0.0f, -10.0f));
-    std::vector<b2Body*> bodies;
-    std::vector<b2Joint*> joints;
-    b2CircleShape circle;
-    circle.m_radius = 0.4f;
-    b2FixtureDef fixture;
-    fixture.shape = &circle;
-    fixture.density = 1.0f;
-    fixture.filter.categoryBits = 0x0002;
-    fixture.filter.maskBits = 0x0001;
-    for (int row = 0; row < kSize; ++row) {
-        for (int col = 0; col < kSize; ++col) {
-            b2BodyDef body;
-            body.type = isPinned(row, col) ? b2_staticBody : b2_dynamicBody;
-            body.position.Set(float(col), -float(row));
-            b2Body* b = world.CreateBody(&body);
-            b->CreateFixture(&fixture);
-            bodies.push_back(b);
-            b2RevoluteJointDef joint;
-            if (row > 0) {
-                joint.Initialize(bodies[(row - 1) * kSize + col], b,
-                                 b2Vec2(float(col), 0.5f - float(row)));
-                joints.push_back(world.CreateJoint(&joint));
-            }
-            if (col > 0) {
-                joint.Initialize(bodies[row * kSize + col - 1], b,
-                                 b2Vec2(float(col) - 0.5f, -float(row)));
-                joints.push_back(world.CreateJoint(&joint));
-            }
-        }
-    }
+    const std::vector<b2Joint*> joints = box2d::addJointGrid(world, grid()).joints;
     float worst = 0.0f;
     for (int i = 0; i < kSteps; ++i) {
         world.Step(kDt, 8, 3);
@@ -101,34 +56,24 @@ float box2dWorstSeparation() {
     return worst;
 }
 
-constexpr int kRows = 40;  // 820 boxes, about 1,600 touching contacts: one coloured island
-
-float rowX(int row, int i) {
-    const int count = kRows - row;
-    return -0.55f * float(count - 1) + 1.1f * float(i);
+// 40 rows, 820 boxes, about 1,600 touching contacts: one coloured island. The boxes start 10 cm
+// apart along a row, each row standing on the one below.
+scenes::PyramidSpec pyramid() {
+    scenes::PyramidSpec spec;
+    spec.rows = 40;
+    spec.pitchX = 1.1f;
+    spec.pitchY = 1.0f;
+    spec.floorGap = 0.0f;
+    return spec;
 }
 
-// How far the top box of a kRows-row pyramid drifts in 10 s, after 1 s to settle.
+// How far the top box drifts in 10 s, after 1 s to settle.
 float pivotPyramidDrift(int workers) {
     WorldDef def;
     def.workerCount = workers;
     World world(def);
-    ShapeDef ground;
-    ground.density = 0.0f;
-    world.createShape(world.createBody(BodyDef{}), ground,
-                      Polygon::box(kRows + 10.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
-    ShapeDef box;
-    box.friction = 0.6f;
-    BodyId top;
-    for (int row = 0; row < kRows; ++row) {
-        for (int i = 0; i < kRows - row; ++i) {
-            BodyDef body;
-            body.type = BodyType::Dynamic;
-            body.position = {rowX(row, i), 0.5f + float(row)};
-            top = world.createBody(body);
-            world.createShape(top, box, Polygon::box(0.5f, 0.5f));
-        }
-    }
+    scenes::addShelf(world, -50.0f, 50.0f, 0.0f);
+    const BodyId top = scenes::addPyramid(world, pyramid()).back();
     for (int i = 0; i < 60; ++i) world.step(kDt, 8, 3);
     EXPECT_GE(world.lastStepStats().touchingCount, kColoringThreshold);
     const Vec2 start = world.bodyPosition(top);
@@ -138,26 +83,9 @@ float pivotPyramidDrift(int workers) {
 
 float box2dPyramidDrift() {
     b2World world(b2Vec2(0.0f, -10.0f));
-    b2PolygonShape groundShape;
-    groundShape.SetAsBox(kRows + 10.0f, 0.5f, b2Vec2(0.0f, -0.5f), 0.0f);
-    b2BodyDef groundDef;
-    world.CreateBody(&groundDef)->CreateFixture(&groundShape, 0.0f);
-    b2PolygonShape square;
-    square.SetAsBox(0.5f, 0.5f);
-    b2FixtureDef fixture;
-    fixture.shape = &square;
-    fixture.density = 1.0f;
-    fixture.friction = 0.6f;
-    b2Body* top = nullptr;
-    for (int row = 0; row < kRows; ++row) {
-        for (int i = 0; i < kRows - row; ++i) {
-            b2BodyDef body;
-            body.type = b2_dynamicBody;
-            body.position.Set(rowX(row, i), 0.5f + float(row));
-            top = world.CreateBody(&body);
-            top->CreateFixture(&fixture);
-        }
-    }
+    // The ground keeps Box2D's default friction, 0.2, as this test always had (pivot2d's: 0.6).
+    box2d::addShelf(world, -50.0f, 50.0f, 0.0f, 0.2f);
+    b2Body* top = box2d::addPyramid(world, pyramid()).back();
     for (int i = 0; i < 60; ++i) world.Step(kDt, 8, 3);
     const b2Vec2 start = top->GetPosition();
     for (int i = 0; i < 600; ++i) world.Step(kDt, 8, 3);

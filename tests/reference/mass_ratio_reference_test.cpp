@@ -15,7 +15,7 @@ using namespace pivot::reference;
 
 namespace {
 
-const ReferenceCase kMassRatio{"mass_ratio", true, scenes::buildMassRatio, box2dMassRatio};
+const ReferenceCase kMassRatio{"mass_ratio", true, scenes::buildMassRatio, box2d::buildMassRatio};
 constexpr int kSteps = 600;
 constexpr float kDt = 1.0f / 60.0f;
 
@@ -29,7 +29,7 @@ scenes::SceneOptions fullNgs() {
 
 TEST(MassRatioAgainstBox2d, NoJointIsLetGoHoweverFarTheChainStretches) {
     scenes::Scene ours = buildPivotCase(kMassRatio, fullNgs());
-    Box2dScene theirs = kMassRatio.buildBox2d(false);
+    box2d::Box2dScene theirs = kMassRatio.buildBox2d(false);
     float oursMax = 0.0f, theirsMax = 0.0f;
     for (int s = 0; s < kSteps; ++s) {
         ours.world->step(kDt, 8, 3);

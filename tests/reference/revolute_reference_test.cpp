@@ -48,7 +48,7 @@ class ChaoticAgainstBox2d : public testing::TestWithParam<ReferenceCase> {};
 TEST_P(ChaoticAgainstBox2d, StatisticsAgreeOver600Steps) {
     const ReferenceCase& c = GetParam();
     scenes::Scene ours = buildPivotCase(c, fullNgs());
-    Box2dScene theirs = c.buildBox2d(false);
+    box2d::Box2dScene theirs = c.buildBox2d(false);
     scenes::RunSettings settings;
     settings.steps = kSteps;
     scenes::RunMetrics a = scenes::runScene(ours, settings);

@@ -6,7 +6,7 @@
 //     reported let-go joints (World::isJointLetGo, StepStats::letGoJointCount) and
 //     every body stayed finite and within the bound: the engine contains a blow-up;
 //   - the heap does not grow once the scene has settled: the live bytes allocated through
-//     operator new (counted by the replacement below) never exceed what was live at the end of
+//     operator new (counted by heap/counting_new.h) never exceed what was live at the end of
 //     the warm-up by more than the slack (kHeapSlackBytes). The warm-up is the first
 //     max(2000, steps / 10) steps: every scene's scripted events are over by step 240, and the
 //     chaotic ones (a whirled chain) reach their most contacts within the next thousand.
@@ -14,64 +14,18 @@
 //   pivot-soak [--scene NAME|all] [--solver NAME|all] [--steps N] [--warmup N]
 //
 // Exit status 0 when every run passed, 1 otherwise, 2 on bad arguments.
-#include <malloc.h>
-
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <new>
 #include <string>
 #include <vector>
 
+#include "heap/counting_new.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
-
-// --- heap accounting ------------------------------------------------------------------------
-// Live bytes and calls through the global operator new of this program (the library and the
-// scenes allocate only through it). malloc_usable_size works under AddressSanitizer too.
-namespace {
-std::atomic<long long> gLiveBytes{0};
-std::atomic<long long> gAllocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    void* p = std::malloc(size == 0 ? 1 : size);
-    if (!p) throw std::bad_alloc();
-    gLiveBytes += static_cast<long long>(malloc_usable_size(p));
-    ++gAllocations;
-    return p;
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    try {
-        return operator new(size);
-    } catch (...) {
-        return nullptr;
-    }
-}
-void* operator new[](std::size_t size) {
-    return operator new(size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept {
-    return operator new(size, tag);
-}
-void operator delete(void* p) noexcept {
-    if (!p) return;
-    gLiveBytes -= static_cast<long long>(malloc_usable_size(p));
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    operator delete(p);
-}
-void operator delete[](void* p) noexcept {
-    operator delete(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    operator delete(p);
-}
 
 namespace {
 
@@ -189,7 +143,7 @@ RunResult soak(const SceneInfo& info, PositionSolver solver, long steps, long wa
             break;
         }
 
-        long long live = gLiveBytes.load();
+        long long live = heap::liveBytes();
         if (live > highWater) {
             highWater = live;
             result.lastGrowthStep = i;
@@ -197,15 +151,15 @@ RunResult soak(const SceneInfo& info, PositionSolver solver, long steps, long wa
         if (i + 1 == warmup) {
             result.bytesAfterWarmup = live;
             result.peakAfterWarmup = live;
-            allocationsAtWarmup = gAllocations.load();
+            allocationsAtWarmup = heap::allocations();
         } else if (i + 1 > warmup) {
             result.peakAfterWarmup = std::max(result.peakAfterWarmup, live);
         }
     }
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.bytesAtEnd = gLiveBytes.load();
-    result.allocationsAfterWarmup = gAllocations.load() - allocationsAtWarmup;
+    result.bytesAtEnd = heap::liveBytes();
+    result.allocationsAfterWarmup = heap::allocations() - allocationsAtWarmup;
     const long long slack = std::max(kHeapSlackBytes, result.bytesAfterWarmup / kHeapSlackFraction);
     if (result.ok && steps > warmup && result.peakAfterWarmup > result.bytesAfterWarmup + slack) {
         result.ok = false;

@@ -54,7 +54,7 @@ struct RecordedHashes {
 // World::stateHash of every scene with every position solver after 600 steps, so that any
 // change to the numerics (or to what the hash covers) is seen here and made on purpose. After
 // an intended change, regenerate the table with
-//   PIVOT_PRINT_HASHES=1 ./build/tests/pivot-tests --gtest_filter=Determinism.RecordedHashes
+//   PIVOT_PRINT_HASHES=1 ./build/tests/engine/pivot-engine-tests --gtest_filter=Determinism.RecordedHashes
 // which prints it in this form, and paste it over this one. Recorded with GCC 12 on x86-64
 // (Release and the Debug sanitizer build agree); other compilers and CPUs may differ
 // (docs/reliability.md).

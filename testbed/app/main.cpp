@@ -2,15 +2,15 @@
 #include <fstream>
 #include <iostream>
 
-#include "cli.h"
+#include "app/cli.h"
+#include "app/table.h"
 #include "replay/html_replay.h"
 #include "report/report.h"
 #include "report/report_check.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
-#include "table.h"
 #if PIVOT_TESTBED_HAS_BOX2D
-#include "reference_command.h"
+#include "app/reference_command.h"
 #endif
 
 using namespace pivot;

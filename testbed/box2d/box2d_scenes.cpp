@@ -1,6 +1,8 @@
-#include "reference/box2d_scenes.h"
+#include "box2d/box2d_scenes.h"
 
-namespace pivot::reference {
+#include "box2d/parts.h"
+
+namespace pivot::box2d {
 
 namespace {
 
@@ -46,7 +48,7 @@ b2RevoluteJoint* pin(Box2dScene& scene, b2Body* a, b2Body* b, b2Vec2 anchor) {
 
 }  // namespace
 
-Box2dScene box2dPendulum(float spin, bool continuous) {
+Box2dScene buildSpinningPendulum(float spin, bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);
     b2Body* anchor = staticBody(*scene.world);
@@ -64,7 +66,7 @@ Box2dScene box2dPendulum(float spin, bool continuous) {
     return scene;
 }
 
-Box2dScene box2dLimitedPendulum(bool continuous) {
+Box2dScene buildLimitedPendulum(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);
     b2Body* anchor = staticBody(*scene.world);
@@ -79,7 +81,7 @@ Box2dScene box2dLimitedPendulum(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dDoublePendulum(bool continuous) {
+Box2dScene buildDoublePendulum(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);
     b2Body* previous = staticBody(*scene.world);
@@ -95,7 +97,7 @@ Box2dScene box2dDoublePendulum(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dMotorWheel(bool continuous) {
+Box2dScene buildMotorWheel(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 center(0.0f, 5.0f);
     b2Body* anchor = staticBody(*scene.world);
@@ -114,7 +116,7 @@ Box2dScene box2dMotorWheel(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dBridge(bool continuous) {
+Box2dScene buildBridge(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     b2Body* groundBody = ground(*scene.world);
     b2PolygonShape plank;
@@ -138,8 +140,8 @@ Box2dScene box2dBridge(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dBridgeHeavy(bool continuous) {
-    Box2dScene scene = box2dBridge(continuous);
+Box2dScene buildBridgeHeavy(bool continuous) {
+    Box2dScene scene = buildBridge(continuous);
     scene.beforeStep = [](Box2dScene& s, int step) {
         if (step != 120) return;  // 2 s at 60 Hz
         float bridgeMass = 0.0f;
@@ -160,30 +162,15 @@ Box2dScene box2dBridgeHeavy(bool continuous) {
     return scene;
 }
 
-Box2dScene box2dChain(bool continuous) {
+Box2dScene buildChain(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
-    b2Body* previous = ground(*scene.world);
-    b2PolygonShape box;
-    box.SetAsBox(0.6f, 0.125f);
-    b2FixtureDef fixture;
-    fixture.shape = &box;
-    fixture.density = 20.0f;
-    fixture.friction = 0.2f;
-    const float y = 25.0f;
-    for (int i = 0; i < 30; ++i) {
-        b2BodyDef def;
-        def.type = b2_dynamicBody;
-        def.position.Set(0.5f + static_cast<float>(i), y);
-        b2Body* link = scene.world->CreateBody(&def);
-        link->CreateFixture(&fixture);
-        pin(scene, previous, link, b2Vec2(static_cast<float>(i), y));
-        scene.bodies.push_back(link);
-        previous = link;
-    }
+    Chain chain = addChain(*scene.world, ground(*scene.world), 0.0f, 25.0f);
+    scene.bodies = std::move(chain.links);
+    scene.joints = std::move(chain.joints);
     return scene;
 }
 
-Box2dScene box2dMassRatio(bool continuous) {
+Box2dScene buildMassRatio(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     b2Body* previous = staticBody(*scene.world);
     b2PolygonShape box;
@@ -206,4 +193,4 @@ Box2dScene box2dMassRatio(bool continuous) {
     return scene;
 }
 
-}  // namespace pivot::reference
+}  // namespace pivot::box2d

@@ -1,4 +1,4 @@
-#include "table.h"
+#include "app/table.h"
 
 #include <cstdio>
 

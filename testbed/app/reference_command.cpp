@@ -1,4 +1,4 @@
-#include "reference_command.h"
+#include "app/reference_command.h"
 
 #include <cstdarg>
 #include <cstdio>
@@ -86,7 +86,7 @@ int runReferenceCommand(std::ostream& out, std::ostream* csv) {
                             scenes::runScene(scene, settings)});
         }
         for (bool continuous : {false, true}) {
-            reference::Box2dScene scene = c.buildBox2d(continuous);
+            box2d::Box2dScene scene = c.buildBox2d(continuous);
             rows.push_back(
                 {c.name, continuous ? "box2d+toi" : "box2d", reference::runBox2d(scene, settings)});
         }

@@ -3,8 +3,8 @@
 
 #include <sstream>
 
-#include "cli.h"
-#include "table.h"
+#include "app/cli.h"
+#include "app/table.h"
 
 using namespace pivot;
 using namespace pivot::testbed;

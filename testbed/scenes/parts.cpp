@@ -1,0 +1,68 @@
+#include "parts.h"
+
+namespace pivot::scenes {
+
+BodyId addShelf(World& world, float left, float right, float top, float friction) {
+    BodyId shelf = world.createBody(BodyDef{});
+    ShapeDef def;
+    def.density = 0.0f;
+    def.friction = friction;
+    world.createShape(
+        shelf, def,
+        Polygon::box(0.5f * (right - left), 0.5f, {0.5f * (left + right), top - 0.5f}, 0.0f));
+    return shelf;
+}
+
+std::vector<BodyId> addPyramid(World& world, const PyramidSpec& spec) {
+    ShapeDef shape;
+    shape.density = 1.0f;
+    shape.friction = 0.6f;
+    const Polygon box = Polygon::box(0.5f, 0.5f);
+    std::vector<BodyId> boxes;
+    layPyramid(spec, [&](Vec2 centre) {
+        BodyDef def;
+        def.type = BodyType::Dynamic;
+        def.position = centre;
+        BodyId body = world.createBody(def);
+        world.createShape(body, shape, box);
+        boxes.push_back(body);
+    });
+    return boxes;
+}
+
+JointGrid addJointGrid(World& world, const JointGridSpec& spec) {
+    JointGrid grid;
+    grid.bodies.resize(static_cast<std::size_t>(spec.size) * static_cast<std::size_t>(spec.size));
+    ShapeDef shape;
+    shape.filter = {kGridCategory, static_cast<std::uint16_t>(0xFFFF & ~kGridCategory), 0};
+    const Circle circle{{0.0f, 0.0f}, 0.4f};
+    layJointGrid(
+        spec,
+        [&](int index, Vec2 position, bool pinned) {
+            BodyDef def;
+            def.type = pinned ? BodyType::Static : BodyType::Dynamic;
+            def.position = position;
+            BodyId body = world.createBody(def);
+            shape.density = pinned ? 0.0f : 1.0f;
+            world.createShape(body, shape, circle);
+            grid.bodies[index] = body;
+        },
+        [&](int a, int b, Vec2 anchor) {
+            grid.joints.push_back(world.createJoint(
+                RevoluteJointDef::atWorldAnchor(grid.bodies[a], grid.bodies[b], anchor)));
+        });
+    return grid;
+}
+
+void addChains(World& world, int count) {
+    addShelf(world, -10.0f, static_cast<float>(count) * kChainPitch + 10.0f, 0.0f);
+    const float y = 25.0f;
+    for (int c = 0; c < count; ++c) {
+        const float x0 = static_cast<float>(c) * kChainPitch;
+        BodyId root = world.createBody(BodyDef{});
+        world.setBodyTransform(root, {x0, y}, 0.0f);
+        addChain(world, root, x0, y, RevoluteJointDef::atWorldAnchor);
+    }
+}
+
+}  // namespace pivot::scenes
