@@ -11,8 +11,8 @@
 //   rod    C = L - length, impulse unbounded;
 //   lower  C = L - min >= 0, impulse >= 0 (pushes apart); upper C = max - L >= 0, impulse >= 0
 //          (pulls together). As for the angle limits, a limit not yet reached lets the anchors
-//          approach it by C / h this step; an overshot limit allows kLinearSlop and never asks
-//          for more than kMaxLinearCorrection at once;
+//          approach it by C / h this step; an overshot one is corrected in full (no slop, no
+//          cap: lengthLimitError says why);
 //   spring soft towards `length`, as the mouse joint's spring: with w = 2 pi hertz, z the
 //          damping ratio and h the step, compliance gamma = (1/axialMass) / (h w (2 z + h w)) and
 //          bias = w / (2 z + h w) * C; solved as (K + gamma) lambda = -(Cdot + bias + gamma
@@ -95,15 +95,15 @@ inline void applyLengthImpulse(const ConstraintBodies& b, const LengthPart& p,
     B.w += b.iB * cross(p.rB, P);
 }
 
-/// The position error of a limited length as the NGS solves see it: negative below min, positive
-/// above max, 0 within them and slop; clamped to kMaxLinearCorrection. Limits closer than 2 slop
-/// act as one equality at min.
+/// The position error of a limited length: negative below min, positive above max, 0 between.
+/// Unlike the angle limits it neither allows slop nor caps the correction: a rope's error grows
+/// with the lever arms and spins of what it ties, and a capped correction (kMaxLinearCorrection,
+/// times a bias factor of 0.2 for Baumgarte and pseudo velocities) fell behind that growth on
+/// the rope scene, which then stretched without end. Box2D 2.4.1 corrects its distance limits
+/// the same way.
 inline float lengthLimitError(float length, float min, float max) {
-    if (max - min < 2.0f * kLinearSlop) {
-        return std::clamp(length - min, -kMaxLinearCorrection, kMaxLinearCorrection);
-    }
-    if (length <= min) return std::clamp(length - min + kLinearSlop, -kMaxLinearCorrection, 0.0f);
-    if (length >= max) return std::clamp(length - max - kLinearSlop, 0.0f, kMaxLinearCorrection);
+    if (length < min) return length - min;
+    if (length > max) return length - max;
     return 0.0f;
 }
 

@@ -30,31 +30,30 @@ void buildDistancePendulum(Scene& scene, const SceneOptions& options) {
     scene.joints.push_back(world.createJoint(jd));
 }
 
-// A rope of 30 planks (0.4 x 0.1 m, centres 1 m apart), each tied end to end to the next by a
-// rope of 0.3 to 0.6 m (a distance joint whose limit is its only constraint), the first tied to
-// a static point; released level with every rope taut. The ropes act at the planks' ends, so a
-// rope's effective mass changes as the planks turn: the case in which ModifiedNGS's frozen mass
-// and FullNGS's rebuilt one differ.
+// A rope of 30 beads (balls of 0.15 m radius, 1 m apart), each tied to the next by a rope of
+// 0.5 to 1 m (a distance joint whose limit is its only constraint), the first tied to a static
+// point; released level with every rope taut. Tied at their centres, the beads are the point
+// masses of a game's rope, and each rope's effective mass is the same in every pose. (Tied at
+// the ends of planks instead, the ropes' lever arms let pseudo velocities stretch the rope
+// without end: see docs/position-correction.md.)
 void buildRope(Scene& scene, const SceneOptions& options) {
     World& world = *scene.world;
     const Vec2 start{0.0f, 20.0f};
-    const float halfLength = 0.2f;
     BodyId previous = world.createBody(BodyDef{});
-    Vec2 previousEnd = start;  // in the previous body's frame
+    Vec2 previousAnchor = start;  // in the previous body's frame
     for (int i = 1; i <= 30; ++i) {
         BodyDef def;
         def.type = BodyType::Dynamic;
-        def.position = start + Vec2{static_cast<float>(i) - 0.4f + halfLength, 0.0f};
-        BodyId plank = world.createBody(def);
-        world.createShape(plank, ShapeDef{}, Polygon::box(halfLength, 0.05f));
-        DistanceJointDef jd = options.distanceJoint(previous, plank);
-        jd.localAnchorA = previousEnd;
-        jd.localAnchorB = {-halfLength, 0.0f};
-        jd.limit = {true, 0.3f, 0.6f};
+        def.position = start + Vec2{static_cast<float>(i), 0.0f};
+        BodyId bead = world.createBody(def);
+        world.createShape(bead, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.15f});
+        DistanceJointDef jd = options.distanceJoint(previous, bead);
+        jd.localAnchorA = previousAnchor;
+        jd.limit = {true, 0.5f, 1.0f};
         scene.joints.push_back(world.createJoint(jd));
-        scene.bodies.push_back(plank);
-        previous = plank;
-        previousEnd = {halfLength, 0.0f};
+        scene.bodies.push_back(bead);
+        previous = bead;
+        previousAnchor = Vec2{};
     }
 }
 

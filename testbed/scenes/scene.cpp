@@ -46,7 +46,7 @@ const std::vector<SceneInfo>& allScenes() {
         {"distance_pendulum",
          "the pendulum on a 5 m distance joint (a rod) instead of a pin, spun at 100 rad/s",
          buildDistancePendulum},
-        {"rope", "30 planks tied end to end by 0.3-0.6 m ropes (distance limits), released level",
+        {"rope", "30 beads tied by 0.5-1 m ropes (distance joint limits), released level",
          buildRope},
     };
     return scenes;

@@ -74,6 +74,8 @@ const RecordedHashes kRecorded[] = {
     {"chain_drag",        {0xabbb55da52ff6c0aull, 0xcae02b53083dde97ull, 0x416617442ef48f8eull, 0x31d96c819badce99ull}},
     {"ragdoll",           {0x986a78436167194dull, 0xc396f341c5a179eeull, 0x45897ec3e5b175b9ull, 0x07cc21557f9f5b4full}},
     {"ragdoll_motorized", {0xded5e98975600d27ull, 0x7e87e83c497924aeull, 0x217b56c1cf46214bull, 0xe47cfe25e0627942ull}},
+    {"distance_pendulum", {0xd1964694720a8e70ull, 0xeb7346be27492100ull, 0x1e35eace498130d8ull, 0x1e415cc507746a14ull}},
+    {"rope",              {0xa68318da37632d94ull, 0x49db622000f4f379ull, 0x96b6c83077dca2d5ull, 0x107b784abe487d50ull}},
 };
 // clang-format on
 
