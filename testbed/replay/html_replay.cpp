@@ -211,6 +211,13 @@ void appendRun(std::string& out, const Run& run) {
     std::vector<long long> previous;
     appendArray(out, run.jointAnchors,
                 [&](const std::vector<float>& a, std::size_t) { appendAnchors(out, a, previous); });
+    if (run.hasLinks) {
+        out += ",\"separations\":";
+        appendArray(out, run.jointSeparations, [&](const std::vector<float>& frame, std::size_t) {
+            appendArray(out, frame,
+                        [&](float v, std::size_t) { appendQuanta(out, v, kOffsetQuanta); });
+        });
+    }
     out += '}';
 }
 
@@ -221,7 +228,9 @@ void appendRun(std::string& out, const Run& run) {
 //       "label", "maxSeparation": [m, per frame],
 //       "bodies": [{"static", "first": frame, "poses": [x, y, angle, ...],
 //                   "shapes": [{"circle": [x, y, r]} or {"polygon": [x, y, x, y, ...]}]}],
-//       "joints": [[ax, ay, bx, by, ...] per frame]}]}]}
+//       "joints": [[ax, ay, bx, by, ...] per frame],
+//       "separations": [[s, ...] per frame], only when some joint's anchors are meant to be
+//                      apart (a distance joint), each joint's separation in offsetQuantum}]}]}
 // Shapes are in m in the body frame. Poses and anchor A (ax, ay) count poseQuantum and are
 // delta coded (appendDelta); (bx, by) is anchor B - anchor A in offsetQuantum.
 std::string replayJson(const std::vector<Recording>& recordings) {
@@ -312,6 +321,11 @@ constexpr const char* kScript = R"JS(
                 return previous[i % 3] * data.poseQuantum;
             });
         });
+        if (run.separations) {
+            run.separations = run.separations.map(function (frame) {
+                return frame.map(function (v) { return v === null ? null : v * data.offsetQuantum; });
+            });
+        }
         var slots = [];
         run.joints = run.joints.map(function (anchors) {
             return anchors.map(function (v, i) {
@@ -560,20 +574,33 @@ constexpr const char* kScript = R"JS(
         });
 
         // Joints: anchor A a filled dot, anchor B a ring; apart, a red segment joins them and
-        // a red circle marks any joint beyond the slop even when the gap is under a pixel.
+        // a red circle marks any joint beyond the slop even when the gap is under a pixel. A
+        // joint whose anchors are meant to be apart (a distance joint) is a grey line, red only
+        // where its separation is not zero.
         var anchors = run.joints[frame] || [];
+        var separations = run.separations ? (run.separations[frame] || []) : null;
         for (var j = 0; j + 3 < anchors.length; j += 4) {
             var ax = anchors[j], ay = anchors[j + 1], dx = anchors[j + 2], dy = anchors[j + 3];
             if (!num(ax) || !num(ay) || !num(dx) || !num(dy)) continue;
             var x0 = sx(ax), y0 = sy(ay), x1 = sx(ax + dx), y1 = sy(ay + dy);
-            if (dx !== 0 || dy !== 0) {
+            var gap = Math.sqrt(dx * dx + dy * dy);
+            if (separations) {
+                ctx.strokeStyle = '#7f8c8d';
+                ctx.lineWidth = dpr;
+                ctx.beginPath();
+                ctx.moveTo(x0, y0);
+                ctx.lineTo(x1, y1);
+                ctx.stroke();
+                gap = num(separations[j / 4]) ? separations[j / 4] : 0;
+            }
+            if (gap !== 0) {
                 ctx.strokeStyle = '#e01010';
                 ctx.lineWidth = 2 * dpr;
                 ctx.beginPath();
                 ctx.moveTo(x0, y0);
                 ctx.lineTo(x1, y1);
                 ctx.stroke();
-                if (Math.sqrt(dx * dx + dy * dy) > data.slop) {
+                if (gap > data.slop) {
                     ctx.lineWidth = dpr;
                     ctx.beginPath();
                     ctx.arc(x1, y1, 6 * dpr, 0, 2 * Math.PI);

@@ -53,16 +53,20 @@ public:
             track.poses.push_back(t.q.angle());
         }
         std::vector<float> anchors;
+        std::vector<float> separations;
         float maxSeparation = 0.0f;
         for (JointId joint : world.jointIds()) {
             Vec2 a = world.jointAnchorA(joint);
             Vec2 b = world.jointAnchorB(joint);
             anchors.insert(anchors.end(), {a.x, a.y, b.x, b.y});
             float separation = world.jointSeparation(joint);
+            separations.push_back(separation);
             if (!(separation <= maxSeparation)) maxSeparation = separation;  // NaN wins
+            run_.hasLinks = run_.hasLinks || world.jointType(joint) != JointType::Revolute;
         }
         run_.jointAnchors.push_back(std::move(anchors));
         run_.maxSeparation.push_back(maxSeparation);
+        run_.jointSeparations.push_back(std::move(separations));
     }
 
 private:

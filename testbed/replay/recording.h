@@ -33,6 +33,11 @@ struct Run {
     /// Per frame: for each joint, anchor A then anchor B (x, y, x, y), in world coordinates.
     std::vector<std::vector<float>> jointAnchors;
     std::vector<float> maxSeparation;  ///< per frame, largest joint separation, m
+    /// Per frame, each joint's separation, m.
+    std::vector<std::vector<float>> jointSeparations;
+    /// Whether some joint's anchors are meant to be apart (a distance joint), so that its
+    /// separation is not the gap between them.
+    bool hasLinks = false;
 };
 
 struct Recording {

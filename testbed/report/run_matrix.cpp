@@ -54,9 +54,13 @@ SnapshotFrame captureFrame(const World& world, const std::string& caption) {
             }
         }
     }
+    bool links = false;
     for (JointId joint : world.jointIds()) {
         frame.joints.push_back({world.jointAnchorA(joint), world.jointAnchorB(joint)});
+        frame.separations.push_back(world.jointSeparation(joint));
+        links = links || world.jointType(joint) != JointType::Revolute;
     }
+    if (!links) frame.separations.clear();  // every separation is the anchors' gap
     return frame;
 }
 

@@ -782,13 +782,22 @@ std::string drawFrameContents(const SnapshotFrame& frame, const WorldView& w) {
                    "\"/>\n";
         }
     }
-    for (const auto& [a, b] : frame.joints) {
+    for (std::size_t k = 0; k < frame.joints.size(); ++k) {
+        const auto& [a, b] = frame.joints[k];
         if (!finite(a) || !finite(b)) continue;
+        double gap = std::hypot(static_cast<double>(b.x) - a.x, static_cast<double>(b.y) - a.y);
+        const bool link = k < frame.separations.size();
+        if (link && gap > kJointHair) {
+            // A rod or rope between the anchors, drawn under them.
+            out += "<line x1=\"" + num(w.px(a.x)) + "\" y1=\"" + num(w.py(a.y)) + "\" x2=\"" +
+                   num(w.px(b.x)) + "\" y2=\"" + num(w.py(b.y)) +
+                   "\" stroke=\"#7f8c8d\" stroke-width=\"1.2\"/>\n";
+        }
         out += "<circle class=\"anchor\" cx=\"" + num(w.px(a.x)) + "\" cy=\"" + num(w.py(a.y)) +
                "\" r=\"2.2\"/>\n";
         out += "<circle class=\"anchor\" cx=\"" + num(w.px(b.x)) + "\" cy=\"" + num(w.py(b.y)) +
                "\" r=\"2.2\"/>\n";
-        double gap = std::hypot(static_cast<double>(b.x) - a.x, static_cast<double>(b.y) - a.y);
+        if (link) gap = frame.separations[k];
         if (gap > kJointHair) {
             // Drawn over the dots with round caps, so even a gap far below a pixel shows red.
             out += "<line class=\"separation\" x1=\"" + num(w.px(a.x)) + "\" y1=\"" +

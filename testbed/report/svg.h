@@ -65,6 +65,10 @@ struct SnapshotFrame {
     std::vector<CircleShape> circles;
     std::vector<PolygonShape> polygons;
     std::vector<std::pair<Vec2, Vec2>> joints;  ///< anchor A and anchor B of each joint
+    /// Each joint's separation (World::jointSeparation), m, where it is not the gap between its
+    /// anchors (a distance joint's anchors are meant to be apart); empty: every joint's
+    /// separation is its gap.
+    std::vector<float> separations;
 };
 
 /// The frames side by side, all at one common scale fitted to the union of their contents
