@@ -79,8 +79,12 @@ inline void prepareLength(const ConstraintBodies& b, LengthPart& p, const Solver
 }
 
 /// Cdot along u at the current velocities.
+/// (Each anchor's velocity is formed first, as Box2D 2.4.1's distance joint does, so that its
+/// rod agrees with that joint bit for bit where the inputs do.)
 inline float lengthSpeed(const LengthPart& p, const SolverVelocity& A, const SolverVelocity& B) {
-    return dot(p.u, B.v + cross(B.w, p.rB) - A.v - cross(A.w, p.rA));
+    const Vec2 vA = A.v + cross(A.w, p.rA);
+    const Vec2 vB = B.v + cross(B.w, p.rB);
+    return dot(p.u, vB - vA);
 }
 
 /// Applies lambda along u (B gets +lambda u, A the opposite).

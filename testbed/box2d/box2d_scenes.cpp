@@ -66,6 +66,33 @@ Box2dScene buildSpinningPendulum(float spin, bool continuous) {
     return scene;
 }
 
+Box2dScene buildDistancePendulum(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    const b2Vec2 pivot(0.0f, 10.0f);
+    const float spin = 100.0f;
+    b2Body* anchor = staticBody(*scene.world);
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position = pivot + b2Vec2(0.0f, -5.0f);
+    def.angularVelocity = spin;
+    def.linearVelocity = b2Cross(spin, def.position - pivot);
+    b2Body* body = scene.world->CreateBody(&def);
+    b2CircleShape circle;
+    circle.m_radius = 0.5f;
+    body->CreateFixture(&circle, 1.0f);
+    b2DistanceJointDef jd;
+    jd.bodyA = anchor;
+    jd.bodyB = body;
+    jd.localAnchorA = pivot;
+    jd.localAnchorB.SetZero();
+    jd.length = 5.0f;  // a rod: rigid (stiffness 0) at min = max = length
+    jd.minLength = 5.0f;
+    jd.maxLength = 5.0f;
+    scene.joints.push_back(scene.world->CreateJoint(&jd));
+    scene.bodies.push_back(body);
+    return scene;
+}
+
 Box2dScene buildLimitedPendulum(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);

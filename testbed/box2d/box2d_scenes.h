@@ -33,5 +33,7 @@ Box2dScene buildBridge(bool continuous = false);
 Box2dScene buildBridgeHeavy(bool continuous = false);
 Box2dScene buildChain(bool continuous = false);
 Box2dScene buildMassRatio(bool continuous = false);
+/// The pendulum of buildSpinningPendulum(100) with a distance joint (a rod, min = max = 5 m).
+Box2dScene buildDistancePendulum(bool continuous = false);
 
 }  // namespace pivot::box2d

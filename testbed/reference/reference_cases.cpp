@@ -21,6 +21,7 @@ const std::vector<ReferenceCase>& referenceCases() {
          [](bool continuous) { return box2d::buildSpinningPendulum(100.0f, continuous); }},
         {"pendulum_limit", false, scenes::buildLimitedPendulum, box2d::buildLimitedPendulum},
         {"motor_wheel", false, scenes::buildMotorWheel, box2d::buildMotorWheel},
+        {"distance_pendulum", false, scenes::buildDistancePendulum, box2d::buildDistancePendulum},
         {"double_pendulum", true, scenes::buildDoublePendulum, box2d::buildDoublePendulum},
         {"bridge", true, scenes::buildBridge, box2d::buildBridge},
         {"chain", true, scenes::buildChain, box2d::buildChain},
@@ -80,6 +81,15 @@ scenes::Scene buildPivotCase(const ReferenceCase& c, const scenes::SceneOptions&
     return scene;
 }
 
+// As World::jointSeparation: a pin's anchor gap; how far a distance joint's length is outside
+// [min, max].
+double box2dSeparation(const b2Joint& joint) {
+    const double gap = (joint.GetAnchorB() - joint.GetAnchorA()).Length();
+    if (joint.GetType() != e_distanceJoint) return gap;
+    const auto& distance = static_cast<const b2DistanceJoint&>(joint);
+    return std::max({0.0, distance.GetMinLength() - gap, gap - distance.GetMaxLength()});
+}
+
 double box2dEnergy(const box2d::Box2dScene& scene) {
     const b2Vec2 g = scene.world->GetGravity();
     double energy = 0.0;
@@ -119,7 +129,7 @@ scenes::RunMetrics runBox2d(box2d::Box2dScene& scene, const scenes::RunSettings&
 
         double worst = 0.0;
         for (const b2Joint* joint : scene.joints) {
-            double s = (joint->GetAnchorB() - joint->GetAnchorA()).Length();
+            double s = box2dSeparation(*joint);
             if (!(s <= worst)) worst = s;
             sumSquares += s * s;
             ++samples;
