@@ -105,7 +105,9 @@ struct JointGrid {
     std::vector<JointId> joints;
 };
 
-void buildGrid(JointGrid& grid, int n, bool mixedSolvers) {
+// With `distanceJoints`, the horizontal links are distance joints (rods, every third a rope of
+// 0.9 to 1.1 m, every fifth with a spring), so a coloured island holds both joint types.
+void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool distanceJoints = false) {
     World& world = grid.world;
     std::vector<BodyId> bodies;
     ShapeDef shape;
@@ -128,7 +130,18 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers) {
                 grid.joints.push_back(world.createJoint(joint));
             };
             if (row > 0) link(bodies[(row - 1) * n + col], {float(col), 0.5f - float(row)});
-            if (col > 0) link(bodies[row * n + col - 1], {float(col) - 0.5f, -float(row)});
+            if (col > 0 && distanceJoints) {
+                DistanceJointDef joint;
+                joint.bodyA = bodies[row * n + col - 1];
+                joint.bodyB = body;
+                const std::size_t k = grid.joints.size();
+                if (k % 3 == 0) joint.limit = {true, 0.9f, 1.1f};
+                if (k % 5 == 0) joint.spring = {true, 4.0f, 0.3f};
+                if (mixedSolvers) joint.positionSolver = solvers[k % 4];
+                grid.joints.push_back(world.createJoint(joint));
+            } else if (col > 0) {
+                link(bodies[row * n + col - 1], {float(col) - 0.5f, -float(row)});
+            }
         }
     }
 }
@@ -155,12 +168,12 @@ void buildPyramid(World& world, int rows, bool withGround = true) {
     }
 }
 
-std::uint64_t gridHash(int workers, bool mixed, int steps) {
+std::uint64_t gridHash(int workers, bool mixed, int steps, bool distanceJoints = false) {
     WorldDef def;
     def.workerCount = workers;
     def.enableSleep = false;
     JointGrid grid{World(def), {}};
-    buildGrid(grid, 30, mixed);
+    buildGrid(grid, 30, mixed, distanceJoints);
     for (int i = 0; i < steps; ++i) grid.world.step(kDt);
     return grid.world.stateHash();
 }
@@ -192,6 +205,19 @@ TEST(TeamSolver, AJointGridStepsToTheSameBitsOnAnyNumberOfWorkers) {
         EXPECT_EQ(gridHash(2, mixed, 120), one) << "mixed " << mixed;
         EXPECT_EQ(gridHash(3, mixed, 120), one) << "mixed " << mixed;
     }
+}
+
+TEST(TeamSolver, AGridOfBothJointTypesStepsToTheSameBitsOnAnyNumberOfWorkers) {
+    // Revolute and distance joints, every strategy, in one coloured island.
+    JointGrid grid{World(WorldDef{}), {}};
+    buildGrid(grid, 30, true, true);
+    grid.world.step(kDt);
+    ASSERT_EQ(grid.world.lastStepStats().islandCount, 1);
+    ASSERT_GE(grid.world.lastStepStats().jointCount, kColoringThreshold);
+    const std::uint64_t one = gridHash(1, true, 120, true);
+    EXPECT_EQ(gridHash(2, true, 120, true), one);
+    EXPECT_EQ(gridHash(3, true, 120, true), one);
+    EXPECT_EQ(gridHash(4, true, 120, true), one);
 }
 
 TEST(TeamSolver, APyramidStepsToTheSameBitsOnAnyNumberOfWorkers) {
