@@ -72,6 +72,13 @@ constexpr float kDefaultBaumgarteBias = 0.2f;
 constexpr float kDefaultPseudoVelocityBias = 0.2f;
 constexpr float kDefaultNgsBias = 1.0f;
 
+/// A pulley joint's ratio lies in [kMinPulleyRatio, 1 / kMinPulleyRatio]: beyond, one side's
+/// share of the effective mass vanishes and the constraint is as good as one-sided.
+constexpr float kMinPulleyRatio = 0.01f;
+/// m: a pulley side shorter than this has no reliable direction (its rope's angle is lost in
+/// the rounding of the positions), and is not held.
+constexpr float kMinPulleyLength = 10.0f * kLinearSlop;
+
 /// Step defaults: iterations of the velocity and position phases.
 constexpr int kDefaultVelocityIterations = 8;
 constexpr int kDefaultPositionIterations = 3;

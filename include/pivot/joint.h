@@ -21,9 +21,10 @@ namespace pivot {
 enum class JointType : std::uint8_t {
     Revolute,
     Distance,
+    Pulley,
 };
 
-/// The type's name: "revolute", "distance"; "invalid" for a value out of range.
+/// The type's name: "revolute", "distance", "pulley"; "invalid" for a value out of range.
 const char* jointTypeName(JointType type);
 
 /// Bounds on the joint angle (angleB - angleA - referenceAngle), rad, lower <= upper. The limit
@@ -141,6 +142,35 @@ struct DistanceJointDef {
     std::optional<float> letGoSeparation;
     bool collideConnected = false;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
+};
+
+/// Everything needed to create a pulley joint: anchor A hangs from a fixed point in the world
+/// (groundAnchorA) and anchor B from another, and a rope over the two wheels keeps
+///   lengthA + ratio * lengthB = constant,
+/// where each length runs from the ground anchor to the body's anchor. A scalar constraint,
+/// corrected by the joint's PositionSolver. As in Box2D the rope pushes as well as pulls (it
+/// never goes slack), and a side shorter than kMinPulleyLength has no direction and is not
+/// held: keep both loads below their wheels.
+struct PulleyJointDef {
+    BodyId bodyA;
+    BodyId bodyB;
+    Vec2 groundAnchorA;  ///< m, world
+    Vec2 groundAnchorB;
+    Vec2 localAnchorA;  ///< m, in body A's frame (origin-relative)
+    Vec2 localAnchorB;
+    /// > 0, at least kMinPulleyRatio and at most 1 / kMinPulleyRatio: how much faster side B's
+    /// length changes than side A's (a block and tackle).
+    float ratio = 1.0f;
+    /// m, each at least kMinPulleyLength. Unset: the anchors' distances when the joint is
+    /// created.
+    std::optional<float> lengthA;
+    std::optional<float> lengthB;
+    std::optional<PositionSolver> positionSolver;
+    std::optional<float> biasFactor;
+    /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation).
+    std::optional<float> letGoSeparation;
+    bool collideConnected = true;  ///< as Box2D's pulley: the two loads may touch
+    std::uint64_t userData = 0;
 };
 
 /// A mouse joint pulls one point of a body towards a target that the caller moves, like a

@@ -260,6 +260,7 @@ public:
     // --- joints -----------------------------------------------------------------------------
     JointId createJoint(const RevoluteJointDef& def);
     JointId createJoint(const DistanceJointDef& def);
+    JointId createJoint(const PulleyJointDef& def);
     void destroyJoint(JointId id);
     bool isValid(JointId id) const;
     int jointCount() const;
@@ -272,7 +273,8 @@ public:
     Vec2 jointAnchorA(JointId id) const;  ///< m, the pin on body A in world coordinates
     Vec2 jointAnchorB(JointId id) const;  ///< m, the pin on body B in world coordinates
     /// m, how far the joint has come apart: for a revolute joint |anchorB - anchorA|, for a
-    /// distance joint how far its length is from its rest length (a rod) or outside its limit.
+    /// distance joint how far its length is from its rest length (a rod) or outside its limit,
+    /// for a pulley joint |lengthA + ratio lengthB - the same at creation|.
     float jointSeparation(JointId id) const;
     /// m, |anchorB - anchorA|.
     float jointLength(JointId id) const;
@@ -302,7 +304,7 @@ public:
     /// joint keeps reporting the force it held when it fell asleep).
     Vec2 jointReactionForce(JointId id) const;
     /// N m, the torque about the pin the joint applied to body B in that step (revolute: motor
-    /// plus limits; a distance joint applies none).
+    /// plus limits; distance and pulley joints apply none).
     float jointReactionTorque(JointId id) const;
 
     // Revolute joints (the calls from here to setJointMotor refuse other types).
@@ -324,6 +326,14 @@ public:
     void setDistanceJointLimit(JointId id, const LengthLimit& limit);
     JointSpring distanceJointSpring(JointId id) const;
     void setDistanceJointSpring(JointId id, const JointSpring& spring);
+
+    // Pulley joints (these calls refuse other types).
+    Vec2 pulleyJointGroundAnchorA(JointId id) const;
+    Vec2 pulleyJointGroundAnchorB(JointId id) const;
+    float pulleyJointRatio(JointId id) const;
+    /// m, the current length of side A (ground anchor A to anchor A), and of side B.
+    float pulleyJointLengthA(JointId id) const;
+    float pulleyJointLengthB(JointId id) const;
 
     PositionSolver jointPositionSolver(JointId id) const;
     /// Takes effect from the next step and wakes the joint's bodies. A bias factor left to its

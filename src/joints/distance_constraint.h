@@ -72,7 +72,7 @@ struct DistanceConstraint {
         if (part.u == Vec2{}) impulse = lowerImpulse = upperImpulse = 0.0f;
         setLimitTerms(step.invDt);
         if (spring) prepareSpring(d.hertz, d.dampingRatio, d.length, step.dt);
-        const float separation = d.separation(part.length);
+        const float separation = d.separationAt(part.length);
         return separation * separation;
     }
 

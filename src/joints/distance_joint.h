@@ -38,8 +38,12 @@ struct DistanceJoint {
                std::isfinite(invDt * upperImpulse) && std::isfinite(invDt * axialImpulse());
     }
     void clearImpulses() { impulse = lowerImpulse = upperImpulse = 0.0f; }
-    /// m, how far a joint of this length is from what it allows.
-    float separation(float currentLength) const {
+    /// m, how far the joint, its anchors (in world coordinates) where they are, is from what it
+    /// allows.
+    float separation(Vec2 anchorA, Vec2 anchorB) const {
+        return separationAt(distance(anchorA, anchorB));
+    }
+    float separationAt(float currentLength) const {
         if (isRod()) return std::fabs(currentLength - rodLength());
         if (!enableLimit) return 0.0f;
         if (currentLength < minLength) return minLength - currentLength;

@@ -1,8 +1,8 @@
 // Joint storage: what persists between steps for every joint, whatever its type. The fields all
 // types share are here; each type's own settings and accumulated impulses are its alternative of
-// `data` (revolute_joint.h, distance_joint.h), in the order of joints/joint_types.h and of the
-// public JointType. The per-step solver
-// state lives in each type's constraint, built afresh for each island each step.
+// `data` (revolute_joint.h, distance_joint.h, pulley_joint.h), in the order of joints/joint_types.h
+// and of the public JointType. The per-step solver state lives in each type's constraint, built
+// afresh for each island each step.
 #pragma once
 
 #include <cmath>
@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "joints/distance_joint.h"
+#include "joints/pulley_joint.h"
 #include "joints/revolute_joint.h"
 #include "model/body_edge.h"
 #include "pivot/joint.h"
@@ -17,7 +18,7 @@
 
 namespace pivot {
 
-using JointData = std::variant<RevoluteJoint, DistanceJoint>;
+using JointData = std::variant<RevoluteJoint, DistanceJoint, PulleyJoint>;
 
 struct Joint {
     BodyEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
@@ -55,8 +56,9 @@ struct Joint {
     }
     /// m, how far the joint is from what it allows with the bodies at these transforms.
     float separation(const Transform& xfA, const Transform& xfB) const {
-        const float d = anchorDistance(xfA, xfB);
-        return std::visit([&](const auto& data) { return data.separation(d); }, data);
+        const Vec2 pA = transformPoint(xfA, localAnchorA);
+        const Vec2 pB = transformPoint(xfB, localAnchorB);
+        return std::visit([&](const auto& data) { return data.separation(pA, pB); }, data);
     }
     /// Whether the stored impulses, and the forces and torques they stand for (impulse / dt),
     /// are all finite: what the reaction queries report must be.

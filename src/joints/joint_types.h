@@ -13,6 +13,7 @@
 
 #include "joints/distance_constraint.h"
 #include "joints/joint.h"
+#include "joints/pulley_constraint.h"
 #include "joints/revolute_constraint.h"
 #include "pivot/solvers.h"
 
@@ -34,7 +35,8 @@ struct JointTypeList {
     }
 };
 
-using JointConstraintTypes = JointTypeList<RevoluteConstraint, DistanceConstraint>;
+using JointConstraintTypes =
+    JointTypeList<RevoluteConstraint, DistanceConstraint, PulleyConstraint>;
 
 constexpr int kJointTypeCount = JointConstraintTypes::kCount;
 constexpr int kJointGroupCount = kPositionSolverCount * kJointTypeCount;

@@ -74,6 +74,15 @@ inline void checkRestLength(const char* call, const char* field, float length) {
     }
 }
 
+inline void checkPulleyLength(const char* call, const char* field, float length) {
+    requireFinite(call, field, length);
+    if (!(length >= kMinPulleyLength && length <= kMaxCoordinate)) {
+        fail(call, std::string(field) + " must be in [kMinPulleyLength, kMaxCoordinate] (" +
+                       formatFloat(kMinPulleyLength) + " to " + formatFloat(kMaxCoordinate) +
+                       " m) (got " + formatFloat(length) + ")");
+    }
+}
+
 inline void checkLengthLimit(const char* call, const std::string& field, const LengthLimit& limit) {
     requireInRange(call, (field + ".min").c_str(), limit.min, 0.0f, kMaxCoordinate);
     requireInRange(call, (field + ".max").c_str(), limit.max, 0.0f, kMaxCoordinate);

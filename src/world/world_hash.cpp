@@ -34,6 +34,16 @@ void hashJointData(StateHasher& h, const DistanceJoint& j) {
     h.add(j.upperImpulse);
     h.add(j.axis);
 }
+void hashJointData(StateHasher& h, const PulleyJoint& j) {
+    h.add(static_cast<std::int32_t>(JointType::Pulley));
+    h.add(j.groundAnchorA);
+    h.add(j.groundAnchorB);
+    h.add(j.lengthA);
+    h.add(j.lengthB);
+    h.add(j.ratio);
+    h.add(j.impulse);
+    h.add(j.axisB);
+}
 }  // namespace
 
 // Everything a public call can change goes in, so that "the hash is unchanged" means "the world

@@ -21,6 +21,7 @@ const char* jointTypeName(JointType type) {
     switch (type) {
         case JointType::Revolute: return "revolute";
         case JointType::Distance: return "distance";
+        case JointType::Pulley: return "pulley";
     }
     return "invalid";
 }
@@ -157,6 +158,55 @@ JointId World::createJoint(const DistanceJointDef& def) {
     return w.addJoint(joint);
 }
 
+JointId World::createJoint(const PulleyJointDef& def) {
+    const char* call = "World::createJoint";
+    Impl& w = *impl_;
+    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
+    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
+    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    requireCoordinate(call, "def.groundAnchorA", def.groundAnchorA);
+    requireCoordinate(call, "def.groundAnchorB", def.groundAnchorB);
+    requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
+    requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
+    requireInRange(call, "def.ratio", def.ratio, kMinPulleyRatio, 1.0f / kMinPulleyRatio);
+    PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
+    checkSolver(call, "def.positionSolver", solver);
+    if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
+    if (def.letGoSeparation) {
+        requireNonNegative(call, "def.letGoSeparation", *def.letGoSeparation);
+    }
+    const float currentA =
+        distance(transformPoint(w.bodies[a].xf, def.localAnchorA), def.groundAnchorA);
+    const float currentB =
+        distance(transformPoint(w.bodies[b].xf, def.localAnchorB), def.groundAnchorB);
+    const float lengthA = def.lengthA.value_or(currentA);
+    const float lengthB = def.lengthB.value_or(currentB);
+    checkPulleyLength(call, def.lengthA ? "def.lengthA" : "def.lengthA (anchor A's distance)",
+                      lengthA);
+    checkPulleyLength(call, def.lengthB ? "def.lengthB" : "def.lengthB (anchor B's distance)",
+                      lengthB);
+
+    Joint joint;
+    PulleyJoint& pulley = joint.data.emplace<PulleyJoint>();
+    joint.edges[0].body = a;
+    joint.edges[1].body = b;
+    joint.localAnchorA = def.localAnchorA;
+    joint.localAnchorB = def.localAnchorB;
+    joint.solver = solver;
+    joint.hasBiasOverride = def.biasFactor.has_value();
+    joint.biasOverride = def.biasFactor.value_or(0.0f);
+    joint.collideConnected = def.collideConnected;
+    joint.hasLetGoOverride = def.letGoSeparation.has_value();
+    joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
+    joint.userData = def.userData;
+    pulley.groundAnchorA = def.groundAnchorA;
+    pulley.groundAnchorB = def.groundAnchorB;
+    pulley.lengthA = lengthA;
+    pulley.lengthB = lengthB;
+    pulley.ratio = def.ratio;
+    return w.addJoint(joint);
+}
+
 void World::destroyJoint(JointId id) {
     impl_->removeJoint(impl_->jointIndex("World::destroyJoint", id));
 }
@@ -227,6 +277,9 @@ Vec2 World::jointReactionForce(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndex("World::jointReactionForce", id)];
     if (const auto* distance = std::get_if<DistanceJoint>(&j.data)) {
         return (j.impulseInvDt * distance->axialImpulse()) * distance->axis;
+    }
+    if (const auto* pulley = std::get_if<PulleyJoint>(&j.data)) {
+        return (j.impulseInvDt * -pulley->ratio * pulley->impulse) * pulley->axisB;
     }
     return j.impulseInvDt * std::get<RevoluteJoint>(j.data).impulse;
 }
@@ -358,6 +411,30 @@ void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     j.biasOverride = biasFactor.value_or(0.0f);
     wakeUp(impl_->bodies[j.bodyA()]);
     wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+Vec2 World::pulleyJointGroundAnchorA(JointId id) const {
+    return impl_->jointData<PulleyJoint>("World::pulleyJointGroundAnchorA", id, JointType::Pulley)
+        .groundAnchorA;
+}
+Vec2 World::pulleyJointGroundAnchorB(JointId id) const {
+    return impl_->jointData<PulleyJoint>("World::pulleyJointGroundAnchorB", id, JointType::Pulley)
+        .groundAnchorB;
+}
+float World::pulleyJointRatio(JointId id) const {
+    return impl_->jointData<PulleyJoint>("World::pulleyJointRatio", id, JointType::Pulley).ratio;
+}
+float World::pulleyJointLengthA(JointId id) const {
+    const char* call = "World::pulleyJointLengthA";
+    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Pulley)];
+    return distance(transformPoint(impl_->bodies[j.bodyA()].xf, j.localAnchorA),
+                    std::get<PulleyJoint>(j.data).groundAnchorA);
+}
+float World::pulleyJointLengthB(JointId id) const {
+    const char* call = "World::pulleyJointLengthB";
+    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Pulley)];
+    return distance(transformPoint(impl_->bodies[j.bodyB()].xf, j.localAnchorB),
+                    std::get<PulleyJoint>(j.data).groundAnchorB);
 }
 
 std::uint64_t World::jointUserData(JointId id) const {

@@ -93,6 +93,28 @@ Box2dScene buildDistancePendulum(bool continuous) {
     return scene;
 }
 
+Box2dScene buildPulley(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    b2PolygonShape box;
+    box.SetAsBox(0.5f, 0.5f);
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(-2.0f, 5.0f);
+    b2Body* heavy = scene.world->CreateBody(&def);
+    heavy->CreateFixture(&box, 2.0f);
+    def.position.Set(2.5f, 5.0f);
+    b2Body* light = scene.world->CreateBody(&def);
+    light->CreateFixture(&box, 1.0f);
+    b2PulleyJointDef jd;
+    jd.Initialize(heavy, light, b2Vec2(-2.0f, 10.0f), b2Vec2(2.0f, 10.0f),
+                  heavy->GetWorldPoint(b2Vec2(0.0f, 0.5f)),
+                  light->GetWorldPoint(b2Vec2(0.0f, 0.5f)), 1.5f);
+    scene.joints.push_back(scene.world->CreateJoint(&jd));
+    scene.bodies.push_back(heavy);
+    scene.bodies.push_back(light);
+    return scene;
+}
+
 Box2dScene buildLimitedPendulum(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);

@@ -35,5 +35,6 @@ Box2dScene buildChain(bool continuous = false);
 Box2dScene buildMassRatio(bool continuous = false);
 /// The pendulum of buildSpinningPendulum(100) with a distance joint (a rod, min = max = 5 m).
 Box2dScene buildDistancePendulum(bool continuous = false);
+Box2dScene buildPulley(bool continuous = false);
 
 }  // namespace pivot::box2d

@@ -22,6 +22,7 @@ const std::vector<ReferenceCase>& referenceCases() {
         {"pendulum_limit", false, scenes::buildLimitedPendulum, box2d::buildLimitedPendulum},
         {"motor_wheel", false, scenes::buildMotorWheel, box2d::buildMotorWheel},
         {"distance_pendulum", false, scenes::buildDistancePendulum, box2d::buildDistancePendulum},
+        {"pulley", false, scenes::buildPulley, box2d::buildPulley},
         {"double_pendulum", true, scenes::buildDoublePendulum, box2d::buildDoublePendulum},
         {"bridge", true, scenes::buildBridge, box2d::buildBridge},
         {"chain", true, scenes::buildChain, box2d::buildChain},
@@ -85,6 +86,14 @@ scenes::Scene buildPivotCase(const ReferenceCase& c, const scenes::SceneOptions&
 // [min, max].
 double box2dSeparation(const b2Joint& joint) {
     const double gap = (joint.GetAnchorB() - joint.GetAnchorA()).Length();
+    if (joint.GetType() == e_pulleyJoint) {
+        const auto& pulley = static_cast<const b2PulleyJoint&>(joint);
+        const double lengthA = (joint.GetAnchorA() - pulley.GetGroundAnchorA()).Length();
+        const double lengthB = (joint.GetAnchorB() - pulley.GetGroundAnchorB()).Length();
+        return std::fabs(double(pulley.GetLengthA()) +
+                         double(pulley.GetRatio()) * pulley.GetLengthB() - lengthA -
+                         double(pulley.GetRatio()) * lengthB);
+    }
     if (joint.GetType() != e_distanceJoint) return gap;
     const auto& distance = static_cast<const b2DistanceJoint&>(joint);
     return std::max({0.0, distance.GetMinLength() - gap, gap - distance.GetMaxLength()});

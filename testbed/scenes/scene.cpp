@@ -48,6 +48,8 @@ const std::vector<SceneInfo>& allScenes() {
          buildDistancePendulum},
         {"rope", "30 beads tied by 0.5-1 m ropes (distance joint limits), released level",
          buildRope},
+        {"pulley", "two boxes on a 1.5:1 pulley, the lighter hung off its wheel and swinging",
+         buildPulley},
     };
     return scenes;
 }

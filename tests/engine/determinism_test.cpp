@@ -54,7 +54,8 @@ struct RecordedHashes {
 // World::stateHash of every scene with every position solver after 600 steps, so that any
 // change to the numerics (or to what the hash covers) is seen here and made on purpose. After
 // an intended change, regenerate the table with
-//   PIVOT_PRINT_HASHES=1 ./build/tests/engine/pivot-engine-tests --gtest_filter=Determinism.RecordedHashes
+//   PIVOT_PRINT_HASHES=1 ./build/tests/engine/pivot-engine-tests
+//   --gtest_filter=Determinism.RecordedHashes
 // which prints it in this form, and paste it over this one. Recorded with GCC 12 on x86-64
 // (Release and the Debug sanitizer build agree); other compilers and CPUs may differ
 // (docs/reliability.md).
@@ -76,6 +77,7 @@ const RecordedHashes kRecorded[] = {
     {"ragdoll_motorized", {0xded5e98975600d27ull, 0x7e87e83c497924aeull, 0x217b56c1cf46214bull, 0xe47cfe25e0627942ull}},
     {"distance_pendulum", {0xd1964694720a8e70ull, 0xeb7346be27492100ull, 0x1e35eace498130d8ull, 0x1e415cc507746a14ull}},
     {"rope",              {0xa68318da37632d94ull, 0x49db622000f4f379ull, 0x96b6c83077dca2d5ull, 0x107b784abe487d50ull}},
+    {"pulley",            {0xeeefd922f060bb30ull, 0x8c5fcf8031eabf19ull, 0xd34fb0c41a150427ull, 0x512c6b2eba8854aaull}},
 };
 // clang-format on
 

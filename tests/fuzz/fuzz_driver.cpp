@@ -464,6 +464,7 @@ private:
             {8, &Driver::createPolygon},
             {7, &Driver::createJoint},
             {3, &Driver::createDistanceJoint},
+            {2, &Driver::createPulleyJoint},
             {2, &Driver::createMouseJoint},
             {3, &Driver::destroyBody},
             {2, &Driver::destroyShape},
@@ -749,6 +750,73 @@ private:
             joints_.remember(id);
             if (world_->jointType(id) != JointType::Distance) {
                 failure("createJoint: not a distance joint");
+            }
+        });
+    }
+
+    static bool badPulleyLength(float length) {
+        return !(length >= kMinPulleyLength && length <= kMaxCoordinate);
+    }
+
+    void createPulleyJoint() {
+        if (world_->jointCount() >= kMaxJoints) {
+            destroyJoint();
+            return;
+        }
+        Arg<BodyId> a = pickBody();
+        Arg<BodyId> b = random_.chance(0.05f) ? a : pickBody();
+        PulleyJointDef def;
+        def.bodyA = a.value;
+        def.bodyB = b.value;
+        bool bad = a.bad || b.bad || a.value == b.value;
+        Arg<Vec2> groundA = values_->coordinate(15.0f);
+        Arg<Vec2> groundB = values_->coordinate(15.0f);
+        Arg<Vec2> localA = values_->coordinate(1.0f);
+        Arg<Vec2> localB = values_->coordinate(1.0f);
+        def.groundAnchorA = groundA.value;
+        def.groundAnchorB = groundB.value;
+        def.localAnchorA = localA.value;
+        def.localAnchorB = localB.value;
+        bad = bad || groundA.bad || groundB.bad || localA.bad || localB.bad;
+        if (hostile_ > 0.0f && random_.chance(0.1f)) {
+            def.ratio = random_.chance(0.5f) ? 0.0f : values_->garbage();
+            bad = true;
+        } else {
+            def.ratio = random_.uniform(0.5f, 2.0f);
+        }
+        const auto length = [&](std::optional<float>& field, const Arg<BodyId>& body, Vec2 local,
+                                Vec2 ground) {
+            if (random_.chance(0.4f)) {
+                Arg<float> l = values_->nonNegativeUpTo(8.0f, kMaxCoordinate);
+                field = l.value;
+                bad = bad || l.bad || badPulleyLength(l.value);
+            } else if (!bad && !body.bad) {
+                // The anchor's distance from its wheel, as the world measures it.
+                const Vec2 p = transformPoint(world_->bodyTransform(body.value), local);
+                bad = badPulleyLength(distance(p, ground));
+            }
+        };
+        length(def.lengthA, a, def.localAnchorA, def.groundAnchorA);
+        length(def.lengthB, b, def.localAnchorB, def.groundAnchorB);
+        if (random_.chance(0.7f)) {
+            Arg<PositionSolver> s = solver();
+            def.positionSolver = s.value;
+            bad = bad || s.bad;
+        }
+        if (random_.chance(0.3f)) {
+            Arg<float> bias = values_->fraction();
+            def.biasFactor = bias.value;
+            bad = bad || bias.bad;
+        }
+        def.collideConnected = random_.chance(0.7f);
+        def.userData = random_.next();
+        trace("createPulleyJoint a=" + idText(a.value) + " b=" + idText(b.value));
+        attempt("World::createJoint", verdict(bad), [&] {
+            JointId id = journal_.createJoint(def);
+            noteTag(id);
+            joints_.remember(id);
+            if (world_->jointType(id) != JointType::Pulley) {
+                failure("createJoint: not a pulley joint");
             }
         });
     }
@@ -1312,6 +1380,7 @@ private:
                     // Calls for one joint type, which refuse the others.
                     const bool notRevolute = !joint.bad && !isType(joint, JointType::Revolute);
                     const bool notDistance = !joint.bad && !isType(joint, JointType::Distance);
+                    const bool notPulley = !joint.bad && !isType(joint, JointType::Pulley);
                     std::vector<std::tuple<const char*, bool, std::function<void()>>> typed = {
                         {"World::jointMotorTorque", notRevolute,
                          [&] { w.jointMotorTorque(joint.value); }},
@@ -1323,6 +1392,12 @@ private:
                          [&] { w.distanceJointLimit(joint.value); }},
                         {"World::distanceJointSpring", notDistance,
                          [&] { w.distanceJointSpring(joint.value); }},
+                        {"World::pulleyJointRatio", notPulley,
+                         [&] { w.pulleyJointRatio(joint.value); }},
+                        {"World::pulleyJointLengthA", notPulley,
+                         [&] { w.pulleyJointLengthA(joint.value); }},
+                        {"World::pulleyJointGroundAnchorB", notPulley,
+                         [&] { w.pulleyJointGroundAnchorB(joint.value); }},
                     };
                     auto& q = typed[random_.below(static_cast<int>(typed.size()))];
                     attempt(std::get<0>(q), verdict(joint.bad || std::get<1>(q)), std::get<2>(q));

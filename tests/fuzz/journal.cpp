@@ -121,6 +121,20 @@ JointId Journal::createJoint(const DistanceJointDef& def) {
     return id;
 }
 
+JointId Journal::createJoint(const PulleyJointDef& def) {
+    JointId id = world_->createJoint(def);
+    lines_.push_back("pulley " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " +
+                     nameOf('b', def.bodyB) + " " + num(def.groundAnchorA) + " " +
+                     num(def.groundAnchorB) + " " + num(def.localAnchorA) + " " +
+                     num(def.localAnchorB) + " " + num(def.ratio) + " " +
+                     num(def.lengthA.has_value()) + " " + num(def.lengthA.value_or(0.0f)) + " " +
+                     num(def.lengthB.has_value()) + " " + num(def.lengthB.value_or(0.0f)) + " " +
+                     num(def.positionSolver ? int(*def.positionSolver) : -1) + " " +
+                     num(def.biasFactor.value_or(-1.0f)) + " " + num(def.collideConnected) + " " +
+                     num(def.letGoSeparation.value_or(-1.0f)));
+    return id;
+}
+
 MouseJointId Journal::createMouseJoint(const MouseJointDef& def) {
     MouseJointId id = world_->createMouseJoint(def);
     lines_.push_back("mouse " + nameNew('m', id) + " " + nameOf('b', def.body) + " " +
@@ -479,6 +493,30 @@ ReplayResult replay(std::istream& in) {
             def.spring.enabled = f.b();
             def.spring.hertz = f.f();
             def.spring.dampingRatio = f.f();
+            int solver = f.i();
+            if (solver >= 0) def.positionSolver = static_cast<PositionSolver>(solver);
+            float bias = f.f();
+            if (bias >= 0.0f) def.biasFactor = bias;
+            def.collideConnected = f.b();
+            const float letGo = f.f();
+            if (letGo >= 0.0f) def.letGoSeparation = letGo;
+            call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "pulley") {
+            std::string name = f.word();
+            PulleyJointDef def;
+            def.bodyA = body(f.word());
+            def.bodyB = body(f.word());
+            def.groundAnchorA = f.v();
+            def.groundAnchorB = f.v();
+            def.localAnchorA = f.v();
+            def.localAnchorB = f.v();
+            def.ratio = f.f();
+            const bool hasA = f.b();
+            const float lengthA = f.f();
+            if (hasA) def.lengthA = lengthA;
+            const bool hasB = f.b();
+            const float lengthB = f.f();
+            if (hasB) def.lengthB = lengthB;
             int solver = f.i();
             if (solver >= 0) def.positionSolver = static_cast<PositionSolver>(solver);
             float bias = f.f();

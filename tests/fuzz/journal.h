@@ -33,6 +33,7 @@ public:
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     JointId createJoint(const RevoluteJointDef& def);
     JointId createJoint(const DistanceJointDef& def);
+    JointId createJoint(const PulleyJointDef& def);
     MouseJointId createMouseJoint(const MouseJointDef& def);
     void destroyBody(BodyId id);
     void destroyShape(ShapeId id);
