@@ -21,7 +21,7 @@ void printLine(std::ostream& out, const char* format, ...) {
 }
 
 void printAgreement(std::ostream& out) {
-    out << "FullNGS against Box2D 2.4.1's revolute joint: largest difference of any body's\n"
+    out << "FullNGS against Box2D 2.4.1's joints: largest difference of any body's\n"
            "centre of mass and angle while stepping both (60 Hz, 8/3 iterations, Box2D's\n"
            "continuous collision off). Required: 1e-4 over 600 steps, or over the first 30 for\n"
            "chaotic scenes. 'identical' counts the steps, out of 600, before the first bit of\n"
