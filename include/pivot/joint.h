@@ -22,9 +22,12 @@ enum class JointType : std::uint8_t {
     Revolute,
     Distance,
     Pulley,
+    Friction,
+    Motor,
 };
 
-/// The type's name: "revolute", "distance", "pulley"; "invalid" for a value out of range.
+/// The type's name: "revolute", "distance", "pulley", "friction", "motor"; "invalid" for a value
+/// out of range.
 const char* jointTypeName(JointType type);
 
 /// Bounds on the joint angle (angleB - angleA - referenceAngle), rad, lower <= upper. The limit
@@ -170,6 +173,41 @@ struct PulleyJointDef {
     /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation).
     std::optional<float> letGoSeparation;
     bool collideConnected = true;  ///< as Box2D's pulley: the two loads may touch
+    std::uint64_t userData = 0;
+};
+
+/// Everything needed to create a friction joint: top-down friction between two bodies (a box
+/// sliding on a table seen from above, with the table as body A). The relative velocity of the
+/// anchors and the relative rotation are resisted with at most maxForce and maxTorque. Velocity
+/// only, as in Box2D: it holds nothing in place, so it has no position error and no strategy
+/// (World::setJointPositionSolver refuses it).
+struct FrictionJointDef {
+    BodyId bodyA;
+    BodyId bodyB;
+    Vec2 localAnchorA;  ///< m, in body A's frame (origin-relative)
+    Vec2 localAnchorB;
+    float maxForce = 0.0f;   ///< N, >= 0
+    float maxTorque = 0.0f;  ///< N m, >= 0
+    bool collideConnected = false;
+    std::uint64_t userData = 0;
+};
+
+/// Everything needed to create a motor joint: drives body B's origin towards linearOffset in
+/// body A's frame and its angle towards angleA + angularOffset, with at most maxForce and
+/// maxTorque, removing correctionFactor of the error per step (a platform following a path, a
+/// character's hand). Velocity only, as in Box2D: the correction is its purpose, not a strategy's
+/// (World::setJointPositionSolver refuses it).
+struct MotorJointDef {
+    BodyId bodyA;
+    BodyId bodyB;
+    /// m, in body A's frame. Unset: where body B's origin is when the joint is created.
+    std::optional<Vec2> linearOffset;
+    /// rad. Unset: angleB - angleA when the joint is created.
+    std::optional<float> angularOffset;
+    float maxForce = 1.0f;          ///< N, >= 0
+    float maxTorque = 1.0f;         ///< N m, >= 0
+    float correctionFactor = 0.3f;  ///< in [0, 1]
+    bool collideConnected = false;
     std::uint64_t userData = 0;
 };
 

@@ -261,6 +261,8 @@ public:
     JointId createJoint(const RevoluteJointDef& def);
     JointId createJoint(const DistanceJointDef& def);
     JointId createJoint(const PulleyJointDef& def);
+    JointId createJoint(const FrictionJointDef& def);
+    JointId createJoint(const MotorJointDef& def);
     void destroyJoint(JointId id);
     bool isValid(JointId id) const;
     int jointCount() const;
@@ -303,8 +305,8 @@ public:
     /// N, the force the joint applied to body B in the last step that solved it (a sleeping
     /// joint keeps reporting the force it held when it fell asleep).
     Vec2 jointReactionForce(JointId id) const;
-    /// N m, the torque about the pin the joint applied to body B in that step (revolute: motor
-    /// plus limits; distance and pulley joints apply none).
+    /// N m, the torque the joint applied to body B in that step (revolute: motor plus limits;
+    /// friction and motor: their angular row; distance and pulley joints apply none).
     float jointReactionTorque(JointId id) const;
 
     // Revolute joints (the calls from here to setJointMotor refuse other types).
@@ -335,12 +337,31 @@ public:
     float pulleyJointLengthA(JointId id) const;
     float pulleyJointLengthB(JointId id) const;
 
+    // Friction and motor joints (these calls refuse other types). Each setter wakes the joint's
+    // bodies.
+    float jointMaxForce(JointId id) const;
+    /// N, >= 0.
+    void setJointMaxForce(JointId id, float force);
+    float jointMaxTorque(JointId id) const;
+    /// N m, >= 0.
+    void setJointMaxTorque(JointId id, float torque);
+    // Motor joints.
+    Vec2 motorJointLinearOffset(JointId id) const;
+    void setMotorJointLinearOffset(JointId id, Vec2 offset);
+    float motorJointAngularOffset(JointId id) const;
+    void setMotorJointAngularOffset(JointId id, float offset);
+    float motorJointCorrectionFactor(JointId id) const;
+    /// In [0, 1].
+    void setMotorJointCorrectionFactor(JointId id, float factor);
+
     PositionSolver jointPositionSolver(JointId id) const;
     /// Takes effect from the next step and wakes the joint's bodies. A bias factor left to its
-    /// default follows the new solver's default.
+    /// default follows the new solver's default. Refused for friction and motor joints, which
+    /// have no position error to correct.
     void setJointPositionSolver(JointId id, PositionSolver solver);
     float jointBiasFactor(JointId id) const;
-    /// A value in [0, 1], or nullopt for the solver's default.
+    /// A value in [0, 1], or nullopt for the solver's default. Refused for friction and motor
+    /// joints.
     void setJointBiasFactor(JointId id, std::optional<float> biasFactor);
     /// The value of the def's userData, or the last one set; pivot2d never reads it.
     std::uint64_t jointUserData(JointId id) const;

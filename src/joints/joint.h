@@ -1,6 +1,7 @@
 // Joint storage: what persists between steps for every joint, whatever its type. The fields all
 // types share are here; each type's own settings and accumulated impulses are its alternative of
-// `data` (revolute_joint.h, distance_joint.h, pulley_joint.h), in the order of joints/joint_types.h
+// `data` (revolute_joint.h, distance_joint.h, pulley_joint.h,
+// velocity_joints.h), in the order of joints/joint_types.h
 // and of the public JointType. The per-step solver state lives in each type's constraint, built
 // afresh for each island each step.
 #pragma once
@@ -12,13 +13,15 @@
 #include "joints/distance_joint.h"
 #include "joints/pulley_joint.h"
 #include "joints/revolute_joint.h"
+#include "joints/velocity_joints.h"
 #include "model/body_edge.h"
 #include "pivot/joint.h"
 #include "pivot/math.h"
 
 namespace pivot {
 
-using JointData = std::variant<RevoluteJoint, DistanceJoint, PulleyJoint>;
+using JointData =
+    std::variant<RevoluteJoint, DistanceJoint, PulleyJoint, FrictionJoint, MotorJoint>;
 
 struct Joint {
     BodyEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
@@ -50,6 +53,11 @@ struct Joint {
         return hasLetGoOverride ? letGoOverride : worldSetting;
     }
     JointType type() const { return static_cast<JointType>(data.index()); }
+    /// Friction and motor joints act in the velocity phase only: no position error, no strategy.
+    bool isVelocityOnly() const {
+        return std::holds_alternative<FrictionJoint>(data) ||
+               std::holds_alternative<MotorJoint>(data);
+    }
     /// m, |anchorB - anchorA| with the bodies at these transforms.
     float anchorDistance(const Transform& xfA, const Transform& xfB) const {
         return distance(transformPoint(xfA, localAnchorA), transformPoint(xfB, localAnchorB));

@@ -15,6 +15,7 @@
 #include "joints/joint.h"
 #include "joints/pulley_constraint.h"
 #include "joints/revolute_constraint.h"
+#include "joints/velocity_constraints.h"
 #include "pivot/solvers.h"
 
 namespace pivot {
@@ -35,8 +36,8 @@ struct JointTypeList {
     }
 };
 
-using JointConstraintTypes =
-    JointTypeList<RevoluteConstraint, DistanceConstraint, PulleyConstraint>;
+using JointConstraintTypes = JointTypeList<RevoluteConstraint, DistanceConstraint, PulleyConstraint,
+                                           FrictionConstraint, MotorConstraint>;
 
 constexpr int kJointTypeCount = JointConstraintTypes::kCount;
 constexpr int kJointGroupCount = kPositionSolverCount * kJointTypeCount;
@@ -52,19 +53,26 @@ inline int jointGroup(const Joint& joint) {
 }
 
 // Each joint type's constraint names its storage (Constraint::Storage), in the same order as
-// the alternatives of JointData, so that a stored joint's type index is its constraint's.
-template <typename List, typename Data>
-struct StorageOrderMatches;
-template <typename... Constraints, typename... Storages>
-struct StorageOrderMatches<JointTypeList<Constraints...>, std::variant<Storages...>> {
-    static constexpr bool value = sizeof...(Constraints) == sizeof...(Storages) &&
-                                  (std::is_same_v<typename Constraints::Storage, Storages> && ...);
+// the alternatives of JointData, so that a stored joint's type index is its constraint's; and
+// JointData follows the public JointType.
+template <typename List>
+struct StoragesOf;
+template <typename... Constraints>
+struct StoragesOf<JointTypeList<Constraints...>> {
+    using type = std::variant<typename Constraints::Storage...>;
 };
-static_assert(StorageOrderMatches<JointConstraintTypes, JointData>::value,
+static_assert(std::is_same_v<StoragesOf<JointConstraintTypes>::type, JointData>,
               "JointData and JointConstraintTypes list the joint types in the same order");
-static_assert(
-    std::is_same_v<std::variant_alternative_t<static_cast<int>(JointType::Distance), JointData>,
-                   DistanceJoint>,
-    "JointData lists the joint types in the order of the public JointType");
+
+template <JointType type, typename Storage>
+constexpr bool storedAt() {
+    return std::is_same_v<std::variant_alternative_t<static_cast<int>(type), JointData>, Storage>;
+}
+static_assert(storedAt<JointType::Revolute, RevoluteJoint>() &&
+                  storedAt<JointType::Distance, DistanceJoint>() &&
+                  storedAt<JointType::Pulley, PulleyJoint>() &&
+                  storedAt<JointType::Friction, FrictionJoint>() &&
+                  storedAt<JointType::Motor, MotorJoint>(),
+              "JointData lists the joint types in the order of the public JointType");
 
 }  // namespace pivot

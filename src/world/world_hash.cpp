@@ -44,6 +44,23 @@ void hashJointData(StateHasher& h, const PulleyJoint& j) {
     h.add(j.impulse);
     h.add(j.axisB);
 }
+void hashJointData(StateHasher& h, const FrictionJoint& j) {
+    h.add(static_cast<std::int32_t>(JointType::Friction));
+    h.add(j.maxForce);
+    h.add(j.maxTorque);
+    h.add(j.linearImpulse);
+    h.add(j.angularImpulse);
+}
+void hashJointData(StateHasher& h, const MotorJoint& j) {
+    h.add(static_cast<std::int32_t>(JointType::Motor));
+    h.add(j.linearOffset);
+    h.add(j.angularOffset);
+    h.add(j.maxForce);
+    h.add(j.maxTorque);
+    h.add(j.correctionFactor);
+    h.add(j.linearImpulse);
+    h.add(j.angularImpulse);
+}
 }  // namespace
 
 // Everything a public call can change goes in, so that "the hash is unchanged" means "the world

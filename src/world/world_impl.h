@@ -75,6 +75,8 @@ struct World::Impl {
     /// A joint's slot index after checking that it is of `type`, or pivot::Error naming both
     /// types.
     std::int32_t jointIndexOfType(const char* call, JointId id, JointType type) const;
+    /// A friction or motor joint's slot index, or pivot::Error.
+    std::int32_t velocityJointIndex(const char* call, JointId id) const;
     template <typename T>
     T& jointData(const char* call, JointId id, JointType type) {
         return std::get<T>(joints[jointIndexOfType(call, id, type)].data);

@@ -22,8 +22,20 @@ const char* jointTypeName(JointType type) {
         case JointType::Revolute: return "revolute";
         case JointType::Distance: return "distance";
         case JointType::Pulley: return "pulley";
+        case JointType::Friction: return "friction";
+        case JointType::Motor: return "motor";
     }
     return "invalid";
+}
+
+// A velocity-only joint has no position error for a strategy to correct: choosing one would
+// change nothing, so it is refused rather than accepted and ignored.
+void requirePositionError(const char* call, std::int32_t index, const Joint& joint) {
+    if (joint.isVelocityOnly()) {
+        fail(call, "joint " + std::to_string(index) + " is a " + jointTypeName(joint.type()) +
+                       " joint, which acts in the velocity phase only and has no position "
+                       "error for a strategy to correct");
+    }
 }
 
 std::int32_t World::Impl::jointIndexOfType(const char* call, JointId id, JointType type) const {
@@ -207,6 +219,69 @@ JointId World::createJoint(const PulleyJointDef& def) {
     return w.addJoint(joint);
 }
 
+namespace {
+// The fields every def shares.
+template <typename Def>
+Joint jointFromDef(const Def& def, std::int32_t a, std::int32_t b) {
+    Joint joint;
+    joint.edges[0].body = a;
+    joint.edges[1].body = b;
+    joint.collideConnected = def.collideConnected;
+    joint.userData = def.userData;
+    return joint;
+}
+}  // namespace
+
+JointId World::createJoint(const FrictionJointDef& def) {
+    const char* call = "World::createJoint";
+    Impl& w = *impl_;
+    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
+    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
+    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
+    requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
+    requireNonNegative(call, "def.maxForce", def.maxForce);
+    requireNonNegative(call, "def.maxTorque", def.maxTorque);
+    Joint joint = jointFromDef(def, a, b);
+    joint.solver = w.defaultPositionSolver;
+    joint.localAnchorA = def.localAnchorA;
+    joint.localAnchorB = def.localAnchorB;
+    FrictionJoint& friction = joint.data.emplace<FrictionJoint>();
+    friction.maxForce = def.maxForce;
+    friction.maxTorque = def.maxTorque;
+    return w.addJoint(joint);
+}
+
+JointId World::createJoint(const MotorJointDef& def) {
+    const char* call = "World::createJoint";
+    Impl& w = *impl_;
+    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
+    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
+    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    if (def.linearOffset) requireCoordinate(call, "def.linearOffset", *def.linearOffset);
+    if (def.angularOffset) requireMagnitude(call, "def.angularOffset", *def.angularOffset);
+    requireNonNegative(call, "def.maxForce", def.maxForce);
+    requireNonNegative(call, "def.maxTorque", def.maxTorque);
+    requireInRange(call, "def.correctionFactor", def.correctionFactor, 0.0f, 1.0f);
+    const Body& bodyA = w.bodies[a];
+    const Body& bodyB = w.bodies[b];
+    const Vec2 linearOffset =
+        def.linearOffset.value_or(inverseTransformPoint(bodyA.xf, bodyB.xf.p));
+    const float angularOffset = def.angularOffset.value_or(bodyB.angle - bodyA.angle);
+    // Offsets taken from far-apart bodies can still be out of range.
+    requireCoordinate(call, "def.linearOffset (body B's origin in A's frame)", linearOffset);
+    requireMagnitude(call, "def.angularOffset (angleB - angleA)", angularOffset);
+    Joint joint = jointFromDef(def, a, b);
+    joint.solver = w.defaultPositionSolver;
+    MotorJoint& motor = joint.data.emplace<MotorJoint>();
+    motor.linearOffset = linearOffset;
+    motor.angularOffset = angularOffset;
+    motor.maxForce = def.maxForce;
+    motor.maxTorque = def.maxTorque;
+    motor.correctionFactor = def.correctionFactor;
+    return w.addJoint(joint);
+}
+
 void World::destroyJoint(JointId id) {
     impl_->removeJoint(impl_->jointIndex("World::destroyJoint", id));
 }
@@ -281,6 +356,12 @@ Vec2 World::jointReactionForce(JointId id) const {
     if (const auto* pulley = std::get_if<PulleyJoint>(&j.data)) {
         return (j.impulseInvDt * -pulley->ratio * pulley->impulse) * pulley->axisB;
     }
+    if (const auto* friction = std::get_if<FrictionJoint>(&j.data)) {
+        return j.impulseInvDt * friction->linearImpulse;
+    }
+    if (const auto* motor = std::get_if<MotorJoint>(&j.data)) {
+        return j.impulseInvDt * motor->linearImpulse;
+    }
     return j.impulseInvDt * std::get<RevoluteJoint>(j.data).impulse;
 }
 
@@ -294,8 +375,16 @@ float World::jointSpeed(JointId id) const {
 }
 float World::jointReactionTorque(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndex("World::jointReactionTorque", id)];
-    const RevoluteJoint* r = std::get_if<RevoluteJoint>(&j.data);
-    return r ? j.impulseInvDt * (r->motorImpulse + r->lowerImpulse - r->upperImpulse) : 0.0f;
+    if (const auto* r = std::get_if<RevoluteJoint>(&j.data)) {
+        return j.impulseInvDt * (r->motorImpulse + r->lowerImpulse - r->upperImpulse);
+    }
+    if (const auto* friction = std::get_if<FrictionJoint>(&j.data)) {
+        return j.impulseInvDt * friction->angularImpulse;
+    }
+    if (const auto* motor = std::get_if<MotorJoint>(&j.data)) {
+        return j.impulseInvDt * motor->angularImpulse;
+    }
+    return 0.0f;
 }
 float World::jointMotorTorque(JointId id) const {
     const char* call = "World::jointMotorTorque";
@@ -393,6 +482,7 @@ PositionSolver World::jointPositionSolver(JointId id) const {
 void World::setJointPositionSolver(JointId id, PositionSolver solver) {
     const char* call = "World::setJointPositionSolver";
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
+    requirePositionError(call, id.index, j);
     checkSolver(call, "solver", solver);
     j.solver = solver;
     wakeUp(impl_->bodies[j.bodyA()]);
@@ -406,6 +496,7 @@ float World::jointBiasFactor(JointId id) const {
 void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     const char* call = "World::setJointBiasFactor";
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
+    requirePositionError(call, id.index, j);
     if (biasFactor) checkBiasFactor(call, "biasFactor", *biasFactor);
     j.hasBiasOverride = biasFactor.has_value();
     j.biasOverride = biasFactor.value_or(0.0f);
@@ -435,6 +526,94 @@ float World::pulleyJointLengthB(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Pulley)];
     return distance(transformPoint(impl_->bodies[j.bodyB()].xf, j.localAnchorB),
                     std::get<PulleyJoint>(j.data).groundAnchorB);
+}
+
+namespace {
+// The friction or motor joint's maximum force and torque: the two types share these calls.
+struct Limits {
+    float* force;
+    float* torque;
+};
+Limits velocityJointLimits(Joint& j) {
+    if (auto* f = std::get_if<FrictionJoint>(&j.data)) return {&f->maxForce, &f->maxTorque};
+    auto& m = std::get<MotorJoint>(j.data);
+    return {&m.maxForce, &m.maxTorque};
+}
+}  // namespace
+
+std::int32_t World::Impl::velocityJointIndex(const char* call, JointId id) const {
+    const std::int32_t index = jointIndex(call, id);
+    if (!joints[index].isVelocityOnly()) {
+        fail(call, "joint " + std::to_string(index) + " is a " +
+                       jointTypeName(joints[index].type()) +
+                       " joint; this call is for friction and motor joints");
+    }
+    return index;
+}
+
+float World::jointMaxForce(JointId id) const {
+    Joint& j = impl_->joints[impl_->velocityJointIndex("World::jointMaxForce", id)];
+    return *velocityJointLimits(j).force;
+}
+void World::setJointMaxForce(JointId id, float force) {
+    const char* call = "World::setJointMaxForce";
+    Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
+    requireNonNegative(call, "force", force);
+    *velocityJointLimits(j).force = force;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+float World::jointMaxTorque(JointId id) const {
+    Joint& j = impl_->joints[impl_->velocityJointIndex("World::jointMaxTorque", id)];
+    return *velocityJointLimits(j).torque;
+}
+void World::setJointMaxTorque(JointId id, float torque) {
+    const char* call = "World::setJointMaxTorque";
+    Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
+    requireNonNegative(call, "torque", torque);
+    *velocityJointLimits(j).torque = torque;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+Vec2 World::motorJointLinearOffset(JointId id) const {
+    return impl_->jointData<MotorJoint>("World::motorJointLinearOffset", id, JointType::Motor)
+        .linearOffset;
+}
+void World::setMotorJointLinearOffset(JointId id, Vec2 offset) {
+    const char* call = "World::setMotorJointLinearOffset";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
+    requireCoordinate(call, "offset", offset);
+    Joint& j = impl_->joints[index];
+    std::get<MotorJoint>(j.data).linearOffset = offset;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+float World::motorJointAngularOffset(JointId id) const {
+    return impl_->jointData<MotorJoint>("World::motorJointAngularOffset", id, JointType::Motor)
+        .angularOffset;
+}
+void World::setMotorJointAngularOffset(JointId id, float offset) {
+    const char* call = "World::setMotorJointAngularOffset";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
+    requireMagnitude(call, "offset", offset);
+    Joint& j = impl_->joints[index];
+    std::get<MotorJoint>(j.data).angularOffset = offset;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+float World::motorJointCorrectionFactor(JointId id) const {
+    return impl_->jointData<MotorJoint>("World::motorJointCorrectionFactor", id, JointType::Motor)
+        .correctionFactor;
+}
+void World::setMotorJointCorrectionFactor(JointId id, float factor) {
+    const char* call = "World::setMotorJointCorrectionFactor";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
+    requireInRange(call, "factor", factor, 0.0f, 1.0f);
+    Joint& j = impl_->joints[index];
+    std::get<MotorJoint>(j.data).correctionFactor = factor;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
 }
 
 std::uint64_t World::jointUserData(JointId id) const {

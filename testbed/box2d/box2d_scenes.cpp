@@ -1,5 +1,7 @@
 #include "box2d/box2d_scenes.h"
 
+#include <cmath>
+
 #include "box2d/parts.h"
 
 namespace pivot::box2d {
@@ -112,6 +114,59 @@ Box2dScene buildPulley(bool continuous) {
     scene.joints.push_back(scene.world->CreateJoint(&jd));
     scene.bodies.push_back(heavy);
     scene.bodies.push_back(light);
+    return scene;
+}
+
+Box2dScene buildTopDown(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    scene.world->SetGravity(b2Vec2(0.0f, 0.0f));
+    b2Body* table = staticBody(*scene.world);
+    for (int i = 0; i < 12; ++i) {
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(0.0f, 2.0f * static_cast<float>(i));
+        def.linearVelocity.Set(2.0f + 0.5f * static_cast<float>(i), 0.3f);
+        def.angularVelocity = 3.0f - 0.5f * static_cast<float>(i);
+        b2Body* box = scene.world->CreateBody(&def);
+        b2PolygonShape shape;
+        shape.SetAsBox(0.5f, 0.5f);
+        box->CreateFixture(&shape, 1.0f);
+        const float weight = box->GetMass() * 10.0f;
+        b2FrictionJointDef jd;
+        jd.bodyA = table;
+        jd.bodyB = box;
+        jd.localAnchorA.SetZero();
+        jd.localAnchorB.SetZero();
+        jd.maxForce = 0.5f * weight;
+        jd.maxTorque = 0.5f * weight * 0.5f;
+        scene.joints.push_back(scene.world->CreateJoint(&jd));
+        scene.bodies.push_back(box);
+    }
+    return scene;
+}
+
+Box2dScene buildMotorDrive(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    b2Body* ground = staticBody(*scene.world);
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(0.0f, 8.0f);
+    b2Body* plank = scene.world->CreateBody(&def);
+    b2PolygonShape shape;
+    shape.SetAsBox(2.0f, 0.5f);
+    plank->CreateFixture(&shape, 1.0f);
+    b2MotorJointDef jd;
+    jd.Initialize(ground, plank);
+    jd.maxForce = 500.0f;
+    jd.maxTorque = 1000.0f;
+    auto* joint = static_cast<b2MotorJoint*>(scene.world->CreateJoint(&jd));
+    scene.joints.push_back(joint);
+    scene.bodies.push_back(plank);
+    scene.beforeStep = [joint](Box2dScene&, int step) {
+        const float t = (1.0f / 60.0f) * static_cast<float>(step);  // as the pivot2d scene
+        joint->SetLinearOffset(b2Vec2(6.0f * std::sin(2.0f * t), 8.0f + 4.0f * std::sin(t)));
+        joint->SetAngularOffset(t);
+    };
     return scene;
 }
 

@@ -36,5 +36,7 @@ Box2dScene buildMassRatio(bool continuous = false);
 /// The pendulum of buildSpinningPendulum(100) with a distance joint (a rod, min = max = 5 m).
 Box2dScene buildDistancePendulum(bool continuous = false);
 Box2dScene buildPulley(bool continuous = false);
+Box2dScene buildTopDown(bool continuous = false);
+Box2dScene buildMotorDrive(bool continuous = false);
 
 }  // namespace pivot::box2d

@@ -23,6 +23,8 @@ const std::vector<ReferenceCase>& referenceCases() {
         {"motor_wheel", false, scenes::buildMotorWheel, box2d::buildMotorWheel},
         {"distance_pendulum", false, scenes::buildDistancePendulum, box2d::buildDistancePendulum},
         {"pulley", false, scenes::buildPulley, box2d::buildPulley},
+        {"top_down", false, scenes::buildTopDown, box2d::buildTopDown},
+        {"motor_drive", false, scenes::buildMotorDrive, box2d::buildMotorDrive},
         {"double_pendulum", true, scenes::buildDoublePendulum, box2d::buildDoublePendulum},
         {"bridge", true, scenes::buildBridge, box2d::buildBridge},
         {"chain", true, scenes::buildChain, box2d::buildChain},
@@ -94,6 +96,7 @@ double box2dSeparation(const b2Joint& joint) {
                          double(pulley.GetRatio()) * pulley.GetLengthB() - lengthA -
                          double(pulley.GetRatio()) * lengthB);
     }
+    if (joint.GetType() == e_frictionJoint || joint.GetType() == e_motorJoint) return 0.0;
     if (joint.GetType() != e_distanceJoint) return gap;
     const auto& distance = static_cast<const b2DistanceJoint&>(joint);
     return std::max({0.0, distance.GetMinLength() - gap, gap - distance.GetMaxLength()});

@@ -50,6 +50,9 @@ const std::vector<SceneInfo>& allScenes() {
          buildRope},
         {"pulley", "two boxes on a 1.5:1 pulley, the lighter hung off its wheel and swinging",
          buildPulley},
+        {"top_down", "12 boxes sliding and spinning on a table seen from above (friction joints)",
+         buildTopDown},
+        {"motor_drive", "a plank driven round a figure of eight by a motor joint", buildMotorDrive},
     };
     return scenes;
 }

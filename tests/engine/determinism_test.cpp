@@ -78,6 +78,8 @@ const RecordedHashes kRecorded[] = {
     {"distance_pendulum", {0xd1964694720a8e70ull, 0xeb7346be27492100ull, 0x1e35eace498130d8ull, 0x1e415cc507746a14ull}},
     {"rope",              {0xa68318da37632d94ull, 0x49db622000f4f379ull, 0x96b6c83077dca2d5ull, 0x107b784abe487d50ull}},
     {"pulley",            {0xeeefd922f060bb30ull, 0x8c5fcf8031eabf19ull, 0xd34fb0c41a150427ull, 0x512c6b2eba8854aaull}},
+    {"top_down",          {0xf3640b234b73893dull, 0x31c01f8215235f1cull, 0xaeeb44376fa4240bull, 0xca93bf612f861b82ull}},
+    {"motor_drive",       {0x219e8351c028691cull, 0xec5d93e75f90de80ull, 0xde8c32bfb5d572b5ull, 0x0eb63675aacac719ull}},
 };
 // clang-format on
 

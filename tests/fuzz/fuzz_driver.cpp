@@ -465,6 +465,7 @@ private:
             {7, &Driver::createJoint},
             {3, &Driver::createDistanceJoint},
             {2, &Driver::createPulleyJoint},
+            {2, &Driver::createVelocityJoint},
             {2, &Driver::createMouseJoint},
             {3, &Driver::destroyBody},
             {2, &Driver::destroyShape},
@@ -691,6 +692,11 @@ private:
         return !(length >= kLinearSlop && length <= kMaxCoordinate);
     }
 
+    /// Friction and motor joints: no strategy, so no solver or bias factor to set.
+    bool velocityOnly(const Arg<JointId>& joint) const {
+        return isType(joint, JointType::Friction) || isType(joint, JointType::Motor);
+    }
+
     bool isType(const Arg<JointId>& joint, JointType type) const {
         return !joint.bad && world_->jointType(joint.value) == type;
     }
@@ -818,6 +824,69 @@ private:
             if (world_->jointType(id) != JointType::Pulley) {
                 failure("createJoint: not a pulley joint");
             }
+        });
+    }
+
+    // A friction or a motor joint, at random.
+    void createVelocityJoint() {
+        if (world_->jointCount() >= kMaxJoints) {
+            destroyJoint();
+            return;
+        }
+        Arg<BodyId> a = pickBody();
+        Arg<BodyId> b = random_.chance(0.05f) ? a : pickBody();
+        bool bad = a.bad || b.bad || a.value == b.value;
+        Arg<float> force = values_->nonNegative(50.0f);
+        Arg<float> torque = values_->nonNegative(50.0f);
+        bad = bad || force.bad || torque.bad;
+        if (random_.chance(0.5f)) {
+            FrictionJointDef def;
+            def.bodyA = a.value;
+            def.bodyB = b.value;
+            Arg<Vec2> localA = values_->coordinate(1.0f);
+            Arg<Vec2> localB = values_->coordinate(1.0f);
+            def.localAnchorA = localA.value;
+            def.localAnchorB = localB.value;
+            def.maxForce = force.value;
+            def.maxTorque = torque.value;
+            def.userData = random_.next();
+            bad = bad || localA.bad || localB.bad;
+            trace("createFrictionJoint a=" + idText(a.value) + " b=" + idText(b.value));
+            attempt("World::createJoint", verdict(bad), [&] {
+                JointId id = journal_.createJoint(def);
+                noteTag(id);
+                joints_.remember(id);
+            });
+            return;
+        }
+        MotorJointDef def;
+        def.bodyA = a.value;
+        def.bodyB = b.value;
+        def.maxForce = force.value;
+        def.maxTorque = torque.value;
+        Arg<float> factor = values_->fraction();
+        def.correctionFactor = factor.value;
+        bad = bad || factor.bad;
+        if (random_.chance(0.5f)) {
+            Arg<Vec2> offset = values_->coordinate(10.0f);
+            Arg<float> angle = values_->magnitude(3.0f);
+            def.linearOffset = offset.value;
+            def.angularOffset = angle.value;
+            bad = bad || offset.bad || angle.bad;
+        } else if (!bad) {
+            // The offsets come from the poses; far-apart bodies can put them out of range.
+            const Transform xfA = world_->bodyTransform(a.value);
+            const Vec2 offset = inverseTransformPoint(xfA, world_->bodyPosition(b.value));
+            const float angle = world_->bodyAngle(b.value) - world_->bodyAngle(a.value);
+            bad = !(std::fabs(offset.x) <= kMaxCoordinate &&
+                    std::fabs(offset.y) <= kMaxCoordinate && std::fabs(angle) <= kMaxMagnitude);
+        }
+        def.userData = random_.next();
+        trace("createMotorJoint a=" + idText(a.value) + " b=" + idText(b.value));
+        attempt("World::createJoint", verdict(bad), [&] {
+            JointId id = journal_.createJoint(def);
+            noteTag(id);
+            joints_.remember(id);
         });
     }
 
@@ -1112,6 +1181,36 @@ private:
         switch (random_.below(8)) {
             case 7: {
                 const bool other = !joint.bad && !isType(joint, JointType::Distance);
+                if (random_.chance(0.4f)) {
+                    // The friction and motor joints' setters.
+                    const bool notVelocity = !joint.bad && !velocityOnly(joint);
+                    const bool notMotor = !joint.bad && !isType(joint, JointType::Motor);
+                    Arg<float> force = values_->nonNegative(50.0f);
+                    Arg<Vec2> offset = values_->coordinate(10.0f);
+                    Arg<float> factor = values_->fraction();
+                    switch (random_.below(3)) {
+                        case 0:
+                            attempt("World::setJointMaxForce",
+                                    verdict(joint.bad || notVelocity || force.bad),
+                                    [&] { journal_.setJointMaxForce(joint.value, force.value); });
+                            break;
+                        case 1:
+                            attempt("World::setMotorJointLinearOffset",
+                                    verdict(joint.bad || notMotor || offset.bad), [&] {
+                                        journal_.setMotorJointLinearOffset(joint.value,
+                                                                           offset.value);
+                                    });
+                            break;
+                        default:
+                            attempt("World::setMotorJointCorrectionFactor",
+                                    verdict(joint.bad || notMotor || factor.bad), [&] {
+                                        journal_.setMotorJointCorrectionFactor(joint.value,
+                                                                               factor.value);
+                                    });
+                            break;
+                    }
+                    break;
+                }
                 switch (random_.below(3)) {
                     case 0: {
                         Arg<float> length = values_->nonNegativeUpTo(5.0f, kMaxCoordinate);
@@ -1163,13 +1262,14 @@ private:
                 Arg<PositionSolver> s = solver();
                 trace("setJointPositionSolver " + idText(joint.value) + " " +
                       std::to_string(int(s.value)));
-                attempt("World::setJointPositionSolver", verdict(joint.bad || s.bad),
+                attempt("World::setJointPositionSolver",
+                        verdict(joint.bad || velocityOnly(joint) || s.bad),
                         [&] { journal_.setJointPositionSolver(joint.value, s.value); });
                 break;
             }
             case 3: {
                 std::optional<float> bias;
-                bool bad = joint.bad;
+                bool bad = joint.bad || velocityOnly(joint);
                 if (random_.chance(0.7f)) {
                     Arg<float> b = values_->fraction();
                     bias = b.value;
@@ -1381,6 +1481,8 @@ private:
                     const bool notRevolute = !joint.bad && !isType(joint, JointType::Revolute);
                     const bool notDistance = !joint.bad && !isType(joint, JointType::Distance);
                     const bool notPulley = !joint.bad && !isType(joint, JointType::Pulley);
+                    const bool notMotor = !joint.bad && !isType(joint, JointType::Motor);
+                    const bool notVelocity = !joint.bad && !velocityOnly(joint);
                     std::vector<std::tuple<const char*, bool, std::function<void()>>> typed = {
                         {"World::jointMotorTorque", notRevolute,
                          [&] { w.jointMotorTorque(joint.value); }},
@@ -1398,6 +1500,10 @@ private:
                          [&] { w.pulleyJointLengthA(joint.value); }},
                         {"World::pulleyJointGroundAnchorB", notPulley,
                          [&] { w.pulleyJointGroundAnchorB(joint.value); }},
+                        {"World::jointMaxForce", notVelocity,
+                         [&] { w.jointMaxForce(joint.value); }},
+                        {"World::motorJointLinearOffset", notMotor,
+                         [&] { w.motorJointLinearOffset(joint.value); }},
                     };
                     auto& q = typed[random_.below(static_cast<int>(typed.size()))];
                     attempt(std::get<0>(q), verdict(joint.bad || std::get<1>(q)), std::get<2>(q));

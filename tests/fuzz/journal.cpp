@@ -135,6 +135,26 @@ JointId Journal::createJoint(const PulleyJointDef& def) {
     return id;
 }
 
+JointId Journal::createJoint(const FrictionJointDef& def) {
+    JointId id = world_->createJoint(def);
+    lines_.push_back("friction " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " +
+                     nameOf('b', def.bodyB) + " " + num(def.localAnchorA) + " " +
+                     num(def.localAnchorB) + " " + num(def.maxForce) + " " + num(def.maxTorque) +
+                     " " + num(def.collideConnected));
+    return id;
+}
+
+JointId Journal::createJoint(const MotorJointDef& def) {
+    JointId id = world_->createJoint(def);
+    lines_.push_back(
+        "motorJoint " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " +
+        nameOf('b', def.bodyB) + " " + num(def.linearOffset.has_value()) + " " +
+        num(def.linearOffset.value_or(Vec2{})) + " " + num(def.angularOffset.has_value()) + " " +
+        num(def.angularOffset.value_or(0.0f)) + " " + num(def.maxForce) + " " + num(def.maxTorque) +
+        " " + num(def.correctionFactor) + " " + num(def.collideConnected));
+    return id;
+}
+
 MouseJointId Journal::createMouseJoint(const MouseJointDef& def) {
     MouseJointId id = world_->createMouseJoint(def);
     lines_.push_back("mouse " + nameNew('m', id) + " " + nameOf('b', def.body) + " " +
@@ -233,6 +253,18 @@ void Journal::setDistanceJointSpring(JointId id, const JointSpring& spring) {
     world_->setDistanceJointSpring(id, spring);
     lines_.push_back("spring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
                      num(spring.hertz) + " " + num(spring.dampingRatio));
+}
+void Journal::setJointMaxForce(JointId id, float force) {
+    world_->setJointMaxForce(id, force);
+    lines_.push_back("maxForce " + nameOf('j', id) + " " + num(force));
+}
+void Journal::setMotorJointLinearOffset(JointId id, Vec2 offset) {
+    world_->setMotorJointLinearOffset(id, offset);
+    lines_.push_back("linearOffset " + nameOf('j', id) + " " + num(offset));
+}
+void Journal::setMotorJointCorrectionFactor(JointId id, float factor) {
+    world_->setMotorJointCorrectionFactor(id, factor);
+    lines_.push_back("correctionFactor " + nameOf('j', id) + " " + num(factor));
 }
 void Journal::setJointMotor(JointId id, const JointMotor& motor) {
     world_->setJointMotor(id, motor);
@@ -525,6 +557,45 @@ ReplayResult replay(std::istream& in) {
             const float letGo = f.f();
             if (letGo >= 0.0f) def.letGoSeparation = letGo;
             call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "friction") {
+            std::string name = f.word();
+            FrictionJointDef def;
+            def.bodyA = body(f.word());
+            def.bodyB = body(f.word());
+            def.localAnchorA = f.v();
+            def.localAnchorB = f.v();
+            def.maxForce = f.f();
+            def.maxTorque = f.f();
+            def.collideConnected = f.b();
+            call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "motorJoint") {
+            std::string name = f.word();
+            MotorJointDef def;
+            def.bodyA = body(f.word());
+            def.bodyB = body(f.word());
+            const bool hasLinear = f.b();
+            const Vec2 linear = f.v();
+            if (hasLinear) def.linearOffset = linear;
+            const bool hasAngular = f.b();
+            const float angular = f.f();
+            if (hasAngular) def.angularOffset = angular;
+            def.maxForce = f.f();
+            def.maxTorque = f.f();
+            def.correctionFactor = f.f();
+            def.collideConnected = f.b();
+            call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "maxForce") {
+            JointId j = joint(f.word());
+            const float force = f.f();
+            call = [&w, j, force] { w.setJointMaxForce(j, force); };
+        } else if (command == "linearOffset") {
+            JointId j = joint(f.word());
+            const Vec2 offset = f.v();
+            call = [&w, j, offset] { w.setMotorJointLinearOffset(j, offset); };
+        } else if (command == "correctionFactor") {
+            JointId j = joint(f.word());
+            const float factor = f.f();
+            call = [&w, j, factor] { w.setMotorJointCorrectionFactor(j, factor); };
         } else if (command == "mouse") {
             std::string name = f.word();
             MouseJointDef def;

@@ -34,6 +34,8 @@ public:
     JointId createJoint(const RevoluteJointDef& def);
     JointId createJoint(const DistanceJointDef& def);
     JointId createJoint(const PulleyJointDef& def);
+    JointId createJoint(const FrictionJointDef& def);
+    JointId createJoint(const MotorJointDef& def);
     MouseJointId createMouseJoint(const MouseJointDef& def);
     void destroyBody(BodyId id);
     void destroyShape(ShapeId id);
@@ -56,6 +58,9 @@ public:
     void setDistanceJointRestLength(JointId id, float length);
     void setDistanceJointLimit(JointId id, const LengthLimit& limit);
     void setDistanceJointSpring(JointId id, const JointSpring& spring);
+    void setJointMaxForce(JointId id, float force);
+    void setMotorJointLinearOffset(JointId id, Vec2 offset);
+    void setMotorJointCorrectionFactor(JointId id, float factor);
     void setJointMotor(JointId id, const JointMotor& motor);
     void setJointPositionSolver(JointId id, PositionSolver solver);
     void setJointBiasFactor(JointId id, std::optional<float> bias);
