@@ -2,6 +2,7 @@
 // Markdown table row has its header's columns, every figure it links exists, no number is
 // "nan" or "inf", and the observations block of position-correction.md is filled in.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -32,7 +33,9 @@ int countColumns(const std::string& row) {
 }  // namespace
 
 TEST(Report, GeneratesWellFormedMarkdownAndSvg) {
-    const fs::path dir = fs::temp_directory_path() / "pivot-report-test";
+    // Per process: two test runs on one machine (two build folders) must not share it.
+    const fs::path dir =
+        fs::temp_directory_path() / ("pivot-report-test-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     {
@@ -96,7 +99,8 @@ TEST(Report, GeneratesWellFormedMarkdownAndSvg) {
 }
 
 TEST(Report, RefusesADocumentWithoutTheObservationsBlock) {
-    const fs::path dir = fs::temp_directory_path() / "pivot-report-test-noblock";
+    const fs::path dir =
+        fs::temp_directory_path() / ("pivot-report-test-noblock-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     { std::ofstream(dir / "position-correction.md") << "no markers here\n"; }
