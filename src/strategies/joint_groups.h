@@ -38,9 +38,22 @@ public:
         });
     }
 
-    /// Calls f(strategy, array, group) for every group, in solving order.
+    /// Calls f(strategy, array, group) for every group that has joints this step, in solving
+    /// order. (Most islands use one or two of the groups: skipping the rest keeps an island's
+    /// fixed cost from growing with the number of strategies and joint types.)
     template <typename F>
     void forEachGroup(F&& f) {
+        PositionStrategies::forEach([&](auto strategy) {
+            using S = decltype(strategy);
+            forEachType<S>([&](auto& array, int group) {
+                if (!array.empty()) f(strategy, array, group);
+            });
+        });
+    }
+
+    /// forEachGroup over every group, empty ones included (to size them).
+    template <typename F>
+    void forEachGroupIncludingEmpty(F&& f) {
         PositionStrategies::forEach([&](auto strategy) {
             using S = decltype(strategy);
             forEachType<S>([&](auto& array, int group) { f(strategy, array, group); });
@@ -49,7 +62,7 @@ public:
 
     /// Sizes each array for its group, [groupStart[g], groupStart[g + 1]) of the schedule.
     void resize(const std::array<std::int32_t, kJointGroupCount + 1>& groupStart) {
-        forEachGroup([&](auto, auto& array, int g) {
+        forEachGroupIncludingEmpty([&](auto, auto& array, int g) {
             resizeBuffer(array, static_cast<std::size_t>(groupStart[g + 1] - groupStart[g]));
         });
     }
