@@ -3,6 +3,9 @@
 
 #include <cstdint>
 
+#include "constraints/solver_body.h"
+#include "model/body.h"
+
 namespace pivot {
 
 struct ConstraintBodies {
@@ -15,5 +18,17 @@ struct ConstraintBodies {
     /// the angle part has nothing to act on.
     bool fixedRotation() const { return iA + iB == 0.0f; }
 };
+
+/// The constraint's view of bodies a and b, in solver slots `slots`.
+inline ConstraintBodies constraintBodies(BodyPair slots, const Body& a, const Body& b) {
+    ConstraintBodies bodies;
+    bodies.indexA = slots[0];
+    bodies.indexB = slots[1];
+    bodies.mA = a.invMass;
+    bodies.mB = b.invMass;
+    bodies.iA = a.invInertia;
+    bodies.iB = b.invInertia;
+    return bodies;
+}
 
 }  // namespace pivot

@@ -51,12 +51,7 @@ struct DistanceConstraint {
         const DistanceJoint& d = std::get<DistanceJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();
-        bodies.indexA = slots[0];
-        bodies.indexB = slots[1];
-        bodies.mA = a.invMass;
-        bodies.mB = b.invMass;
-        bodies.iA = a.invInertia;
-        bodies.iB = b.invInertia;
+        bodies = constraintBodies(slots, a, b);
         part.localRA = joint.localAnchorA - a.localCenter;
         part.localRB = joint.localAnchorB - b.localCenter;
         rod = d.isRod();

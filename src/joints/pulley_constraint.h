@@ -32,12 +32,7 @@ struct PulleyConstraint {
         const PulleyJoint& p = std::get<PulleyJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();
-        bodies.indexA = slots[0];
-        bodies.indexB = slots[1];
-        bodies.mA = a.invMass;
-        bodies.mB = b.invMass;
-        bodies.iA = a.invInertia;
-        bodies.iB = b.invInertia;
+        bodies = constraintBodies(slots, a, b);
         part.localRA = joint.localAnchorA - a.localCenter;
         part.localRB = joint.localAnchorB - b.localCenter;
         part.groundA = p.groundAnchorA;

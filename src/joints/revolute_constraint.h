@@ -44,12 +44,7 @@ struct RevoluteConstraint {
         const RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();
-        bodies.indexA = slots[0];
-        bodies.indexB = slots[1];
-        bodies.mA = a.invMass;
-        bodies.mB = b.invMass;
-        bodies.iA = a.invInertia;
-        bodies.iB = b.invInertia;
+        bodies = constraintBodies(slots, a, b);
         point.localRA = joint.localAnchorA - a.localCenter;
         point.localRB = joint.localAnchorB - b.localCenter;
         angle.referenceAngle = joint.referenceAngle;

@@ -135,12 +135,7 @@ protected:
                        BodyPair slots) {
         jointIndex = index;
         biasFactor = joint.biasFactor();
-        bodies.indexA = slots[0];
-        bodies.indexB = slots[1];
-        bodies.mA = a.invMass;
-        bodies.mB = b.invMass;
-        bodies.iA = a.invInertia;
-        bodies.iB = b.invInertia;
+        bodies = constraintBodies(slots, a, b);
     }
 };
 

@@ -4,11 +4,12 @@
 // (velocity_phase.cpp, position_phase.cpp) are written once for all strategies and joint types;
 // a new strategy that fits these hooks is one more struct here and its PositionSolver value.
 //
-// Every strategy has:
+// Every strategy has (StrategyDefaults gives what a strategy does not say otherwise):
 //   kSolver, kName, kDefaultBias           its PositionSolver value, testbed name and bias
 //   prepareBias(c, poses, invDt)           at the start of the step, after the joint is built
 //   solveVelocity(c, velocities)           one velocity iteration
-//   kPseudoVelocityPass                    runs the pseudo-velocity pass after integration
+//   kPseudoVelocityPass                    runs the pseudo-velocity pass after integration, with
+//     beginPass(c, poses, invH), solvePass(c, pseudo)
 //   kNgsSweeps                             joins the NGS sweeps of the position phase, with
 //     beginSweeps(c, poses)                  before the first sweep
 //     solvePosition(c, poses) -> bool        one solve; true when within slop
@@ -21,22 +22,16 @@
 
 namespace pivot {
 
-/// No position phase: a share (bias factor / h) of the error measured at the start of the step
-/// is fed back as a velocity in every velocity iteration.
-struct BaumgarteStrategy {
-    static constexpr PositionSolver kSolver = PositionSolver::Baumgarte;
-    static constexpr const char* kName = "baumgarte";
-    static constexpr float kDefaultBias = kDefaultBaumgarteBias;
+/// What a strategy does unless it says otherwise: rigid velocities, no bias, no position phase.
+struct StrategyDefaults {
     static constexpr bool kPseudoVelocityPass = false;
     static constexpr bool kNgsSweeps = false;
 
     template <typename C>
-    static void prepareBias(C& c, const SolverPose* poses, float invDt) {
-        c.setBias(poses, c.biasFactor * invDt);
-    }
+    static void prepareBias(C&, const SolverPose*, float) {}
     template <typename C>
     static void solveVelocity(C& c, SolverVelocity* velocities) {
-        c.template solveVelocity<true>(velocities);
+        c.template solveVelocity<false>(velocities);
     }
     template <typename C>
     static void beginSweeps(C&, const SolverPose*) {}
@@ -46,21 +41,31 @@ struct BaumgarteStrategy {
     }
 };
 
+/// No position phase: a share (bias factor / h) of the error measured at the start of the step
+/// is fed back as a velocity in every velocity iteration.
+struct BaumgarteStrategy : StrategyDefaults {
+    static constexpr PositionSolver kSolver = PositionSolver::Baumgarte;
+    static constexpr const char* kName = "baumgarte";
+    static constexpr float kDefaultBias = kDefaultBaumgarteBias;
+
+    template <typename C>
+    static void prepareBias(C& c, const SolverPose* poses, float invDt) {
+        c.setBias(poses, c.biasFactor * invDt);
+    }
+    template <typename C>
+    static void solveVelocity(C& c, SolverVelocity* velocities) {
+        c.template solveVelocity<true>(velocities);
+    }
+};
+
 /// Rigid velocities; after integration, the error is measured again and solved for pseudo
 /// velocities (starting at zero, with the bias), which move the poses only.
-struct PseudoVelocityStrategy {
+struct PseudoVelocityStrategy : StrategyDefaults {
     static constexpr PositionSolver kSolver = PositionSolver::PseudoVelocity;
     static constexpr const char* kName = "pseudo_velocity";
     static constexpr float kDefaultBias = kDefaultPseudoVelocityBias;
     static constexpr bool kPseudoVelocityPass = true;
-    static constexpr bool kNgsSweeps = false;
 
-    template <typename C>
-    static void prepareBias(C&, const SolverPose*, float) {}
-    template <typename C>
-    static void solveVelocity(C& c, SolverVelocity* velocities) {
-        c.template solveVelocity<false>(velocities);
-    }
     /// The pass's set-up at the integrated poses (the velocity phase's impulses are stored by
     /// then, so the constraint's accumulators and bias are free to hold the pass's own).
     template <typename C>
@@ -72,29 +77,16 @@ struct PseudoVelocityStrategy {
     static void solvePass(C& c, SolverVelocity* pseudo) {
         c.solvePseudoVelocity(pseudo);
     }
-    template <typename C>
-    static void beginSweeps(C&, const SolverPose*) {}
-    template <typename C>
-    static bool solvePosition(const C&, SolverPose*) {
-        return true;
-    }
 };
 
 /// Rigid velocities; after integration, each solve re-measures the error and radius vectors
 /// and moves the poses at once, with the effective mass of the poses the sweeps start from.
-struct ModifiedNgsStrategy {
+struct ModifiedNgsStrategy : StrategyDefaults {
     static constexpr PositionSolver kSolver = PositionSolver::ModifiedNGS;
     static constexpr const char* kName = "modified_ngs";
     static constexpr float kDefaultBias = kDefaultNgsBias;
-    static constexpr bool kPseudoVelocityPass = false;
     static constexpr bool kNgsSweeps = true;
 
-    template <typename C>
-    static void prepareBias(C&, const SolverPose*, float) {}
-    template <typename C>
-    static void solveVelocity(C& c, SolverVelocity* velocities) {
-        c.template solveVelocity<false>(velocities);
-    }
     template <typename C>
     static void beginSweeps(C& c, const SolverPose* poses) {
         c.freezeMass(poses);
@@ -106,21 +98,12 @@ struct ModifiedNgsStrategy {
 };
 
 /// As ModifiedNGS, with the effective mass rebuilt at every solve.
-struct FullNgsStrategy {
+struct FullNgsStrategy : StrategyDefaults {
     static constexpr PositionSolver kSolver = PositionSolver::FullNGS;
     static constexpr const char* kName = "full_ngs";
     static constexpr float kDefaultBias = kDefaultNgsBias;
-    static constexpr bool kPseudoVelocityPass = false;
     static constexpr bool kNgsSweeps = true;
 
-    template <typename C>
-    static void prepareBias(C&, const SolverPose*, float) {}
-    template <typename C>
-    static void solveVelocity(C& c, SolverVelocity* velocities) {
-        c.template solveVelocity<false>(velocities);
-    }
-    template <typename C>
-    static void beginSweeps(C&, const SolverPose*) {}
     template <typename C>
     static bool solvePosition(const C& c, SolverPose* poses) {
         return c.template solvePosition<true>(poses);

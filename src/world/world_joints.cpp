@@ -1,4 +1,6 @@
 // The World facade, part four: joints.
+#include <utility>
+
 #include "world/world_checks.h"
 #include "world/world_impl.h"
 
@@ -14,6 +16,49 @@ void setSpring(DistanceJoint& joint, const JointSpring& spring) {
     joint.enableSpring = spring.enabled;
     joint.hertz = spring.hertz;
     joint.dampingRatio = spring.dampingRatio;
+}
+
+// The checks and fields every def shares: two distinct live bodies of this world.
+template <typename Def>
+std::pair<std::int32_t, std::int32_t> checkBodies(const char* call, const Def& def,
+                                                  const World::Impl& w) {
+    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
+    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
+    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    return {a, b};
+}
+template <typename Def>
+Joint jointFromDef(const Def& def, std::int32_t a, std::int32_t b) {
+    Joint joint;
+    joint.edges[0].body = a;
+    joint.edges[1].body = b;
+    joint.collideConnected = def.collideConnected;
+    joint.userData = def.userData;
+    return joint;
+}
+
+// And those of the joints with a position error: the strategy, its bias and the let-go
+// separation.
+template <typename Def>
+PositionSolver checkSolverOf(const char* call, const Def& def, const World::Impl& w) {
+    const PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
+    checkSolver(call, "def.positionSolver", solver);
+    return solver;
+}
+template <typename Def>
+void checkBiasAndLetGo(const char* call, const Def& def) {
+    if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
+    if (def.letGoSeparation) {
+        requireNonNegative(call, "def.letGoSeparation", *def.letGoSeparation);
+    }
+}
+template <typename Def>
+void setStrategyFields(Joint& joint, const Def& def, PositionSolver solver) {
+    joint.solver = solver;
+    joint.hasBiasOverride = def.biasFactor.has_value();
+    joint.biasOverride = def.biasFactor.value_or(0.0f);
+    joint.hasLetGoOverride = def.letGoSeparation.has_value();
+    joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
 }
 }  // namespace
 
@@ -73,15 +118,12 @@ void World::Impl::removeJoint(std::int32_t index) {
 JointId World::createJoint(const RevoluteJointDef& def) {
     const char* call = "World::createJoint";
     Impl& w = *impl_;
-    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
-    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
-    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
     requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
     requireMagnitude(call, "def.referenceAngle", def.referenceAngle);
     if (def.worldAnchor) requireCoordinate(call, "def.worldAnchor", *def.worldAnchor);
-    PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
-    checkSolver(call, "def.positionSolver", solver);
+    const PositionSolver solver = checkSolverOf(call, def, w);
     if (def.worldAnchor &&
         (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{} || def.referenceAngle != 0.0f)) {
         fail(call, "def.worldAnchor " + formatVec2(*def.worldAnchor) +
@@ -90,17 +132,13 @@ JointId World::createJoint(const RevoluteJointDef& def) {
                        " or def.referenceAngle " + formatFloat(def.referenceAngle) +
                        "; the world anchor would replace them: set one or the other");
     }
-    if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
-    if (def.letGoSeparation) {
-        requireNonNegative(call, "def.letGoSeparation", *def.letGoSeparation);
-    }
+    checkBiasAndLetGo(call, def);
     checkLimit(call, "def.limit", def.limit);
     checkMotor(call, "def.motor", def.motor);
 
-    Joint joint;
+    Joint joint = jointFromDef(def, a, b);
+    setStrategyFields(joint, def, solver);
     RevoluteJoint& revolute = joint.data.emplace<RevoluteJoint>();
-    joint.edges[0].body = a;
-    joint.edges[1].body = b;
     const Body& bodyA = w.bodies[a];
     const Body& bodyB = w.bodies[b];
     if (def.worldAnchor) {
@@ -112,36 +150,23 @@ JointId World::createJoint(const RevoluteJointDef& def) {
         joint.localAnchorB = def.localAnchorB;
         joint.referenceAngle = def.referenceAngle;
     }
-    joint.solver = solver;
-    joint.hasBiasOverride = def.biasFactor.has_value();
-    joint.biasOverride = def.biasFactor.value_or(0.0f);
     revolute.enableLimit = def.limit.enabled;
     revolute.lowerAngle = def.limit.lower;
     revolute.upperAngle = def.limit.upper;
     revolute.enableMotor = def.motor.enabled;
     revolute.motorSpeed = def.motor.speed;
     revolute.maxMotorTorque = def.motor.maxTorque;
-    joint.collideConnected = def.collideConnected;
-    joint.hasLetGoOverride = def.letGoSeparation.has_value();
-    joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
-    joint.userData = def.userData;
     return w.addJoint(joint);
 }
 
 JointId World::createJoint(const DistanceJointDef& def) {
     const char* call = "World::createJoint";
     Impl& w = *impl_;
-    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
-    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
-    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
     requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
-    PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
-    checkSolver(call, "def.positionSolver", solver);
-    if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
-    if (def.letGoSeparation) {
-        requireNonNegative(call, "def.letGoSeparation", *def.letGoSeparation);
-    }
+    const PositionSolver solver = checkSolverOf(call, def, w);
+    checkBiasAndLetGo(call, def);
     const Body& bodyA = w.bodies[a];
     const Body& bodyB = w.bodies[b];
     const float anchorDistance = distance(transformPoint(bodyA.xf, def.localAnchorA),
@@ -151,19 +176,11 @@ JointId World::createJoint(const DistanceJointDef& def) {
     checkLengthLimit(call, "def.limit", def.limit);
     checkSpring(call, "def.spring", def.spring);
 
-    Joint joint;
-    DistanceJoint& distanceJoint = joint.data.emplace<DistanceJoint>();
-    joint.edges[0].body = a;
-    joint.edges[1].body = b;
+    Joint joint = jointFromDef(def, a, b);
+    setStrategyFields(joint, def, solver);
     joint.localAnchorA = def.localAnchorA;
     joint.localAnchorB = def.localAnchorB;
-    joint.solver = solver;
-    joint.hasBiasOverride = def.biasFactor.has_value();
-    joint.biasOverride = def.biasFactor.value_or(0.0f);
-    joint.collideConnected = def.collideConnected;
-    joint.hasLetGoOverride = def.letGoSeparation.has_value();
-    joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
-    joint.userData = def.userData;
+    DistanceJoint& distanceJoint = joint.data.emplace<DistanceJoint>();
     distanceJoint.length = length;
     setLimit(distanceJoint, def.limit);
     setSpring(distanceJoint, def.spring);
@@ -173,20 +190,14 @@ JointId World::createJoint(const DistanceJointDef& def) {
 JointId World::createJoint(const PulleyJointDef& def) {
     const char* call = "World::createJoint";
     Impl& w = *impl_;
-    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
-    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
-    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.groundAnchorA", def.groundAnchorA);
     requireCoordinate(call, "def.groundAnchorB", def.groundAnchorB);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
     requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
     requireInRange(call, "def.ratio", def.ratio, kMinPulleyRatio, 1.0f / kMinPulleyRatio);
-    PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
-    checkSolver(call, "def.positionSolver", solver);
-    if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
-    if (def.letGoSeparation) {
-        requireNonNegative(call, "def.letGoSeparation", *def.letGoSeparation);
-    }
+    const PositionSolver solver = checkSolverOf(call, def, w);
+    checkBiasAndLetGo(call, def);
     const float currentA =
         distance(transformPoint(w.bodies[a].xf, def.localAnchorA), def.groundAnchorA);
     const float currentB =
@@ -198,19 +209,11 @@ JointId World::createJoint(const PulleyJointDef& def) {
     checkPulleyLength(call, def.lengthB ? "def.lengthB" : "def.lengthB (anchor B's distance)",
                       lengthB);
 
-    Joint joint;
-    PulleyJoint& pulley = joint.data.emplace<PulleyJoint>();
-    joint.edges[0].body = a;
-    joint.edges[1].body = b;
+    Joint joint = jointFromDef(def, a, b);
+    setStrategyFields(joint, def, solver);
     joint.localAnchorA = def.localAnchorA;
     joint.localAnchorB = def.localAnchorB;
-    joint.solver = solver;
-    joint.hasBiasOverride = def.biasFactor.has_value();
-    joint.biasOverride = def.biasFactor.value_or(0.0f);
-    joint.collideConnected = def.collideConnected;
-    joint.hasLetGoOverride = def.letGoSeparation.has_value();
-    joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
-    joint.userData = def.userData;
+    PulleyJoint& pulley = joint.data.emplace<PulleyJoint>();
     pulley.groundAnchorA = def.groundAnchorA;
     pulley.groundAnchorB = def.groundAnchorB;
     pulley.lengthA = lengthA;
@@ -219,25 +222,10 @@ JointId World::createJoint(const PulleyJointDef& def) {
     return w.addJoint(joint);
 }
 
-namespace {
-// The fields every def shares.
-template <typename Def>
-Joint jointFromDef(const Def& def, std::int32_t a, std::int32_t b) {
-    Joint joint;
-    joint.edges[0].body = a;
-    joint.edges[1].body = b;
-    joint.collideConnected = def.collideConnected;
-    joint.userData = def.userData;
-    return joint;
-}
-}  // namespace
-
 JointId World::createJoint(const FrictionJointDef& def) {
     const char* call = "World::createJoint";
     Impl& w = *impl_;
-    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
-    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
-    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
     requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
     requireNonNegative(call, "def.maxForce", def.maxForce);
@@ -255,9 +243,7 @@ JointId World::createJoint(const FrictionJointDef& def) {
 JointId World::createJoint(const MotorJointDef& def) {
     const char* call = "World::createJoint";
     Impl& w = *impl_;
-    std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
-    std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
-    if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    const auto [a, b] = checkBodies(call, def, w);
     if (def.linearOffset) requireCoordinate(call, "def.linearOffset", *def.linearOffset);
     if (def.angularOffset) requireMagnitude(call, "def.angularOffset", *def.angularOffset);
     requireNonNegative(call, "def.maxForce", def.maxForce);
