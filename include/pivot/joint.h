@@ -161,8 +161,8 @@ struct PulleyJointDef {
     Vec2 groundAnchorB;
     Vec2 localAnchorA;  ///< m, in body A's frame (origin-relative)
     Vec2 localAnchorB;
-    /// > 0, at least kMinPulleyRatio and at most 1 / kMinPulleyRatio: how much faster side B's
-    /// length changes than side A's (a block and tackle).
+    /// In [kMinPulleyRatio, 1 / kMinPulleyRatio]. Side B's length changes 1 / ratio as fast as
+    /// side A's, and the rope pulls B ratio times as hard as A (a block and tackle).
     float ratio = 1.0f;
     /// m, each at least kMinPulleyLength. Unset: the anchors' distances when the joint is
     /// created.
