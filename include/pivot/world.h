@@ -272,8 +272,9 @@ public:
     JointType jointType(JointId id) const;
     BodyId jointBodyA(JointId id) const;
     BodyId jointBodyB(JointId id) const;
-    Vec2 jointAnchorA(JointId id) const;  ///< m, the pin on body A in world coordinates
-    Vec2 jointAnchorB(JointId id) const;  ///< m, the pin on body B in world coordinates
+    /// m, the joint's anchor on body A in world coordinates (a motor joint's: body A's origin).
+    Vec2 jointAnchorA(JointId id) const;
+    Vec2 jointAnchorB(JointId id) const;  ///< m, the anchor on body B (a motor joint's: B's origin)
     /// m, how far the joint has come apart: for a revolute joint |anchorB - anchorA|, for a
     /// distance joint how far its length is from its rest length (a rod) or outside its limit,
     /// for a pulley joint |lengthA + ratio lengthB - the same at creation|.
@@ -298,7 +299,8 @@ public:
     /// The joints let go during the last step, in the order the step reached them (the same
     /// for every worker count). Cleared when the next step starts.
     std::vector<JointLetGoEvent> jointLetGoEvents() const;
-    /// rad, angleB - angleA - referenceAngle (a distance joint's reference angle is 0).
+    /// rad, angleB - angleA - referenceAngle (only revolute joints have a reference angle; for
+    /// the others it is 0).
     float jointAngle(JointId id) const;
     /// rad/s, angular velocity of B relative to A.
     float jointSpeed(JointId id) const;
