@@ -28,8 +28,8 @@
 #include "islands/graph_coloring.h"
 #include "islands/island_set.h"
 #include "islands/team.h"
-#include "joints/joint_types.h"
 #include "joints/joint.h"
+#include "joints/joint_types.h"
 #include "model/body.h"
 #include "pivot/joint.h"
 
@@ -70,8 +70,8 @@ struct IslandSchedule {
 class IslandScheduler {
 public:
     /// Plans `island` into `schedule`. Allocates only while its buffers grow.
-    void plan(const IslandView& island, const SlotPool<Body>& bodies,
-              const SlotPool<Joint>& joints, IslandSchedule& schedule);
+    void plan(const IslandView& island, const SlotPool<Body>& bodies, const SlotPool<Joint>& joints,
+              IslandSchedule& schedule);
     /// Room to plan an island holding every body, joint and contact of the world.
     void reserve(const BufferBounds& bound) {
         fixed_.reserve(bound.bodies);

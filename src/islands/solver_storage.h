@@ -2,8 +2,8 @@
 #pragma once
 
 #include "core/slot_pool.h"
-#include "joints/mouse_joint.h"
 #include "joints/joint.h"
+#include "joints/mouse_joint.h"
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "box2d/parts.h"
+#include "islands/island_schedule.h"
 #include "pivot/pivot.h"
 #include "scenes/parts.h"
-#include "islands/island_schedule.h"
 
 using namespace pivot;
 
