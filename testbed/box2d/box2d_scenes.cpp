@@ -48,21 +48,27 @@ b2RevoluteJoint* pin(Box2dScene& scene, b2Body* a, b2Body* b, b2Vec2 anchor) {
     return joint;
 }
 
+// The seed note's pendulum ball: 1 m across, 5 m below `pivot`, turning about it at `spin`.
+b2Body* spinningBall(b2World& world, b2Vec2 pivot, float spin) {
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position = pivot + b2Vec2(0.0f, -5.0f);
+    def.angularVelocity = spin;
+    def.linearVelocity = b2Cross(spin, def.position - pivot);
+    b2Body* body = world.CreateBody(&def);
+    b2CircleShape circle;
+    circle.m_radius = 0.5f;
+    body->CreateFixture(&circle, 1.0f);
+    return body;
+}
+
 }  // namespace
 
 Box2dScene buildSpinningPendulum(float spin, bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);
     b2Body* anchor = staticBody(*scene.world);
-    b2BodyDef def;
-    def.type = b2_dynamicBody;
-    def.position = pivot + b2Vec2(0.0f, -5.0f);
-    def.angularVelocity = spin;
-    def.linearVelocity = b2Cross(spin, def.position - pivot);
-    b2Body* body = scene.world->CreateBody(&def);
-    b2CircleShape circle;
-    circle.m_radius = 0.5f;
-    body->CreateFixture(&circle, 1.0f);
+    b2Body* body = spinningBall(*scene.world, pivot, spin);
     pin(scene, anchor, body, pivot);
     scene.bodies.push_back(body);
     return scene;
@@ -71,17 +77,8 @@ Box2dScene buildSpinningPendulum(float spin, bool continuous) {
 Box2dScene buildDistancePendulum(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);
-    const float spin = 100.0f;
     b2Body* anchor = staticBody(*scene.world);
-    b2BodyDef def;
-    def.type = b2_dynamicBody;
-    def.position = pivot + b2Vec2(0.0f, -5.0f);
-    def.angularVelocity = spin;
-    def.linearVelocity = b2Cross(spin, def.position - pivot);
-    b2Body* body = scene.world->CreateBody(&def);
-    b2CircleShape circle;
-    circle.m_radius = 0.5f;
-    body->CreateFixture(&circle, 1.0f);
+    b2Body* body = spinningBall(*scene.world, pivot, 100.0f);
     b2DistanceJointDef jd;
     jd.bodyA = anchor;
     jd.bodyB = body;

@@ -11,25 +11,43 @@ void buildPendulum(Scene& scene, const SceneOptions& options) {
     buildSpinningPendulum(scene, options, 100.0f);
 }
 
-void buildSpinningPendulum(Scene& scene, const SceneOptions& options, float spin) {
-    World& world = *scene.world;
-    const Vec2 pivot{0.0f, 10.0f};
-    const float stickLength = 5.0f;
-
-    BodyId ground = world.createBody(BodyDef{});
-
+namespace {
+// The ball: 1 m across, hanging 5 m below `pivot` and turning about it at `spin`.
+BodyId spinningBall(World& world, Vec2 pivot, float spin) {
     BodyDef ballDef;
     ballDef.type = BodyType::Dynamic;
-    ballDef.position = pivot + Vec2{0.0f, -stickLength};
+    ballDef.position = pivot + Vec2{0.0f, -5.0f};
     ballDef.angularVelocity = spin;
     ballDef.linearVelocity = cross(spin, ballDef.position - pivot);
     BodyId ball = world.createBody(ballDef);
     ShapeDef shape;
     shape.density = 1.0f;
     world.createShape(ball, shape, Circle{{0.0f, 0.0f}, 0.5f});
+    return ball;
+}
+}  // namespace
 
+void buildSpinningPendulum(Scene& scene, const SceneOptions& options, float spin) {
+    World& world = *scene.world;
+    const Vec2 pivot{0.0f, 10.0f};
+    BodyId ground = world.createBody(BodyDef{});
+    BodyId ball = spinningBall(world, pivot, spin);
     scene.bodies.push_back(ball);
     scene.joints.push_back(world.createJoint(options.jointAt(ground, ball, pivot)));
+}
+
+// The pendulum with the stick made a distance joint: the ball's centre is held 5 m from the
+// pivot. Where the revolute joint's pin is a 2x2 block, the rod is one scalar row along the
+// stick, the shape of constraint for which the note wonders whether Modified NGS is viable.
+void buildDistancePendulum(Scene& scene, const SceneOptions& options) {
+    World& world = *scene.world;
+    const Vec2 pivot{0.0f, 10.0f};
+    BodyId ground = world.createBody(BodyDef{});
+    BodyId ball = spinningBall(world, pivot, 100.0f);
+    DistanceJointDef jd = options.distanceJoint(ground, ball);
+    jd.localAnchorA = pivot;
+    scene.bodies.push_back(ball);
+    scene.joints.push_back(world.createJoint(jd));
 }
 
 }  // namespace pivot::scenes
