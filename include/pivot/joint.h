@@ -24,10 +24,11 @@ enum class JointType : std::uint8_t {
     Pulley,
     Friction,
     Motor,
+    Prismatic,
 };
 
-/// The type's name: "revolute", "distance", "pulley", "friction", "motor"; "invalid" for a value
-/// out of range.
+/// The type's name: "revolute", "distance", "pulley", "friction", "motor", "prismatic";
+/// "invalid" for a value out of range.
 const char* jointTypeName(JointType type);
 
 /// Bounds on the joint angle (angleB - angleA - referenceAngle), rad, lower <= upper. The limit
@@ -174,6 +175,71 @@ struct PulleyJointDef {
     std::optional<float> letGoSeparation;
     bool collideConnected = true;  ///< as Box2D's pulley: the two loads may touch
     std::uint64_t userData = 0;
+};
+
+/// Bounds on a prismatic joint's translation (World::jointTranslation), m, lower <= upper. Both
+/// are corrected by the joint's PositionSolver, without slop.
+struct TranslationLimit {
+    bool enabled = false;
+    float lower = 0.0f;
+    float upper = 0.0f;
+};
+
+/// Drives a joint's translation speed towards `speed` with at most `maxForce`. Acts in the
+/// velocity phase only, the same for every PositionSolver.
+struct LinearMotor {
+    bool enabled = false;
+    float speed = 0.0f;     ///< m/s
+    float maxForce = 0.0f;  ///< N, >= 0
+};
+
+/// Everything needed to create a prismatic joint: body B slides along an axis fixed in body A,
+/// without turning relative to it (a piston, an elevator, a drawer). Two position constraints
+/// hold it, corrected by the joint's PositionSolver as one 2x2 block: the anchor of B stays on
+/// the line through A's anchor along the axis, and the relative angle stays the reference angle.
+/// Along the axis, the translation (anchor B - anchor A) . axis is free, within the optional
+/// limit (which joins the block, as a 3x3, while reached), driven by the optional motor and
+/// pulled towards 0 by the optional spring.
+struct PrismaticJointDef {
+    BodyId bodyA;
+    BodyId bodyB;
+    Vec2 localAnchorA;  ///< m, in body A's frame (origin-relative)
+    Vec2 localAnchorB;  ///< m, in body B's frame
+    /// The axis in body A's frame; any length above kLinearSlop (it is normalised).
+    Vec2 localAxisA{1.0f, 0.0f};
+    /// rad, angleB - angleA when the joint holds.
+    float referenceAngle = 0.0f;
+    /// When set, both anchors are this world point and the reference angle the bodies' current
+    /// relative angle (as RevoluteJointDef::worldAnchor; refused together with a non-zero local
+    /// anchor or reference angle).
+    std::optional<Vec2> worldAnchor;
+    /// When set, the axis in world coordinates at creation: localAxisA is taken from body A's
+    /// pose (refused together with a localAxisA other than the default (1, 0)).
+    std::optional<Vec2> worldAxis;
+    TranslationLimit limit;
+    LinearMotor motor;
+    /// Soft, towards translation 0; no position correction (JointSpring).
+    JointSpring spring;
+    /// Unset: the world's default (WorldDef::defaultPositionSolver).
+    std::optional<PositionSolver> positionSolver;
+    /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
+    std::optional<float> biasFactor;
+    /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far anchor B
+    /// is off the axis line, and beyond a reached limit (World::jointSeparation).
+    std::optional<float> letGoSeparation;
+    bool collideConnected = false;
+    std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
+
+    /// A joint at a world anchor sliding along a world axis, at the bodies' current relative
+    /// angle.
+    static PrismaticJointDef atWorldAnchor(BodyId a, BodyId b, Vec2 anchor, Vec2 axis) {
+        PrismaticJointDef def;
+        def.bodyA = a;
+        def.bodyB = b;
+        def.worldAnchor = anchor;
+        def.worldAxis = axis;
+        return def;
+    }
 };
 
 /// Everything needed to create a friction joint: top-down friction between two bodies (a box

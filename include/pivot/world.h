@@ -263,6 +263,7 @@ public:
     JointId createJoint(const PulleyJointDef& def);
     JointId createJoint(const FrictionJointDef& def);
     JointId createJoint(const MotorJointDef& def);
+    JointId createJoint(const PrismaticJointDef& def);
     void destroyJoint(JointId id);
     bool isValid(JointId id) const;
     int jointCount() const;
@@ -277,7 +278,9 @@ public:
     Vec2 jointAnchorB(JointId id) const;  ///< m, the anchor on body B (a motor joint's: B's origin)
     /// m, how far the joint has come apart: for a revolute joint |anchorB - anchorA|, for a
     /// distance joint how far its length is from its rest length (a rod) or outside its limit,
-    /// for a pulley joint |lengthA + ratio lengthB - the same at creation|.
+    /// for a pulley joint |lengthA + ratio lengthB - the same at creation|, for a prismatic joint
+    /// how far anchor B is off the axis line, combined (root of the sum of squares) with how far
+    /// the translation is beyond its limit.
     float jointSeparation(JointId id) const;
     /// m, |anchorB - anchorA|.
     float jointLength(JointId id) const;
@@ -299,8 +302,8 @@ public:
     /// The joints let go during the last step, in the order the step reached them (the same
     /// for every worker count). Cleared when the next step starts.
     std::vector<JointLetGoEvent> jointLetGoEvents() const;
-    /// rad, angleB - angleA - referenceAngle (only revolute joints have a reference angle; for
-    /// the others it is 0).
+    /// rad, angleB - angleA - referenceAngle (revolute and prismatic joints have a reference
+    /// angle; for the others it is 0).
     float jointAngle(JointId id) const;
     /// rad/s, angular velocity of B relative to A.
     float jointSpeed(JointId id) const;
@@ -308,7 +311,8 @@ public:
     /// joint keeps reporting the force it held when it fell asleep).
     Vec2 jointReactionForce(JointId id) const;
     /// N m, the torque the joint applied to body B in that step (revolute: motor plus limits;
-    /// friction and motor: their angular row; distance and pulley joints apply none).
+    /// friction and motor: their angular row; prismatic: what holds its angle; distance and
+    /// pulley joints apply none).
     float jointReactionTorque(JointId id) const;
 
     // Revolute joints (the calls from here to setJointMotor refuse other types).
@@ -338,6 +342,23 @@ public:
     /// m, the current length of side A (ground anchor A to anchor A), and of side B.
     float pulleyJointLengthA(JointId id) const;
     float pulleyJointLengthB(JointId id) const;
+
+    // Prismatic joints (these calls refuse other types). Each setter wakes the joint's bodies;
+    // changing the limit restarts its impulses.
+    /// m, (anchorB - anchorA) . axis, the axis turning with body A.
+    float jointTranslation(JointId id) const;
+    /// m/s, the rate of change of jointTranslation.
+    float jointTranslationSpeed(JointId id) const;
+    /// The axis in world coordinates (unit).
+    Vec2 prismaticJointAxis(JointId id) const;
+    TranslationLimit prismaticJointLimit(JointId id) const;
+    void setPrismaticJointLimit(JointId id, const TranslationLimit& limit);
+    LinearMotor prismaticJointMotor(JointId id) const;
+    void setPrismaticJointMotor(JointId id, const LinearMotor& motor);
+    JointSpring prismaticJointSpring(JointId id) const;
+    void setPrismaticJointSpring(JointId id, const JointSpring& spring);
+    /// N, the motor's share of the reaction force, along the axis.
+    float prismaticJointMotorForce(JointId id) const;
 
     // Friction and motor joints (these calls refuse other types). Each setter wakes the joint's
     // bodies.

@@ -40,7 +40,7 @@ struct DistanceJoint {
     void clearImpulses() { impulse = lowerImpulse = upperImpulse = 0.0f; }
     /// m, how far the joint, its anchors (in world coordinates) where they are, is from what it
     /// allows.
-    float separation(Vec2 anchorA, Vec2 anchorB) const {
+    float separation(Rot, Vec2 anchorA, Vec2 anchorB) const {
         return separationAt(distance(anchorA, anchorB));
     }
     float separationAt(float currentLength) const {

@@ -1,7 +1,7 @@
 // Joint storage: what persists between steps for every joint, whatever its type. The fields all
 // types share are here; each type's own settings and accumulated impulses are its alternative of
-// `data` (revolute_joint.h, distance_joint.h, pulley_joint.h,
-// velocity_joints.h), in the order of joints/joint_types.h
+// `data` (revolute_joint.h, distance_joint.h, pulley_joint.h, velocity_joints.h,
+// prismatic_joint.h), in the order of joints/joint_types.h
 // and of the public JointType. The per-step solver state lives in each type's constraint, built
 // afresh for each island each step.
 #pragma once
@@ -11,6 +11,7 @@
 #include <variant>
 
 #include "joints/distance_joint.h"
+#include "joints/prismatic_joint.h"
 #include "joints/pulley_joint.h"
 #include "joints/revolute_joint.h"
 #include "joints/velocity_joints.h"
@@ -20,8 +21,8 @@
 
 namespace pivot {
 
-using JointData =
-    std::variant<RevoluteJoint, DistanceJoint, PulleyJoint, FrictionJoint, MotorJoint>;
+using JointData = std::variant<RevoluteJoint, DistanceJoint, PulleyJoint, FrictionJoint, MotorJoint,
+                               PrismaticJoint>;
 
 struct Joint {
     BodyEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
@@ -66,7 +67,7 @@ struct Joint {
     float separation(const Transform& xfA, const Transform& xfB) const {
         const Vec2 pA = transformPoint(xfA, localAnchorA);
         const Vec2 pB = transformPoint(xfB, localAnchorB);
-        return std::visit([&](const auto& data) { return data.separation(pA, pB); }, data);
+        return std::visit([&](const auto& data) { return data.separation(xfA.q, pA, pB); }, data);
     }
     /// Whether the stored impulses, and the forces and torques they stand for (impulse / dt),
     /// are all finite: what the reaction queries report must be.

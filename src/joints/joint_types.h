@@ -13,6 +13,7 @@
 
 #include "joints/distance_constraint.h"
 #include "joints/joint.h"
+#include "joints/prismatic_constraint.h"
 #include "joints/pulley_constraint.h"
 #include "joints/revolute_constraint.h"
 #include "joints/velocity_constraints.h"
@@ -36,8 +37,9 @@ struct JointTypeList {
     }
 };
 
-using JointConstraintTypes = JointTypeList<RevoluteConstraint, DistanceConstraint, PulleyConstraint,
-                                           FrictionConstraint, MotorConstraint>;
+using JointConstraintTypes =
+    JointTypeList<RevoluteConstraint, DistanceConstraint, PulleyConstraint, FrictionConstraint,
+                  MotorConstraint, PrismaticConstraint>;
 
 constexpr int kJointTypeCount = JointConstraintTypes::kCount;
 constexpr int kJointGroupCount = kPositionSolverCount * kJointTypeCount;
@@ -72,7 +74,8 @@ static_assert(storedAt<JointType::Revolute, RevoluteJoint>() &&
                   storedAt<JointType::Distance, DistanceJoint>() &&
                   storedAt<JointType::Pulley, PulleyJoint>() &&
                   storedAt<JointType::Friction, FrictionJoint>() &&
-                  storedAt<JointType::Motor, MotorJoint>(),
+                  storedAt<JointType::Motor, MotorJoint>() &&
+                  storedAt<JointType::Prismatic, PrismaticJoint>(),
               "JointData lists the joint types in the order of the public JointType");
 
 }  // namespace pivot

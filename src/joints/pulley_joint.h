@@ -24,7 +24,7 @@ struct PulleyJoint {
     }
     void clearImpulses() { impulse = 0.0f; }
     /// m, |C|: how far the rope's two lengths are from what it was cut to.
-    float separation(Vec2 anchorA, Vec2 anchorB) const {
+    float separation(Rot, Vec2 anchorA, Vec2 anchorB) const {
         return std::fabs(constant() - distance(anchorA, groundAnchorA) -
                          ratio * distance(anchorB, groundAnchorB));
     }

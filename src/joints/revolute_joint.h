@@ -32,7 +32,7 @@ struct RevoluteJoint {
                std::isfinite(invDt * upperImpulse);
     }
     /// m: a pin's separation is how far apart its anchors (in world coordinates) are.
-    float separation(Vec2 anchorA, Vec2 anchorB) const { return distance(anchorA, anchorB); }
+    float separation(Rot, Vec2 anchorA, Vec2 anchorB) const { return distance(anchorA, anchorB); }
     void clearImpulses() {
         impulse = Vec2{};
         motorImpulse = lowerImpulse = upperImpulse = 0.0f;

@@ -26,7 +26,7 @@ struct FrictionJoint {
         angularImpulse = 0.0f;
     }
     /// Friction holds nothing together: it never separates.
-    float separation(Vec2, Vec2) const { return 0.0f; }
+    float separation(Rot, Vec2, Vec2) const { return 0.0f; }
 };
 
 struct MotorJoint {
@@ -47,7 +47,7 @@ struct MotorJoint {
         angularImpulse = 0.0f;
     }
     /// A motor drives towards its offset within limits; falling short is not coming apart.
-    float separation(Vec2, Vec2) const { return 0.0f; }
+    float separation(Rot, Vec2, Vec2) const { return 0.0f; }
 };
 
 }  // namespace pivot

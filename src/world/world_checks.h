@@ -101,6 +101,35 @@ inline void checkSpring(const char* call, const std::string& field, const JointS
     }
 }
 
+inline void checkTranslationLimit(const char* call, const std::string& field,
+                                  const TranslationLimit& limit) {
+    requireInRange(call, (field + ".lower").c_str(), limit.lower, -kMaxCoordinate, kMaxCoordinate);
+    requireInRange(call, (field + ".upper").c_str(), limit.upper, -kMaxCoordinate, kMaxCoordinate);
+    if (limit.lower > limit.upper) {
+        fail(call, field + ".lower must be <= " + field + ".upper (got " +
+                       formatFloat(limit.lower) + " > " + formatFloat(limit.upper) + ")");
+    }
+}
+
+inline void checkLinearMotor(const char* call, const std::string& field, const LinearMotor& motor) {
+    requireWithin(call, (field + ".speed").c_str(), motor.speed, kMaxSpeed, "kMaxSpeed");
+    requireNonNegative(call, (field + ".maxForce").c_str(), motor.maxForce);
+}
+
+/// An axis of any length the solver can normalise: finite, within kMaxMagnitude, and longer
+/// than kLinearSlop (a shorter one has no reliable direction).
+inline Vec2 checkedUnitAxis(const char* call, const char* field, Vec2 axis) {
+    requireMagnitude(call, field, axis);
+    const float len = length(axis);
+    if (!(len > kLinearSlop)) {
+        fail(call, std::string(field) + " must be longer than kLinearSlop (" +
+                       formatFloat(kLinearSlop) + ") to give a direction (got " + formatVec2(axis) +
+                       ")");
+    }
+    const float inv = 1.0f / len;  // normalised as Box2D's b2Vec2::Normalize does
+    return {inv * axis.x, inv * axis.y};
+}
+
 inline void checkBiasFactor(const char* call, const char* field, float bias) {
     requireInRange(call, field, bias, 0.0f, 1.0f);
 }

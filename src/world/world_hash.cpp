@@ -61,6 +61,25 @@ void hashJointData(StateHasher& h, const MotorJoint& j) {
     h.add(j.linearImpulse);
     h.add(j.angularImpulse);
 }
+void hashJointData(StateHasher& h, const PrismaticJoint& j) {
+    h.add(static_cast<std::int32_t>(JointType::Prismatic));
+    h.add(j.localAxisA);
+    h.add(j.enableLimit);
+    h.add(j.lowerTranslation);
+    h.add(j.upperTranslation);
+    h.add(j.enableMotor);
+    h.add(j.motorSpeed);
+    h.add(j.maxMotorForce);
+    h.add(j.enableSpring);
+    h.add(j.hertz);
+    h.add(j.dampingRatio);
+    h.add(j.impulse);
+    h.add(j.motorImpulse);
+    h.add(j.lowerImpulse);
+    h.add(j.upperImpulse);
+    h.add(j.springImpulse);
+    h.add(j.axis);
+}
 }  // namespace
 
 // Everything a public call can change goes in, so that "the hash is unchanged" means "the world

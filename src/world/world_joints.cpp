@@ -12,10 +12,22 @@ void setLimit(DistanceJoint& joint, const LengthLimit& limit) {
     joint.minLength = limit.min;
     joint.maxLength = limit.max;
 }
-void setSpring(DistanceJoint& joint, const JointSpring& spring) {
+template <typename Storage>
+void setSpring(Storage& joint, const JointSpring& spring) {
     joint.enableSpring = spring.enabled;
     joint.hertz = spring.hertz;
     joint.dampingRatio = spring.dampingRatio;
+}
+void setLimit(PrismaticJoint& joint, const TranslationLimit& limit) {
+    joint.enableLimit = limit.enabled;
+    joint.lowerTranslation = limit.lower;
+    joint.upperTranslation = limit.upper;
+    joint.lowerImpulse = joint.upperImpulse = 0.0f;
+}
+void setMotor(PrismaticJoint& joint, const LinearMotor& motor) {
+    joint.enableMotor = motor.enabled;
+    joint.motorSpeed = motor.speed;
+    joint.maxMotorForce = motor.maxForce;
 }
 
 // The checks and fields every def shares: two distinct live bodies of this world.
@@ -69,6 +81,7 @@ const char* jointTypeName(JointType type) {
         case JointType::Pulley: return "pulley";
         case JointType::Friction: return "friction";
         case JointType::Motor: return "motor";
+        case JointType::Prismatic: return "prismatic";
     }
     return "invalid";
 }
@@ -222,6 +235,57 @@ JointId World::createJoint(const PulleyJointDef& def) {
     return w.addJoint(joint);
 }
 
+JointId World::createJoint(const PrismaticJointDef& def) {
+    const char* call = "World::createJoint";
+    Impl& w = *impl_;
+    const auto [a, b] = checkBodies(call, def, w);
+    requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
+    requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
+    requireMagnitude(call, "def.referenceAngle", def.referenceAngle);
+    if (def.worldAnchor) requireCoordinate(call, "def.worldAnchor", *def.worldAnchor);
+    const Vec2 givenAxis = def.worldAxis.value_or(def.localAxisA);
+    const Vec2 unitAxis =
+        checkedUnitAxis(call, def.worldAxis ? "def.worldAxis" : "def.localAxisA", givenAxis);
+    const PositionSolver solver = checkSolverOf(call, def, w);
+    if (def.worldAnchor &&
+        (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{} || def.referenceAngle != 0.0f)) {
+        fail(call, "def.worldAnchor " + formatVec2(*def.worldAnchor) +
+                       " is set together with def.localAnchorA " + formatVec2(def.localAnchorA) +
+                       ", def.localAnchorB " + formatVec2(def.localAnchorB) +
+                       " or def.referenceAngle " + formatFloat(def.referenceAngle) +
+                       "; the world anchor would replace them: set one or the other");
+    }
+    if (def.worldAxis && def.localAxisA != Vec2{1.0f, 0.0f}) {
+        fail(call, "def.worldAxis " + formatVec2(*def.worldAxis) +
+                       " is set together with def.localAxisA " + formatVec2(def.localAxisA) +
+                       "; the world axis would replace it: set one or the other");
+    }
+    checkBiasAndLetGo(call, def);
+    checkTranslationLimit(call, "def.limit", def.limit);
+    checkLinearMotor(call, "def.motor", def.motor);
+    checkSpring(call, "def.spring", def.spring);
+
+    Joint joint = jointFromDef(def, a, b);
+    setStrategyFields(joint, def, solver);
+    const Body& bodyA = w.bodies[a];
+    const Body& bodyB = w.bodies[b];
+    if (def.worldAnchor) {
+        joint.localAnchorA = inverseTransformPoint(bodyA.xf, *def.worldAnchor);
+        joint.localAnchorB = inverseTransformPoint(bodyB.xf, *def.worldAnchor);
+        joint.referenceAngle = bodyB.angle - bodyA.angle;
+    } else {
+        joint.localAnchorA = def.localAnchorA;
+        joint.localAnchorB = def.localAnchorB;
+        joint.referenceAngle = def.referenceAngle;
+    }
+    PrismaticJoint& prismatic = joint.data.emplace<PrismaticJoint>();
+    prismatic.localAxisA = def.worldAxis ? inverseRotate(bodyA.xf.q, unitAxis) : unitAxis;
+    setLimit(prismatic, def.limit);
+    setMotor(prismatic, def.motor);
+    setSpring(prismatic, def.spring);
+    return w.addJoint(joint);
+}
+
 JointId World::createJoint(const FrictionJointDef& def) {
     const char* call = "World::createJoint";
     Impl& w = *impl_;
@@ -348,6 +412,11 @@ Vec2 World::jointReactionForce(JointId id) const {
     if (const auto* motor = std::get_if<MotorJoint>(&j.data)) {
         return j.impulseInvDt * motor->linearImpulse;
     }
+    if (const auto* prismatic = std::get_if<PrismaticJoint>(&j.data)) {
+        const Vec2 perp{-prismatic->axis.y, prismatic->axis.x};
+        return j.impulseInvDt *
+               (prismatic->impulse.x * perp + prismatic->axialImpulse() * prismatic->axis);
+    }
     return j.impulseInvDt * std::get<RevoluteJoint>(j.data).impulse;
 }
 
@@ -369,6 +438,9 @@ float World::jointReactionTorque(JointId id) const {
     }
     if (const auto* motor = std::get_if<MotorJoint>(&j.data)) {
         return j.impulseInvDt * motor->angularImpulse;
+    }
+    if (const auto* prismatic = std::get_if<PrismaticJoint>(&j.data)) {
+        return j.impulseInvDt * prismatic->impulse.y;
     }
     return 0.0f;
 }
@@ -615,6 +687,86 @@ std::vector<JointId> World::jointIds() const {
     impl_->joints.forEach(
         [&](std::int32_t index, const Joint&) { ids.push_back(impl_->jointId(index)); });
     return ids;
+}
+
+// --- prismatic joints ------------------------------------------------------------------------
+
+float World::jointTranslation(JointId id) const {
+    const char* call = "World::jointTranslation";
+    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Prismatic)];
+    const Transform& xfA = impl_->bodies[j.bodyA()].xf;
+    const Transform& xfB = impl_->bodies[j.bodyB()].xf;
+    const Vec2 d = transformPoint(xfB, j.localAnchorB) - transformPoint(xfA, j.localAnchorA);
+    return dot(rotate(xfA.q, std::get<PrismaticJoint>(j.data).localAxisA), d);
+}
+
+float World::jointTranslationSpeed(JointId id) const {
+    const char* call = "World::jointTranslationSpeed";
+    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Prismatic)];
+    const Body& a = impl_->bodies[j.bodyA()];
+    const Body& b = impl_->bodies[j.bodyB()];
+    const Vec2 rA = rotate(a.xf.q, j.localAnchorA - a.localCenter);
+    const Vec2 rB = rotate(b.xf.q, j.localAnchorB - b.localCenter);
+    const Vec2 d = (b.center + rB) - (a.center + rA);
+    const Vec2 axis = rotate(a.xf.q, std::get<PrismaticJoint>(j.data).localAxisA);
+    // The axis turns with A: d . (wA x axis), plus the anchors' relative velocity along it.
+    const Vec2 vA = a.linearVelocity + cross(a.angularVelocity, rA);
+    const Vec2 vB = b.linearVelocity + cross(b.angularVelocity, rB);
+    return dot(d, cross(a.angularVelocity, axis)) + dot(axis, vB - vA);
+}
+
+Vec2 World::prismaticJointAxis(JointId id) const {
+    const Joint& j = impl_->joints[impl_->jointIndexOfType("World::prismaticJointAxis", id,
+                                                           JointType::Prismatic)];
+    return rotate(impl_->bodies[j.bodyA()].xf.q, std::get<PrismaticJoint>(j.data).localAxisA);
+}
+
+TranslationLimit World::prismaticJointLimit(JointId id) const {
+    const PrismaticJoint& p =
+        impl_->jointData<PrismaticJoint>("World::prismaticJointLimit", id, JointType::Prismatic);
+    return {p.enableLimit, p.lowerTranslation, p.upperTranslation};
+}
+void World::setPrismaticJointLimit(JointId id, const TranslationLimit& limit) {
+    const char* call = "World::setPrismaticJointLimit";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
+    checkTranslationLimit(call, "limit", limit);
+    Joint& j = impl_->joints[index];
+    setLimit(std::get<PrismaticJoint>(j.data), limit);
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+LinearMotor World::prismaticJointMotor(JointId id) const {
+    const PrismaticJoint& p =
+        impl_->jointData<PrismaticJoint>("World::prismaticJointMotor", id, JointType::Prismatic);
+    return {p.enableMotor, p.motorSpeed, p.maxMotorForce};
+}
+void World::setPrismaticJointMotor(JointId id, const LinearMotor& motor) {
+    const char* call = "World::setPrismaticJointMotor";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
+    checkLinearMotor(call, "motor", motor);
+    Joint& j = impl_->joints[index];
+    setMotor(std::get<PrismaticJoint>(j.data), motor);
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+JointSpring World::prismaticJointSpring(JointId id) const {
+    const PrismaticJoint& p =
+        impl_->jointData<PrismaticJoint>("World::prismaticJointSpring", id, JointType::Prismatic);
+    return {p.enableSpring, p.hertz, p.dampingRatio};
+}
+void World::setPrismaticJointSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setPrismaticJointSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    setSpring(std::get<PrismaticJoint>(j.data), spring);
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+float World::prismaticJointMotorForce(JointId id) const {
+    const char* call = "World::prismaticJointMotorForce";
+    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Prismatic)];
+    return j.impulseInvDt * std::get<PrismaticJoint>(j.data).motorImpulse;
 }
 
 }  // namespace pivot

@@ -25,7 +25,7 @@ void printAgreement(std::ostream& out) {
            "centre of mass and angle while stepping both (60 Hz, 8/3 iterations, Box2D's\n"
            "continuous collision off). Required: 1e-4 over 600 steps, or over the first 30 for\n"
            "chaotic scenes. 'identical' counts the steps, out of 600, before the first bit of\n"
-           "any pose differs.\n";
+           "any pose differs (Box2D's denormal coordinates read as 0, as pivot2d stores them).\n";
     printLine(out, "%-16s %-8s %6s %13s %13s %10s\n", "case", "chaotic", "steps", "max |dc| m",
               "max |da| rad", "identical");
     scenes::SceneOptions fullNgs;

@@ -167,6 +167,44 @@ Box2dScene buildMotorDrive(bool continuous) {
     return scene;
 }
 
+Box2dScene buildElevator(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    b2Body* ground = staticBody(*scene.world);
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(0.0f, 1.0f);
+    b2Body* platform = scene.world->CreateBody(&def);
+    b2PolygonShape shape;
+    shape.SetAsBox(1.5f, 0.1f);
+    b2FixtureDef fixture;  // pivot2d's default friction, 0.6 (Box2D's is 0.2)
+    fixture.shape = &shape;
+    fixture.friction = 0.6f;
+    fixture.density = 1.0f;
+    platform->CreateFixture(&fixture);
+    def.position.Set(1.0f, 1.6f);
+    b2Body* load = scene.world->CreateBody(&def);
+    shape.SetAsBox(0.5f, 0.5f);
+    fixture.density = 5.0f;
+    load->CreateFixture(&fixture);
+    b2PrismaticJointDef jd;
+    jd.Initialize(ground, platform, b2Vec2(0.0f, 1.0f), b2Vec2(0.0f, 1.0f));
+    jd.enableLimit = true;
+    jd.lowerTranslation = 0.0f;
+    jd.upperTranslation = 4.0f;
+    jd.enableMotor = true;
+    jd.motorSpeed = 1.0f;
+    jd.maxMotorForce = 500.0f;
+    auto* joint = static_cast<b2PrismaticJoint*>(scene.world->CreateJoint(&jd));
+    scene.joints.push_back(joint);
+    scene.bodies.push_back(platform);
+    scene.bodies.push_back(load);
+    scene.beforeStep = [joint](Box2dScene&, int step) {
+        if (step == 0 || step % 300 != 0) return;  // as the pivot2d scene
+        joint->SetMotorSpeed(-joint->GetMotorSpeed());
+    };
+    return scene;
+}
+
 Box2dScene buildLimitedPendulum(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);

@@ -53,6 +53,9 @@ const std::vector<SceneInfo>& allScenes() {
         {"top_down", "12 boxes sliding and spinning on a table seen from above (friction joints)",
          buildTopDown},
         {"motor_drive", "a plank driven round a figure of eight by a motor joint", buildMotorDrive},
+        {"elevator",
+         "a platform on a prismatic joint carrying an off-centre load up and down between limits",
+         buildElevator},
     };
     return scenes;
 }

@@ -80,6 +80,7 @@ void buildMotorizedRagdoll(Scene& scene, const SceneOptions& options);
 void buildDistancePendulum(Scene& scene, const SceneOptions& options);
 void buildRope(Scene& scene, const SceneOptions& options);
 void buildPulley(Scene& scene, const SceneOptions& options);
+void buildElevator(Scene& scene, const SceneOptions& options);
 void buildTopDown(Scene& scene, const SceneOptions& options);
 void buildMotorDrive(Scene& scene, const SceneOptions& options);
 /// 20 light links holding a ball 3,000 times heavier (not in the testbed table yet).

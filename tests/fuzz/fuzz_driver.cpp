@@ -465,6 +465,7 @@ private:
             {7, &Driver::createJoint},
             {3, &Driver::createDistanceJoint},
             {2, &Driver::createPulleyJoint},
+            {3, &Driver::createPrismaticJoint},
             {2, &Driver::createVelocityJoint},
             {2, &Driver::createMouseJoint},
             {3, &Driver::destroyBody},
@@ -756,6 +757,116 @@ private:
             joints_.remember(id);
             if (world_->jointType(id) != JointType::Distance) {
                 failure("createJoint: not a distance joint");
+            }
+        });
+    }
+
+    Arg<TranslationLimit> translationLimit() {
+        TranslationLimit l;
+        l.enabled = random_.chance(0.5f);
+        Arg<float> lower = values_->bounded(2.0f, kMaxCoordinate);
+        l.lower = lower.value;
+        l.upper = lower.value + random_.uniform(0.0f, 3.0f);
+        bool bad = lower.bad || !(l.upper <= kMaxCoordinate);
+        if (!bad && hostile_ > 0.0f && random_.chance(0.2f)) {
+            l.upper = l.lower - random_.uniform(0.1f, 1.0f) - 0.5f * std::fabs(l.lower);
+            bad = true;
+        }
+        return {l, bad};
+    }
+
+    Arg<LinearMotor> linearMotor() {
+        LinearMotor m;
+        m.enabled = random_.chance(0.5f);
+        Arg<float> speed = values_->bounded(5.0f, kMaxSpeed);
+        Arg<float> force = values_->nonNegative(500.0f);
+        m.speed = speed.value;
+        m.maxForce = force.value;
+        return {m, speed.bad || force.bad};
+    }
+
+    /// An axis: any length above kLinearSlop within kMaxMagnitude; now and then too short.
+    Arg<Vec2> axis() {
+        if (hostile_ > 0.0f && random_.chance(0.1f)) {
+            return {random_.chance(0.5f) ? Vec2{} : Vec2{0.5f * kLinearSlop, 0.0f}, true};
+        }
+        Arg<Vec2> a = values_->magnitude2(1.0f);
+        return {a.value, a.bad || !(length(a.value) > kLinearSlop)};
+    }
+
+    void createPrismaticJoint() {
+        if (world_->jointCount() >= kMaxJoints) {
+            destroyJoint();
+            return;
+        }
+        Arg<BodyId> a = pickBody();
+        Arg<BodyId> b = random_.chance(0.05f) ? a : pickBody();
+        PrismaticJointDef def;
+        def.bodyA = a.value;
+        def.bodyB = b.value;
+        bool bad = a.bad || b.bad || a.value == b.value;
+        const bool atWorldAnchor = random_.chance(0.6f);
+        if (atWorldAnchor) {
+            Arg<Vec2> anchor = values_->coordinate(15.0f);
+            def.worldAnchor = anchor.value;
+            bad = bad || anchor.bad;
+        }
+        if (!atWorldAnchor || (hostile_ > 0.0f && random_.chance(0.1f))) {
+            Arg<Vec2> localA = values_->coordinate(2.0f);
+            Arg<Vec2> localB = values_->coordinate(2.0f);
+            Arg<float> reference = values_->magnitude(3.0f);
+            def.localAnchorA = localA.value;
+            def.localAnchorB = localB.value;
+            def.referenceAngle = reference.value;
+            bad = bad || localA.bad || localB.bad || reference.bad;
+            if (atWorldAnchor && (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{} ||
+                                  def.referenceAngle != 0.0f)) {
+                bad = true;
+            }
+        }
+        // The axis, in A's frame or the world's; setting both is refused.
+        const bool worldAxis = random_.chance(0.5f);
+        Arg<Vec2> ax = axis();
+        (worldAxis ? def.worldAxis.emplace() : def.localAxisA) = ax.value;
+        bad = bad || ax.bad;
+        if (worldAxis && hostile_ > 0.0f && random_.chance(0.1f)) {
+            def.localAxisA = {0.0f, 1.0f};
+            bad = true;
+        }
+        Arg<TranslationLimit> l = translationLimit();
+        Arg<LinearMotor> m = linearMotor();
+        Arg<JointSpring> sp = spring();
+        def.limit = l.value;
+        def.motor = m.value;
+        def.spring = sp.value;
+        bad = bad || l.bad || m.bad || sp.bad;
+        if (random_.chance(0.7f)) {
+            Arg<PositionSolver> s = solver();
+            def.positionSolver = s.value;
+            bad = bad || s.bad;
+        }
+        if (random_.chance(0.4f)) {
+            Arg<float> bias = values_->fraction();
+            def.biasFactor = bias.value;
+            bad = bad || bias.bad;
+        }
+        if (random_.chance(0.2f)) {
+            Arg<float> letGo = values_->nonNegativeUpTo(20.0f, kMaxMagnitude);
+            def.letGoSeparation = letGo.value;
+            bad = bad || letGo.bad;
+        }
+        def.collideConnected = random_.chance(0.3f);
+        def.userData = random_.next();
+        trace("createPrismaticJoint a=" + idText(a.value) + " b=" + idText(b.value));
+        attempt("World::createJoint", verdict(bad), [&] {
+            JointId id = journal_.createJoint(def);
+            noteTag(id);
+            joints_.remember(id);
+            if (world_->jointType(id) != JointType::Prismatic) {
+                failure("createJoint: not a prismatic joint");
+            }
+            if (!(std::fabs(length(world_->prismaticJointAxis(id)) - 1.0f) < 1e-5f)) {
+                failure("createJoint: the prismatic axis is not a unit vector");
             }
         });
     }
@@ -1181,6 +1292,38 @@ private:
         switch (random_.below(8)) {
             case 7: {
                 const bool other = !joint.bad && !isType(joint, JointType::Distance);
+                if (random_.chance(0.3f)) {
+                    // The prismatic joint's setters.
+                    const bool notPrismatic = !joint.bad && !isType(joint, JointType::Prismatic);
+                    switch (random_.below(3)) {
+                        case 0: {
+                            Arg<TranslationLimit> l = translationLimit();
+                            trace("setPrismaticJointLimit " + idText(joint.value));
+                            attempt("World::setPrismaticJointLimit",
+                                    verdict(joint.bad || notPrismatic || l.bad),
+                                    [&] { journal_.setPrismaticJointLimit(joint.value, l.value); });
+                            break;
+                        }
+                        case 1: {
+                            Arg<LinearMotor> m = linearMotor();
+                            trace("setPrismaticJointMotor " + idText(joint.value));
+                            attempt("World::setPrismaticJointMotor",
+                                    verdict(joint.bad || notPrismatic || m.bad),
+                                    [&] { journal_.setPrismaticJointMotor(joint.value, m.value); });
+                            break;
+                        }
+                        default: {
+                            Arg<JointSpring> sp = spring();
+                            trace("setPrismaticJointSpring " + idText(joint.value));
+                            attempt("World::setPrismaticJointSpring",
+                                    verdict(joint.bad || notPrismatic || sp.bad), [&] {
+                                        journal_.setPrismaticJointSpring(joint.value, sp.value);
+                                    });
+                            break;
+                        }
+                    }
+                    break;
+                }
                 if (random_.chance(0.4f)) {
                     // The friction and motor joints' setters.
                     const bool notVelocity = !joint.bad && !velocityOnly(joint);
@@ -1483,7 +1626,18 @@ private:
                     const bool notPulley = !joint.bad && !isType(joint, JointType::Pulley);
                     const bool notMotor = !joint.bad && !isType(joint, JointType::Motor);
                     const bool notVelocity = !joint.bad && !velocityOnly(joint);
+                    const bool notPrismatic = !joint.bad && !isType(joint, JointType::Prismatic);
                     std::vector<std::tuple<const char*, bool, std::function<void()>>> typed = {
+                        {"World::jointTranslation", notPrismatic,
+                         [&] { w.jointTranslation(joint.value); }},
+                        {"World::jointTranslationSpeed", notPrismatic,
+                         [&] { w.jointTranslationSpeed(joint.value); }},
+                        {"World::prismaticJointAxis", notPrismatic,
+                         [&] { w.prismaticJointAxis(joint.value); }},
+                        {"World::prismaticJointLimit", notPrismatic,
+                         [&] { w.prismaticJointLimit(joint.value); }},
+                        {"World::prismaticJointMotorForce", notPrismatic,
+                         [&] { w.prismaticJointMotorForce(joint.value); }},
                         {"World::jointMotorTorque", notRevolute,
                          [&] { w.jointMotorTorque(joint.value); }},
                         {"World::jointLimit", notRevolute, [&] { w.jointLimit(joint.value); }},

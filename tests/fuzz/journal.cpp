@@ -135,6 +135,24 @@ JointId Journal::createJoint(const PulleyJointDef& def) {
     return id;
 }
 
+JointId Journal::createJoint(const PrismaticJointDef& def) {
+    JointId id = world_->createJoint(def);
+    lines_.push_back("prismatic " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " +
+                     nameOf('b', def.bodyB) + " " + num(def.worldAnchor.has_value()) + " " +
+                     num(def.worldAnchor.value_or(Vec2{})) + " " + num(def.localAnchorA) + " " +
+                     num(def.localAnchorB) + " " + num(def.referenceAngle) + " " +
+                     num(def.worldAxis.has_value()) + " " + num(def.worldAxis.value_or(Vec2{})) +
+                     " " + num(def.localAxisA) + " " + num(def.limit.enabled) + " " +
+                     num(def.limit.lower) + " " + num(def.limit.upper) + " " +
+                     num(def.motor.enabled) + " " + num(def.motor.speed) + " " +
+                     num(def.motor.maxForce) + " " + num(def.spring.enabled) + " " +
+                     num(def.spring.hertz) + " " + num(def.spring.dampingRatio) + " " +
+                     num(def.positionSolver ? int(*def.positionSolver) : -1) + " " +
+                     num(def.biasFactor.value_or(-1.0f)) + " " + num(def.collideConnected) + " " +
+                     num(def.letGoSeparation.value_or(-1.0f)));
+    return id;
+}
+
 JointId Journal::createJoint(const FrictionJointDef& def) {
     JointId id = world_->createJoint(def);
     lines_.push_back("friction " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " +
@@ -252,6 +270,21 @@ void Journal::setDistanceJointLimit(JointId id, const LengthLimit& limit) {
 void Journal::setDistanceJointSpring(JointId id, const JointSpring& spring) {
     world_->setDistanceJointSpring(id, spring);
     lines_.push_back("spring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
+                     num(spring.hertz) + " " + num(spring.dampingRatio));
+}
+void Journal::setPrismaticJointLimit(JointId id, const TranslationLimit& limit) {
+    world_->setPrismaticJointLimit(id, limit);
+    lines_.push_back("translationLimit " + nameOf('j', id) + " " + num(limit.enabled) + " " +
+                     num(limit.lower) + " " + num(limit.upper));
+}
+void Journal::setPrismaticJointMotor(JointId id, const LinearMotor& motor) {
+    world_->setPrismaticJointMotor(id, motor);
+    lines_.push_back("linearMotor " + nameOf('j', id) + " " + num(motor.enabled) + " " +
+                     num(motor.speed) + " " + num(motor.maxForce));
+}
+void Journal::setPrismaticJointSpring(JointId id, const JointSpring& spring) {
+    world_->setPrismaticJointSpring(id, spring);
+    lines_.push_back("prismaticSpring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
                      num(spring.hertz) + " " + num(spring.dampingRatio));
 }
 void Journal::setJointMaxForce(JointId id, float force) {
@@ -557,6 +590,59 @@ ReplayResult replay(std::istream& in) {
             const float letGo = f.f();
             if (letGo >= 0.0f) def.letGoSeparation = letGo;
             call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "prismatic") {
+            std::string name = f.word();
+            PrismaticJointDef def;
+            def.bodyA = body(f.word());
+            def.bodyB = body(f.word());
+            const bool hasWorldAnchor = f.b();
+            const Vec2 anchor = f.v();
+            if (hasWorldAnchor) def.worldAnchor = anchor;
+            def.localAnchorA = f.v();
+            def.localAnchorB = f.v();
+            def.referenceAngle = f.f();
+            const bool hasWorldAxis = f.b();
+            const Vec2 axis = f.v();
+            if (hasWorldAxis) def.worldAxis = axis;
+            def.localAxisA = f.v();
+            def.limit.enabled = f.b();
+            def.limit.lower = f.f();
+            def.limit.upper = f.f();
+            def.motor.enabled = f.b();
+            def.motor.speed = f.f();
+            def.motor.maxForce = f.f();
+            def.spring.enabled = f.b();
+            def.spring.hertz = f.f();
+            def.spring.dampingRatio = f.f();
+            int solver = f.i();
+            if (solver >= 0) def.positionSolver = static_cast<PositionSolver>(solver);
+            float bias = f.f();
+            if (bias >= 0.0f) def.biasFactor = bias;
+            def.collideConnected = f.b();
+            const float letGo = f.f();
+            if (letGo >= 0.0f) def.letGoSeparation = letGo;
+            call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "translationLimit") {
+            JointId j = joint(f.word());
+            TranslationLimit l;
+            l.enabled = f.b();
+            l.lower = f.f();
+            l.upper = f.f();
+            call = [&w, j, l] { w.setPrismaticJointLimit(j, l); };
+        } else if (command == "linearMotor") {
+            JointId j = joint(f.word());
+            LinearMotor m;
+            m.enabled = f.b();
+            m.speed = f.f();
+            m.maxForce = f.f();
+            call = [&w, j, m] { w.setPrismaticJointMotor(j, m); };
+        } else if (command == "prismaticSpring") {
+            JointId j = joint(f.word());
+            JointSpring sp;
+            sp.enabled = f.b();
+            sp.hertz = f.f();
+            sp.dampingRatio = f.f();
+            call = [&w, j, sp] { w.setPrismaticJointSpring(j, sp); };
         } else if (command == "friction") {
             std::string name = f.word();
             FrictionJointDef def;

@@ -34,6 +34,7 @@ public:
     JointId createJoint(const RevoluteJointDef& def);
     JointId createJoint(const DistanceJointDef& def);
     JointId createJoint(const PulleyJointDef& def);
+    JointId createJoint(const PrismaticJointDef& def);
     JointId createJoint(const FrictionJointDef& def);
     JointId createJoint(const MotorJointDef& def);
     MouseJointId createMouseJoint(const MouseJointDef& def);
@@ -58,6 +59,9 @@ public:
     void setDistanceJointRestLength(JointId id, float length);
     void setDistanceJointLimit(JointId id, const LengthLimit& limit);
     void setDistanceJointSpring(JointId id, const JointSpring& spring);
+    void setPrismaticJointLimit(JointId id, const TranslationLimit& limit);
+    void setPrismaticJointMotor(JointId id, const LinearMotor& motor);
+    void setPrismaticJointSpring(JointId id, const JointSpring& spring);
     void setJointMaxForce(JointId id, float force);
     void setMotorJointLinearOffset(JointId id, Vec2 offset);
     void setMotorJointCorrectionFactor(JointId id, float factor);

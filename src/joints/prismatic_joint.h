@@ -1,0 +1,63 @@
+// Prismatic joint storage: the axis, limit, motor and spring of a slider, and its accumulated
+// impulses (the alternative of Joint::data for a prismatic joint; joint.h holds the anchors and
+// the reference angle).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "pivot/math.h"
+
+namespace pivot {
+
+struct PrismaticJoint {
+    Vec2 localAxisA{1.0f, 0.0f};  // unit, in body A's frame
+    bool enableLimit = false;
+    float lowerTranslation = 0.0f;  // m
+    float upperTranslation = 0.0f;
+    bool enableMotor = false;
+    float motorSpeed = 0.0f;     // m/s
+    float maxMotorForce = 0.0f;  // N
+    bool enableSpring = false;
+    float hertz = 0.0f;
+    float dampingRatio = 0.0f;
+
+    // Accumulated impulses of the last step solved (warm starting, reactions), and the world
+    // axis they acted along.
+    Vec2 impulse;  // the block: across the axis (N s) and about it (N m s)
+    float motorImpulse = 0.0f;
+    float lowerImpulse = 0.0f;
+    float upperImpulse = 0.0f;
+    float springImpulse = 0.0f;
+    Vec2 axis;
+
+    Vec2 localPerpA() const { return {-localAxisA.y, localAxisA.x}; }
+    /// N s along the axis, to B.
+    float axialImpulse() const {
+        return springImpulse + motorImpulse + lowerImpulse - upperImpulse;
+    }
+
+    bool hasFiniteReactions(float invDt) const {
+        return isFinite(invDt * impulse) && std::isfinite(invDt * motorImpulse) &&
+               std::isfinite(invDt * lowerImpulse) && std::isfinite(invDt * upperImpulse) &&
+               std::isfinite(invDt * springImpulse) && std::isfinite(invDt * axialImpulse());
+    }
+    void clearImpulses() {
+        impulse = Vec2{};
+        motorImpulse = lowerImpulse = upperImpulse = springImpulse = 0.0f;
+    }
+    /// m: how far anchor B is off the axis line, combined with how far the translation is
+    /// beyond the limit (when enabled).
+    float separation(Rot qA, Vec2 anchorA, Vec2 anchorB) const {
+        const Vec2 d = anchorB - anchorA;
+        const float across = dot(rotate(qA, localPerpA()), d);
+        float beyond = 0.0f;
+        if (enableLimit) {
+            const float x = dot(rotate(qA, localAxisA), d);
+            beyond = std::max({lowerTranslation - x, x - upperTranslation, 0.0f});
+        }
+        return std::hypot(across, beyond);
+    }
+};
+
+}  // namespace pivot
