@@ -25,9 +25,10 @@ enum class JointType : std::uint8_t {
     Friction,
     Motor,
     Prismatic,
+    Weld,
 };
 
-/// The type's name: "revolute", "distance", "pulley", "friction", "motor", "prismatic";
+/// The type's name: "revolute", "distance", "pulley", "friction", "motor", "prismatic", "weld";
 /// "invalid" for a value out of range.
 const char* jointTypeName(JointType type);
 
@@ -238,6 +239,43 @@ struct PrismaticJointDef {
         def.bodyB = b;
         def.worldAnchor = anchor;
         def.worldAxis = axis;
+        return def;
+    }
+};
+
+/// Everything needed to create a weld joint: anchor B held on anchor A and the relative angle
+/// at the reference angle, as one 3x3 block corrected by the joint's PositionSolver (a beam of
+/// welded boxes, a part glued to another). Either half may be made soft instead: a spring on the
+/// point (linearSpring) or on the angle (angularSpring), which has no position correction.
+struct WeldJointDef {
+    BodyId bodyA;
+    BodyId bodyB;
+    Vec2 localAnchorA;  ///< m, in body A's frame (origin-relative)
+    Vec2 localAnchorB;  ///< m, in body B's frame
+    /// rad, angleB - angleA when the joint holds.
+    float referenceAngle = 0.0f;
+    /// When set, both anchors are this world point and the reference angle the bodies' current
+    /// relative angle (as RevoluteJointDef::worldAnchor; refused together with a non-zero local
+    /// anchor or reference angle).
+    std::optional<Vec2> worldAnchor;
+    JointSpring linearSpring;   ///< soft point, towards anchor B on anchor A
+    JointSpring angularSpring;  ///< soft angle, towards the reference angle
+    /// Unset: the world's default (WorldDef::defaultPositionSolver).
+    std::optional<PositionSolver> positionSolver;
+    /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
+    std::optional<float> biasFactor;
+    /// As RevoluteJointDef::letGoSeparation, measured as |anchorB - anchorA| (0 while the point
+    /// is soft: World::jointSeparation).
+    std::optional<float> letGoSeparation;
+    bool collideConnected = false;
+    std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
+
+    /// A joint welding bodyA to bodyB at a world point, at the bodies' current relative angle.
+    static WeldJointDef atWorldAnchor(BodyId a, BodyId b, Vec2 anchor) {
+        WeldJointDef def;
+        def.bodyA = a;
+        def.bodyB = b;
+        def.worldAnchor = anchor;
         return def;
     }
 };

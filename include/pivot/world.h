@@ -264,6 +264,7 @@ public:
     JointId createJoint(const FrictionJointDef& def);
     JointId createJoint(const MotorJointDef& def);
     JointId createJoint(const PrismaticJointDef& def);
+    JointId createJoint(const WeldJointDef& def);
     void destroyJoint(JointId id);
     bool isValid(JointId id) const;
     int jointCount() const;
@@ -278,7 +279,8 @@ public:
     Vec2 jointAnchorB(JointId id) const;  ///< m, the anchor on body B (a motor joint's: B's origin)
     /// m, how far the joint has come apart: for a revolute joint |anchorB - anchorA|, for a
     /// distance joint how far its length is from its rest length (a rod) or outside its limit,
-    /// for a pulley joint |lengthA + ratio lengthB - the same at creation|, for a prismatic joint
+    /// for a pulley joint |lengthA + ratio lengthB - the same at creation|, for a weld joint
+    /// |anchorB - anchorA| (0 while its point is soft), for a prismatic joint
     /// how far anchor B is off the axis line, combined (root of the sum of squares) with how far
     /// the translation is beyond its limit.
     float jointSeparation(JointId id) const;
@@ -302,8 +304,8 @@ public:
     /// The joints let go during the last step, in the order the step reached them (the same
     /// for every worker count). Cleared when the next step starts.
     std::vector<JointLetGoEvent> jointLetGoEvents() const;
-    /// rad, angleB - angleA - referenceAngle (revolute and prismatic joints have a reference
-    /// angle; for the others it is 0).
+    /// rad, angleB - angleA - referenceAngle (revolute, prismatic and weld joints have a
+    /// reference angle; for the others it is 0).
     float jointAngle(JointId id) const;
     /// rad/s, angular velocity of B relative to A.
     float jointSpeed(JointId id) const;
@@ -311,8 +313,8 @@ public:
     /// joint keeps reporting the force it held when it fell asleep).
     Vec2 jointReactionForce(JointId id) const;
     /// N m, the torque the joint applied to body B in that step (revolute: motor plus limits;
-    /// friction and motor: their angular row; prismatic: what holds its angle; distance and
-    /// pulley joints apply none).
+    /// friction and motor: their angular row; prismatic and weld: what holds their angle;
+    /// distance and pulley joints apply none).
     float jointReactionTorque(JointId id) const;
 
     // Revolute joints (the calls from here to setJointMotor refuse other types).
@@ -359,6 +361,13 @@ public:
     void setPrismaticJointSpring(JointId id, const JointSpring& spring);
     /// N, the motor's share of the reaction force, along the axis.
     float prismaticJointMotorForce(JointId id) const;
+
+    // Weld joints (these calls refuse other types). Each setter wakes the joint's bodies; an
+    // enabled spring makes that half soft from the next step.
+    JointSpring weldJointLinearSpring(JointId id) const;
+    void setWeldJointLinearSpring(JointId id, const JointSpring& spring);
+    JointSpring weldJointAngularSpring(JointId id) const;
+    void setWeldJointAngularSpring(JointId id, const JointSpring& spring);
 
     // Friction and motor joints (these calls refuse other types). Each setter wakes the joint's
     // bodies.

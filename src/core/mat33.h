@@ -52,6 +52,34 @@ struct Mat33 {
     /// Solve the upper-left 2x2 block: A22 x = b.
     Vec2 solve22(Vec2 b) const { return Mat22{{cx.x, cx.y}, {cy.x, cy.y}}.solve(b); }
 
+    /// The inverse of a symmetric matrix, by its cofactors over det A (only the upper triangle
+    /// is read); a singular matrix gives the zero matrix. Overflow is handled as in solve.
+    Mat33 symmetricInverse() const {
+        Mat33 a = *this;
+        float scale = 1.0f;
+        float det = dot(a.cx, cross(a.cy, a.cz));
+        if (!std::isfinite(det)) {
+            scale = 1.0f / largestEntry();
+            a = {scale * cx, scale * cy, scale * cz};
+            det = dot(a.cx, cross(a.cy, a.cz));
+        }
+        const float k = det != 0.0f ? scale / det : det;
+        const float a11 = a.cx.x, a12 = a.cy.x, a13 = a.cz.x;
+        const float a22 = a.cy.y, a23 = a.cz.y, a33 = a.cz.z;
+        Mat33 m;
+        m.cx = {k * (a22 * a33 - a23 * a23), k * (a13 * a23 - a12 * a33),
+                k * (a12 * a23 - a13 * a22)};
+        m.cy = {m.cx.y, k * (a11 * a33 - a13 * a13), k * (a13 * a12 - a11 * a23)};
+        m.cz = {m.cx.z, m.cy.z, k * (a11 * a22 - a12 * a12)};
+        return m;
+    }
+
+    /// The inverse of the upper-left 2x2 block, the rest zero.
+    Mat33 inverse22() const {
+        const Mat22 inv = Mat22{{cx.x, cx.y}, {cy.x, cy.y}}.inverse();
+        return {{inv.cx.x, inv.cx.y, 0.0f}, {inv.cy.x, inv.cy.y, 0.0f}, {}};
+    }
+
     float largestEntry() const {
         float m = 0.0f;
         for (const Vec3& c : {cx, cy, cz}) {
@@ -60,5 +88,16 @@ struct Mat33 {
         return m;
     }
 };
+
+/// A v, summed column by column.
+constexpr Vec3 operator*(const Mat33& m, Vec3 v) {
+    return {v.x * m.cx.x + v.y * m.cy.x + v.z * m.cz.x, v.x * m.cx.y + v.y * m.cy.y + v.z * m.cz.y,
+            v.x * m.cx.z + v.y * m.cy.z + v.z * m.cz.z};
+}
+
+/// The upper-left 2x2 block times v.
+constexpr Vec2 mul22(const Mat33& m, Vec2 v) {
+    return {m.cx.x * v.x + m.cy.x * v.y, m.cx.y * v.x + m.cy.y * v.y};
+}
 
 }  // namespace pivot

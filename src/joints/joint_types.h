@@ -17,6 +17,7 @@
 #include "joints/pulley_constraint.h"
 #include "joints/revolute_constraint.h"
 #include "joints/velocity_constraints.h"
+#include "joints/weld_constraint.h"
 #include "pivot/solvers.h"
 
 namespace pivot {
@@ -39,7 +40,7 @@ struct JointTypeList {
 
 using JointConstraintTypes =
     JointTypeList<RevoluteConstraint, DistanceConstraint, PulleyConstraint, FrictionConstraint,
-                  MotorConstraint, PrismaticConstraint>;
+                  MotorConstraint, PrismaticConstraint, WeldConstraint>;
 
 constexpr int kJointTypeCount = JointConstraintTypes::kCount;
 constexpr int kJointGroupCount = kPositionSolverCount * kJointTypeCount;
@@ -75,7 +76,8 @@ static_assert(storedAt<JointType::Revolute, RevoluteJoint>() &&
                   storedAt<JointType::Pulley, PulleyJoint>() &&
                   storedAt<JointType::Friction, FrictionJoint>() &&
                   storedAt<JointType::Motor, MotorJoint>() &&
-                  storedAt<JointType::Prismatic, PrismaticJoint>(),
+                  storedAt<JointType::Prismatic, PrismaticJoint>() &&
+                  storedAt<JointType::Weld, WeldJoint>(),
               "JointData lists the joint types in the order of the public JointType");
 
 }  // namespace pivot

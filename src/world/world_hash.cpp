@@ -61,6 +61,17 @@ void hashJointData(StateHasher& h, const MotorJoint& j) {
     h.add(j.linearImpulse);
     h.add(j.angularImpulse);
 }
+void hashJointData(StateHasher& h, const WeldJoint& j) {
+    h.add(static_cast<std::int32_t>(JointType::Weld));
+    for (const JointSpring& s : {j.linearSpring, j.angularSpring}) {
+        h.add(s.enabled);
+        h.add(s.hertz);
+        h.add(s.dampingRatio);
+    }
+    h.add(j.impulse.x);
+    h.add(j.impulse.y);
+    h.add(j.impulse.z);
+}
 void hashJointData(StateHasher& h, const PrismaticJoint& j) {
     h.add(static_cast<std::int32_t>(JointType::Prismatic));
     h.add(j.localAxisA);

@@ -72,6 +72,34 @@ void setStrategyFields(Joint& joint, const Def& def, PositionSolver solver) {
     joint.hasLetGoOverride = def.letGoSeparation.has_value();
     joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
 }
+
+// The defs with an optional world anchor (revolute, prismatic, weld): it replaces the local
+// anchors and the reference angle, so a def that sets both is refused rather than one of them
+// ignored.
+template <typename Def>
+void checkWorldAnchor(const char* call, const Def& def) {
+    if (!def.worldAnchor) return;
+    requireCoordinate(call, "def.worldAnchor", *def.worldAnchor);
+    if (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{} || def.referenceAngle != 0.0f) {
+        fail(call, "def.worldAnchor " + formatVec2(*def.worldAnchor) +
+                       " is set together with def.localAnchorA " + formatVec2(def.localAnchorA) +
+                       ", def.localAnchorB " + formatVec2(def.localAnchorB) +
+                       " or def.referenceAngle " + formatFloat(def.referenceAngle) +
+                       "; the world anchor would replace them: set one or the other");
+    }
+}
+template <typename Def>
+void setAnchors(Joint& joint, const Def& def, const Body& bodyA, const Body& bodyB) {
+    if (def.worldAnchor) {
+        joint.localAnchorA = inverseTransformPoint(bodyA.xf, *def.worldAnchor);
+        joint.localAnchorB = inverseTransformPoint(bodyB.xf, *def.worldAnchor);
+        joint.referenceAngle = bodyB.angle - bodyA.angle;
+    } else {
+        joint.localAnchorA = def.localAnchorA;
+        joint.localAnchorB = def.localAnchorB;
+        joint.referenceAngle = def.referenceAngle;
+    }
+}
 }  // namespace
 
 const char* jointTypeName(JointType type) {
@@ -82,6 +110,7 @@ const char* jointTypeName(JointType type) {
         case JointType::Friction: return "friction";
         case JointType::Motor: return "motor";
         case JointType::Prismatic: return "prismatic";
+        case JointType::Weld: return "weld";
     }
     return "invalid";
 }
@@ -135,16 +164,8 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
     requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
     requireMagnitude(call, "def.referenceAngle", def.referenceAngle);
-    if (def.worldAnchor) requireCoordinate(call, "def.worldAnchor", *def.worldAnchor);
     const PositionSolver solver = checkSolverOf(call, def, w);
-    if (def.worldAnchor &&
-        (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{} || def.referenceAngle != 0.0f)) {
-        fail(call, "def.worldAnchor " + formatVec2(*def.worldAnchor) +
-                       " is set together with def.localAnchorA " + formatVec2(def.localAnchorA) +
-                       ", def.localAnchorB " + formatVec2(def.localAnchorB) +
-                       " or def.referenceAngle " + formatFloat(def.referenceAngle) +
-                       "; the world anchor would replace them: set one or the other");
-    }
+    checkWorldAnchor(call, def);
     checkBiasAndLetGo(call, def);
     checkLimit(call, "def.limit", def.limit);
     checkMotor(call, "def.motor", def.motor);
@@ -152,17 +173,7 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     Joint joint = jointFromDef(def, a, b);
     setStrategyFields(joint, def, solver);
     RevoluteJoint& revolute = joint.data.emplace<RevoluteJoint>();
-    const Body& bodyA = w.bodies[a];
-    const Body& bodyB = w.bodies[b];
-    if (def.worldAnchor) {
-        joint.localAnchorA = inverseTransformPoint(bodyA.xf, *def.worldAnchor);
-        joint.localAnchorB = inverseTransformPoint(bodyB.xf, *def.worldAnchor);
-        joint.referenceAngle = bodyB.angle - bodyA.angle;
-    } else {
-        joint.localAnchorA = def.localAnchorA;
-        joint.localAnchorB = def.localAnchorB;
-        joint.referenceAngle = def.referenceAngle;
-    }
+    setAnchors(joint, def, w.bodies[a], w.bodies[b]);
     revolute.enableLimit = def.limit.enabled;
     revolute.lowerAngle = def.limit.lower;
     revolute.upperAngle = def.limit.upper;
@@ -242,19 +253,11 @@ JointId World::createJoint(const PrismaticJointDef& def) {
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
     requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
     requireMagnitude(call, "def.referenceAngle", def.referenceAngle);
-    if (def.worldAnchor) requireCoordinate(call, "def.worldAnchor", *def.worldAnchor);
     const Vec2 givenAxis = def.worldAxis.value_or(def.localAxisA);
     const Vec2 unitAxis =
         checkedUnitAxis(call, def.worldAxis ? "def.worldAxis" : "def.localAxisA", givenAxis);
     const PositionSolver solver = checkSolverOf(call, def, w);
-    if (def.worldAnchor &&
-        (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{} || def.referenceAngle != 0.0f)) {
-        fail(call, "def.worldAnchor " + formatVec2(*def.worldAnchor) +
-                       " is set together with def.localAnchorA " + formatVec2(def.localAnchorA) +
-                       ", def.localAnchorB " + formatVec2(def.localAnchorB) +
-                       " or def.referenceAngle " + formatFloat(def.referenceAngle) +
-                       "; the world anchor would replace them: set one or the other");
-    }
+    checkWorldAnchor(call, def);
     if (def.worldAxis && def.localAxisA != Vec2{1.0f, 0.0f}) {
         fail(call, "def.worldAxis " + formatVec2(*def.worldAxis) +
                        " is set together with def.localAxisA " + formatVec2(def.localAxisA) +
@@ -269,20 +272,34 @@ JointId World::createJoint(const PrismaticJointDef& def) {
     setStrategyFields(joint, def, solver);
     const Body& bodyA = w.bodies[a];
     const Body& bodyB = w.bodies[b];
-    if (def.worldAnchor) {
-        joint.localAnchorA = inverseTransformPoint(bodyA.xf, *def.worldAnchor);
-        joint.localAnchorB = inverseTransformPoint(bodyB.xf, *def.worldAnchor);
-        joint.referenceAngle = bodyB.angle - bodyA.angle;
-    } else {
-        joint.localAnchorA = def.localAnchorA;
-        joint.localAnchorB = def.localAnchorB;
-        joint.referenceAngle = def.referenceAngle;
-    }
+    setAnchors(joint, def, bodyA, bodyB);
     PrismaticJoint& prismatic = joint.data.emplace<PrismaticJoint>();
     prismatic.localAxisA = def.worldAxis ? inverseRotate(bodyA.xf.q, unitAxis) : unitAxis;
     setLimit(prismatic, def.limit);
     setMotor(prismatic, def.motor);
     setSpring(prismatic, def.spring);
+    return w.addJoint(joint);
+}
+
+JointId World::createJoint(const WeldJointDef& def) {
+    const char* call = "World::createJoint";
+    Impl& w = *impl_;
+    const auto [a, b] = checkBodies(call, def, w);
+    requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
+    requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
+    requireMagnitude(call, "def.referenceAngle", def.referenceAngle);
+    const PositionSolver solver = checkSolverOf(call, def, w);
+    checkWorldAnchor(call, def);
+    checkBiasAndLetGo(call, def);
+    checkSpring(call, "def.linearSpring", def.linearSpring);
+    checkSpring(call, "def.angularSpring", def.angularSpring);
+
+    Joint joint = jointFromDef(def, a, b);
+    setStrategyFields(joint, def, solver);
+    setAnchors(joint, def, w.bodies[a], w.bodies[b]);
+    WeldJoint& weld = joint.data.emplace<WeldJoint>();
+    weld.linearSpring = def.linearSpring;
+    weld.angularSpring = def.angularSpring;
     return w.addJoint(joint);
 }
 
@@ -412,6 +429,9 @@ Vec2 World::jointReactionForce(JointId id) const {
     if (const auto* motor = std::get_if<MotorJoint>(&j.data)) {
         return j.impulseInvDt * motor->linearImpulse;
     }
+    if (const auto* weld = std::get_if<WeldJoint>(&j.data)) {
+        return j.impulseInvDt * Vec2{weld->impulse.x, weld->impulse.y};
+    }
     if (const auto* prismatic = std::get_if<PrismaticJoint>(&j.data)) {
         const Vec2 perp{-prismatic->axis.y, prismatic->axis.x};
         return j.impulseInvDt *
@@ -441,6 +461,9 @@ float World::jointReactionTorque(JointId id) const {
     }
     if (const auto* prismatic = std::get_if<PrismaticJoint>(&j.data)) {
         return j.impulseInvDt * prismatic->impulse.y;
+    }
+    if (const auto* weld = std::get_if<WeldJoint>(&j.data)) {
+        return j.impulseInvDt * weld->impulse.z;
     }
     return 0.0f;
 }
@@ -767,6 +790,35 @@ float World::prismaticJointMotorForce(JointId id) const {
     const char* call = "World::prismaticJointMotorForce";
     const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Prismatic)];
     return j.impulseInvDt * std::get<PrismaticJoint>(j.data).motorImpulse;
+}
+
+// --- weld joints -----------------------------------------------------------------------------
+
+JointSpring World::weldJointLinearSpring(JointId id) const {
+    return impl_->jointData<WeldJoint>("World::weldJointLinearSpring", id, JointType::Weld)
+        .linearSpring;
+}
+JointSpring World::weldJointAngularSpring(JointId id) const {
+    return impl_->jointData<WeldJoint>("World::weldJointAngularSpring", id, JointType::Weld)
+        .angularSpring;
+}
+void World::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setWeldJointLinearSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    std::get<WeldJoint>(j.data).linearSpring = spring;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setWeldJointAngularSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    std::get<WeldJoint>(j.data).angularSpring = spring;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
 }
 
 }  // namespace pivot

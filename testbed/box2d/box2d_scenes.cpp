@@ -205,6 +205,27 @@ Box2dScene buildElevator(bool continuous) {
     return scene;
 }
 
+Box2dScene buildWeldBeam(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    b2Body* previous = staticBody(*scene.world);
+    for (int i = 0; i <= 10; ++i) {
+        const bool load = i == 10;
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(0.5f + static_cast<float>(i), 5.0f);
+        b2Body* body = scene.world->CreateBody(&def);
+        b2PolygonShape shape;
+        shape.SetAsBox(0.5f, load ? 0.5f : 0.125f);
+        body->CreateFixture(&shape, load ? 5.0f : 1.0f);
+        b2WeldJointDef jd;  // stiffness 0: rigid
+        jd.Initialize(previous, body, b2Vec2(static_cast<float>(i), 5.0f));
+        scene.joints.push_back(scene.world->CreateJoint(&jd));
+        scene.bodies.push_back(body);
+        previous = body;
+    }
+    return scene;
+}
+
 Box2dScene buildLimitedPendulum(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     const b2Vec2 pivot(0.0f, 10.0f);

@@ -39,5 +39,6 @@ Box2dScene buildPulley(bool continuous = false);
 Box2dScene buildTopDown(bool continuous = false);
 Box2dScene buildMotorDrive(bool continuous = false);
 Box2dScene buildElevator(bool continuous = false);
+Box2dScene buildWeldBeam(bool continuous = false);
 
 }  // namespace pivot::box2d

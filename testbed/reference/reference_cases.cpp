@@ -33,6 +33,7 @@ const std::vector<ReferenceCase>& referenceCases() {
         {"top_down", false, scenes::buildTopDown, box2d::buildTopDown},
         {"motor_drive", false, scenes::buildMotorDrive, box2d::buildMotorDrive},
         {"elevator", false, scenes::buildElevator, box2d::buildElevator},
+        {"weld_beam", false, scenes::buildWeldBeam, box2d::buildWeldBeam},
         {"double_pendulum", true, scenes::buildDoublePendulum, box2d::buildDoublePendulum},
         {"bridge", true, scenes::buildBridge, box2d::buildBridge},
         {"chain", true, scenes::buildChain, box2d::buildChain},

@@ -53,6 +53,10 @@ const std::vector<SceneInfo>& allScenes() {
         {"top_down", "12 boxes sliding and spinning on a table seen from above (friction joints)",
          buildTopDown},
         {"motor_drive", "a plank driven round a figure of eight by a motor joint", buildMotorDrive},
+        {"weld_beam",
+         "ten boxes welded into a cantilever out of a wall, a box of 20x their mass welded at "
+         "the tip",
+         buildWeldBeam},
         {"elevator",
          "a platform on a prismatic joint carrying an off-centre load up and down between limits",
          buildElevator},

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <random>
 #include <set>
+#include <type_traits>
 #include <vector>
 
 #include "islands/graph_coloring.h"
@@ -107,7 +108,10 @@ struct JointGrid {
 
 // With `distanceJoints`, the horizontal links are distance joints (rods, every third a rope of
 // 0.9 to 1.1 m, every fifth with a spring), so a coloured island holds both joint types.
-void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool distanceJoints = false) {
+// A grid of circles hung from three static ones, each linked to the one above by a pin and to
+// its left neighbour by a pin, or (everyType) by every joint type in turn: distance, prismatic
+// along the row, weld, pulley (wheels 3 m above each), friction, motor and revolute.
+void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false) {
     World& world = grid.world;
     std::vector<BodyId> bodies;
     ShapeDef shape;
@@ -124,23 +128,75 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool distanceJoints = 
             BodyId body = world.createBody(def);
             world.createShape(body, shape, Circle{{0.0f, 0.0f}, 0.4f});
             bodies.push_back(body);
+            const std::size_t k = grid.joints.size();
+            const PositionSolver solver = solvers[k % 4];
             const auto link = [&](BodyId other, Vec2 anchor) {
                 RevoluteJointDef joint = RevoluteJointDef::atWorldAnchor(other, body, anchor);
                 if (mixedSolvers) joint.positionSolver = solvers[grid.joints.size() % 4];
                 grid.joints.push_back(world.createJoint(joint));
             };
             if (row > 0) link(bodies[(row - 1) * n + col], {float(col), 0.5f - float(row)});
-            if (col > 0 && distanceJoints) {
-                DistanceJointDef joint;
-                joint.bodyA = bodies[row * n + col - 1];
-                joint.bodyB = body;
-                const std::size_t k = grid.joints.size();
-                if (k % 3 == 0) joint.limit = {true, 0.9f, 1.1f};
-                if (k % 5 == 0) joint.spring = {true, 4.0f, 0.3f};
-                if (mixedSolvers) joint.positionSolver = solvers[k % 4];
-                grid.joints.push_back(world.createJoint(joint));
-            } else if (col > 0) {
-                link(bodies[row * n + col - 1], {float(col) - 0.5f, -float(row)});
+            if (col == 0) continue;
+            const BodyId left = bodies[row * n + col - 1];
+            const Vec2 middle{float(col) - 0.5f, -float(row)};
+            const auto add = [&](auto jointDef) {
+                if constexpr (!std::is_same_v<decltype(jointDef), FrictionJointDef> &&
+                              !std::is_same_v<decltype(jointDef), MotorJointDef>) {
+                    if (mixedSolvers) jointDef.positionSolver = solver;
+                }
+                grid.joints.push_back(world.createJoint(jointDef));
+            };
+            switch (everyType ? (col + row) % 7 : 6) {
+                case 0: {
+                    DistanceJointDef joint;
+                    joint.bodyA = left;
+                    joint.bodyB = body;
+                    if (k % 3 == 0) joint.limit = {true, 0.9f, 1.1f};
+                    if (k % 5 == 0) joint.spring = {true, 4.0f, 0.3f};
+                    add(joint);
+                    break;
+                }
+                case 1: {
+                    PrismaticJointDef joint =
+                        PrismaticJointDef::atWorldAnchor(left, body, middle, {1.0f, 0.0f});
+                    if (k % 3 == 0) joint.limit = {true, -0.1f, 0.1f};
+                    if (k % 5 == 0) joint.spring = {true, 4.0f, 0.3f};
+                    add(joint);
+                    break;
+                }
+                case 2: {
+                    WeldJointDef joint = WeldJointDef::atWorldAnchor(left, body, middle);
+                    if (k % 5 == 0) joint.angularSpring = {true, 4.0f, 0.3f};
+                    add(joint);
+                    break;
+                }
+                case 3: {
+                    PulleyJointDef joint;
+                    joint.bodyA = left;
+                    joint.bodyB = body;
+                    joint.groundAnchorA = {float(col) - 1.0f, 3.0f - float(row)};
+                    joint.groundAnchorB = {float(col), 3.0f - float(row)};
+                    add(joint);
+                    break;
+                }
+                case 4: {
+                    FrictionJointDef joint;
+                    joint.bodyA = left;
+                    joint.bodyB = body;
+                    joint.maxForce = 5.0f;
+                    joint.maxTorque = 1.0f;
+                    add(joint);
+                    break;
+                }
+                case 5: {
+                    MotorJointDef joint;
+                    joint.bodyA = left;
+                    joint.bodyB = body;
+                    joint.maxForce = 20.0f;
+                    add(joint);
+                    break;
+                }
+                default: link(left, middle);
             }
         }
     }
@@ -168,12 +224,12 @@ void buildPyramid(World& world, int rows, bool withGround = true) {
     }
 }
 
-std::uint64_t gridHash(int workers, bool mixed, int steps, bool distanceJoints = false) {
+std::uint64_t gridHash(int workers, bool mixed, int steps, bool everyType = false) {
     WorldDef def;
     def.workerCount = workers;
     def.enableSleep = false;
     JointGrid grid{World(def), {}};
-    buildGrid(grid, 30, mixed, distanceJoints);
+    buildGrid(grid, 30, mixed, everyType);
     for (int i = 0; i < steps; ++i) grid.world.step(kDt);
     return grid.world.stateHash();
 }
@@ -207,8 +263,8 @@ TEST(TeamSolver, AJointGridStepsToTheSameBitsOnAnyNumberOfWorkers) {
     }
 }
 
-TEST(TeamSolver, AGridOfBothJointTypesStepsToTheSameBitsOnAnyNumberOfWorkers) {
-    // Revolute and distance joints, every strategy, in one coloured island.
+TEST(TeamSolver, AGridOfEveryJointTypeStepsToTheSameBitsOnAnyNumberOfWorkers) {
+    // Every joint type with every strategy in one coloured island.
     JointGrid grid{World(WorldDef{}), {}};
     buildGrid(grid, 30, true, true);
     grid.world.step(kDt);

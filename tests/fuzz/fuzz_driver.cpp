@@ -466,6 +466,7 @@ private:
             {3, &Driver::createDistanceJoint},
             {2, &Driver::createPulleyJoint},
             {3, &Driver::createPrismaticJoint},
+            {3, &Driver::createWeldJoint},
             {2, &Driver::createVelocityJoint},
             {2, &Driver::createMouseJoint},
             {3, &Driver::destroyBody},
@@ -868,6 +869,67 @@ private:
             if (!(std::fabs(length(world_->prismaticJointAxis(id)) - 1.0f) < 1e-5f)) {
                 failure("createJoint: the prismatic axis is not a unit vector");
             }
+        });
+    }
+
+    void createWeldJoint() {
+        if (world_->jointCount() >= kMaxJoints) {
+            destroyJoint();
+            return;
+        }
+        Arg<BodyId> a = pickBody();
+        Arg<BodyId> b = random_.chance(0.05f) ? a : pickBody();
+        WeldJointDef def;
+        def.bodyA = a.value;
+        def.bodyB = b.value;
+        bool bad = a.bad || b.bad || a.value == b.value;
+        const bool atWorldAnchor = random_.chance(0.6f);
+        if (atWorldAnchor) {
+            Arg<Vec2> anchor = values_->coordinate(15.0f);
+            def.worldAnchor = anchor.value;
+            bad = bad || anchor.bad;
+        }
+        if (!atWorldAnchor || (hostile_ > 0.0f && random_.chance(0.1f))) {
+            Arg<Vec2> localA = values_->coordinate(2.0f);
+            Arg<Vec2> localB = values_->coordinate(2.0f);
+            Arg<float> reference = values_->magnitude(3.0f);
+            def.localAnchorA = localA.value;
+            def.localAnchorB = localB.value;
+            def.referenceAngle = reference.value;
+            bad = bad || localA.bad || localB.bad || reference.bad;
+            if (atWorldAnchor && (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{} ||
+                                  def.referenceAngle != 0.0f)) {
+                bad = true;
+            }
+        }
+        Arg<JointSpring> linear = spring();
+        Arg<JointSpring> angular = spring();
+        def.linearSpring = linear.value;
+        def.angularSpring = angular.value;
+        bad = bad || linear.bad || angular.bad;
+        if (random_.chance(0.7f)) {
+            Arg<PositionSolver> s = solver();
+            def.positionSolver = s.value;
+            bad = bad || s.bad;
+        }
+        if (random_.chance(0.4f)) {
+            Arg<float> bias = values_->fraction();
+            def.biasFactor = bias.value;
+            bad = bad || bias.bad;
+        }
+        if (random_.chance(0.2f)) {
+            Arg<float> letGo = values_->nonNegativeUpTo(20.0f, kMaxMagnitude);
+            def.letGoSeparation = letGo.value;
+            bad = bad || letGo.bad;
+        }
+        def.collideConnected = random_.chance(0.3f);
+        def.userData = random_.next();
+        trace("createWeldJoint a=" + idText(a.value) + " b=" + idText(b.value));
+        attempt("World::createJoint", verdict(bad), [&] {
+            JointId id = journal_.createJoint(def);
+            noteTag(id);
+            joints_.remember(id);
+            if (world_->jointType(id) != JointType::Weld) failure("createJoint: not a weld joint");
         });
     }
 
@@ -1295,6 +1357,22 @@ private:
                 if (random_.chance(0.3f)) {
                     // The prismatic joint's setters.
                     const bool notPrismatic = !joint.bad && !isType(joint, JointType::Prismatic);
+                    const bool notWeld = !joint.bad && !isType(joint, JointType::Weld);
+                    if (random_.chance(0.4f)) {
+                        Arg<JointSpring> sp = spring();
+                        const bool linear = random_.chance(0.5f);
+                        trace("setWeldJointSpring " + idText(joint.value));
+                        attempt(linear ? "World::setWeldJointLinearSpring"
+                                       : "World::setWeldJointAngularSpring",
+                                verdict(joint.bad || notWeld || sp.bad), [&] {
+                                    if (linear) {
+                                        journal_.setWeldJointLinearSpring(joint.value, sp.value);
+                                    } else {
+                                        journal_.setWeldJointAngularSpring(joint.value, sp.value);
+                                    }
+                                });
+                        break;
+                    }
                     switch (random_.below(3)) {
                         case 0: {
                             Arg<TranslationLimit> l = translationLimit();
@@ -1627,7 +1705,12 @@ private:
                     const bool notMotor = !joint.bad && !isType(joint, JointType::Motor);
                     const bool notVelocity = !joint.bad && !velocityOnly(joint);
                     const bool notPrismatic = !joint.bad && !isType(joint, JointType::Prismatic);
+                    const bool notWeld = !joint.bad && !isType(joint, JointType::Weld);
                     std::vector<std::tuple<const char*, bool, std::function<void()>>> typed = {
+                        {"World::weldJointLinearSpring", notWeld,
+                         [&] { w.weldJointLinearSpring(joint.value); }},
+                        {"World::weldJointAngularSpring", notWeld,
+                         [&] { w.weldJointAngularSpring(joint.value); }},
                         {"World::jointTranslation", notPrismatic,
                          [&] { w.jointTranslation(joint.value); }},
                         {"World::jointTranslationSpeed", notPrismatic,

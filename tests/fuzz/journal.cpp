@@ -153,6 +153,21 @@ JointId Journal::createJoint(const PrismaticJointDef& def) {
     return id;
 }
 
+JointId Journal::createJoint(const WeldJointDef& def) {
+    JointId id = world_->createJoint(def);
+    lines_.push_back(
+        "weld " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " + nameOf('b', def.bodyB) +
+        " " + num(def.worldAnchor.has_value()) + " " + num(def.worldAnchor.value_or(Vec2{})) + " " +
+        num(def.localAnchorA) + " " + num(def.localAnchorB) + " " + num(def.referenceAngle) + " " +
+        num(def.linearSpring.enabled) + " " + num(def.linearSpring.hertz) + " " +
+        num(def.linearSpring.dampingRatio) + " " + num(def.angularSpring.enabled) + " " +
+        num(def.angularSpring.hertz) + " " + num(def.angularSpring.dampingRatio) + " " +
+        num(def.positionSolver ? int(*def.positionSolver) : -1) + " " +
+        num(def.biasFactor.value_or(-1.0f)) + " " + num(def.collideConnected) + " " +
+        num(def.letGoSeparation.value_or(-1.0f)));
+    return id;
+}
+
 JointId Journal::createJoint(const FrictionJointDef& def) {
     JointId id = world_->createJoint(def);
     lines_.push_back("friction " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " +
@@ -285,6 +300,16 @@ void Journal::setPrismaticJointMotor(JointId id, const LinearMotor& motor) {
 void Journal::setPrismaticJointSpring(JointId id, const JointSpring& spring) {
     world_->setPrismaticJointSpring(id, spring);
     lines_.push_back("prismaticSpring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
+                     num(spring.hertz) + " " + num(spring.dampingRatio));
+}
+void Journal::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
+    world_->setWeldJointLinearSpring(id, spring);
+    lines_.push_back("weldLinearSpring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
+                     num(spring.hertz) + " " + num(spring.dampingRatio));
+}
+void Journal::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
+    world_->setWeldJointAngularSpring(id, spring);
+    lines_.push_back("weldAngularSpring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
                      num(spring.hertz) + " " + num(spring.dampingRatio));
 }
 void Journal::setJointMaxForce(JointId id, float force) {
@@ -622,6 +647,42 @@ ReplayResult replay(std::istream& in) {
             const float letGo = f.f();
             if (letGo >= 0.0f) def.letGoSeparation = letGo;
             call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "weld") {
+            std::string name = f.word();
+            WeldJointDef def;
+            def.bodyA = body(f.word());
+            def.bodyB = body(f.word());
+            const bool hasWorldAnchor = f.b();
+            const Vec2 anchor = f.v();
+            if (hasWorldAnchor) def.worldAnchor = anchor;
+            def.localAnchorA = f.v();
+            def.localAnchorB = f.v();
+            def.referenceAngle = f.f();
+            def.linearSpring.enabled = f.b();
+            def.linearSpring.hertz = f.f();
+            def.linearSpring.dampingRatio = f.f();
+            def.angularSpring.enabled = f.b();
+            def.angularSpring.hertz = f.f();
+            def.angularSpring.dampingRatio = f.f();
+            int solver = f.i();
+            if (solver >= 0) def.positionSolver = static_cast<PositionSolver>(solver);
+            float bias = f.f();
+            if (bias >= 0.0f) def.biasFactor = bias;
+            def.collideConnected = f.b();
+            const float letGo = f.f();
+            if (letGo >= 0.0f) def.letGoSeparation = letGo;
+            call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "weldLinearSpring" || command == "weldAngularSpring") {
+            JointId j = joint(f.word());
+            JointSpring sp;
+            sp.enabled = f.b();
+            sp.hertz = f.f();
+            sp.dampingRatio = f.f();
+            if (command == "weldLinearSpring") {
+                call = [&w, j, sp] { w.setWeldJointLinearSpring(j, sp); };
+            } else {
+                call = [&w, j, sp] { w.setWeldJointAngularSpring(j, sp); };
+            }
         } else if (command == "translationLimit") {
             JointId j = joint(f.word());
             TranslationLimit l;

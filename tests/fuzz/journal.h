@@ -35,6 +35,7 @@ public:
     JointId createJoint(const DistanceJointDef& def);
     JointId createJoint(const PulleyJointDef& def);
     JointId createJoint(const PrismaticJointDef& def);
+    JointId createJoint(const WeldJointDef& def);
     JointId createJoint(const FrictionJointDef& def);
     JointId createJoint(const MotorJointDef& def);
     MouseJointId createMouseJoint(const MouseJointDef& def);
@@ -62,6 +63,8 @@ public:
     void setPrismaticJointLimit(JointId id, const TranslationLimit& limit);
     void setPrismaticJointMotor(JointId id, const LinearMotor& motor);
     void setPrismaticJointSpring(JointId id, const JointSpring& spring);
+    void setWeldJointLinearSpring(JointId id, const JointSpring& spring);
+    void setWeldJointAngularSpring(JointId id, const JointSpring& spring);
     void setJointMaxForce(JointId id, float force);
     void setMotorJointLinearOffset(JointId id, Vec2 offset);
     void setMotorJointCorrectionFactor(JointId id, float factor);
