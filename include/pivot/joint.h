@@ -26,10 +26,11 @@ enum class JointType : std::uint8_t {
     Motor,
     Prismatic,
     Weld,
+    Wheel,
 };
 
-/// The type's name: "revolute", "distance", "pulley", "friction", "motor", "prismatic", "weld";
-/// "invalid" for a value out of range.
+/// The type's name: "revolute", "distance", "pulley", "friction", "motor", "prismatic", "weld",
+/// "wheel"; "invalid" for a value out of range.
 const char* jointTypeName(JointType type);
 
 /// Bounds on the joint angle (angleB - angleA - referenceAngle), rad, lower <= upper. The limit
@@ -276,6 +277,48 @@ struct WeldJointDef {
         def.bodyA = a;
         def.bodyB = b;
         def.worldAnchor = anchor;
+        return def;
+    }
+};
+
+/// Everything needed to create a wheel joint: body B (the wheel) turns freely about its anchor,
+/// which slides along an axis fixed in body A (the chassis), a car's suspension. The anchor is
+/// held on the axis line, a position constraint corrected by the joint's PositionSolver; along
+/// the axis the optional spring (the suspension, towards translation 0) and limit act, and the
+/// optional motor drives the wheel's rotation relative to A. Without a spring or a limit the
+/// wheel slides freely along the axis.
+struct WheelJointDef {
+    BodyId bodyA;
+    BodyId bodyB;
+    Vec2 localAnchorA;  ///< m, in body A's frame (origin-relative)
+    Vec2 localAnchorB;  ///< m, in body B's frame; usually its centre
+    /// The axis in body A's frame; any length above kLinearSlop (it is normalised).
+    Vec2 localAxisA{1.0f, 0.0f};
+    /// When set, both anchors are this world point (refused with a non-zero local anchor).
+    std::optional<Vec2> worldAnchor;
+    /// When set, the axis in world coordinates at creation (refused with a localAxisA other
+    /// than the default (1, 0)).
+    std::optional<Vec2> worldAxis;
+    JointSpring spring;      ///< the suspension, towards translation 0
+    TranslationLimit limit;  ///< on the translation along the axis, m
+    JointMotor motor;        ///< drives wB - wA towards motor.speed, rad/s, within maxTorque
+    /// Unset: the world's default (WorldDef::defaultPositionSolver).
+    std::optional<PositionSolver> positionSolver;
+    /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
+    std::optional<float> biasFactor;
+    /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far the
+    /// anchor is off the axis line, and beyond a reached limit (World::jointSeparation).
+    std::optional<float> letGoSeparation;
+    bool collideConnected = false;
+    std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
+
+    /// A wheel at a world anchor whose suspension runs along a world axis.
+    static WheelJointDef atWorldAnchor(BodyId a, BodyId b, Vec2 anchor, Vec2 axis) {
+        WheelJointDef def;
+        def.bodyA = a;
+        def.bodyB = b;
+        def.worldAnchor = anchor;
+        def.worldAxis = axis;
         return def;
     }
 };

@@ -265,6 +265,7 @@ public:
     JointId createJoint(const MotorJointDef& def);
     JointId createJoint(const PrismaticJointDef& def);
     JointId createJoint(const WeldJointDef& def);
+    JointId createJoint(const WheelJointDef& def);
     void destroyJoint(JointId id);
     bool isValid(JointId id) const;
     int jointCount() const;
@@ -280,7 +281,7 @@ public:
     /// m, how far the joint has come apart: for a revolute joint |anchorB - anchorA|, for a
     /// distance joint how far its length is from its rest length (a rod) or outside its limit,
     /// for a pulley joint |lengthA + ratio lengthB - the same at creation|, for a weld joint
-    /// |anchorB - anchorA| (0 while its point is soft), for a prismatic joint
+    /// |anchorB - anchorA| (0 while its point is soft), for a prismatic or wheel joint
     /// how far anchor B is off the axis line, combined (root of the sum of squares) with how far
     /// the translation is beyond its limit.
     float jointSeparation(JointId id) const;
@@ -314,10 +315,11 @@ public:
     Vec2 jointReactionForce(JointId id) const;
     /// N m, the torque the joint applied to body B in that step (revolute: motor plus limits;
     /// friction and motor: their angular row; prismatic and weld: what holds their angle;
-    /// distance and pulley joints apply none).
+    /// wheel: its motor; distance and pulley joints apply none).
     float jointReactionTorque(JointId id) const;
 
-    // Revolute joints (the calls from here to setJointMotor refuse other types).
+    // Revolute joints (the calls from here to setJointMotor refuse other types, but for the
+    // motor calls, which wheel joints answer too).
     /// N m, the motor's share of the reaction torque.
     float jointMotorTorque(JointId id) const;
     JointLimit jointLimit(JointId id) const;
@@ -345,12 +347,13 @@ public:
     float pulleyJointLengthA(JointId id) const;
     float pulleyJointLengthB(JointId id) const;
 
-    // Prismatic joints (these calls refuse other types). Each setter wakes the joint's bodies;
-    // changing the limit restarts its impulses.
+    // Prismatic and wheel joints.
     /// m, (anchorB - anchorA) . axis, the axis turning with body A.
     float jointTranslation(JointId id) const;
     /// m/s, the rate of change of jointTranslation.
     float jointTranslationSpeed(JointId id) const;
+    // Prismatic joints (these calls refuse other types). Each setter wakes the joint's bodies;
+    // changing the limit restarts its impulses.
     /// The axis in world coordinates (unit).
     Vec2 prismaticJointAxis(JointId id) const;
     TranslationLimit prismaticJointLimit(JointId id) const;
@@ -361,6 +364,13 @@ public:
     void setPrismaticJointSpring(JointId id, const JointSpring& spring);
     /// N, the motor's share of the reaction force, along the axis.
     float prismaticJointMotorForce(JointId id) const;
+
+    // Wheel joints (these calls refuse other types; jointMotor and setJointMotor drive a
+    // wheel). Each setter wakes the joint's bodies; changing the limit restarts its impulses.
+    JointSpring wheelJointSpring(JointId id) const;
+    void setWheelJointSpring(JointId id, const JointSpring& spring);
+    TranslationLimit wheelJointLimit(JointId id) const;
+    void setWheelJointLimit(JointId id, const TranslationLimit& limit);
 
     // Weld joints (these calls refuse other types). Each setter wakes the joint's bodies; an
     // enabled spring makes that half soft from the next step.

@@ -1,7 +1,7 @@
 // Joint storage: what persists between steps for every joint, whatever its type. The fields all
 // types share are here; each type's own settings and accumulated impulses are its alternative of
 // `data` (revolute_joint.h, distance_joint.h, pulley_joint.h, velocity_joints.h,
-// prismatic_joint.h, weld_joint.h), in the order of joints/joint_types.h
+// prismatic_joint.h, weld_joint.h, wheel_joint.h), in the order of joints/joint_types.h
 // and of the public JointType. The per-step solver state lives in each type's constraint, built
 // afresh for each island each step.
 #pragma once
@@ -16,6 +16,7 @@
 #include "joints/revolute_joint.h"
 #include "joints/velocity_joints.h"
 #include "joints/weld_joint.h"
+#include "joints/wheel_joint.h"
 #include "model/body_edge.h"
 #include "pivot/joint.h"
 #include "pivot/math.h"
@@ -23,7 +24,7 @@
 namespace pivot {
 
 using JointData = std::variant<RevoluteJoint, DistanceJoint, PulleyJoint, FrictionJoint, MotorJoint,
-                               PrismaticJoint, WeldJoint>;
+                               PrismaticJoint, WeldJoint, WheelJoint>;
 
 struct Joint {
     BodyEdge edges[2];  // edges[0].body is body A, edges[1].body is body B

@@ -18,6 +18,7 @@
 #include "joints/revolute_constraint.h"
 #include "joints/velocity_constraints.h"
 #include "joints/weld_constraint.h"
+#include "joints/wheel_constraint.h"
 #include "pivot/solvers.h"
 
 namespace pivot {
@@ -40,7 +41,7 @@ struct JointTypeList {
 
 using JointConstraintTypes =
     JointTypeList<RevoluteConstraint, DistanceConstraint, PulleyConstraint, FrictionConstraint,
-                  MotorConstraint, PrismaticConstraint, WeldConstraint>;
+                  MotorConstraint, PrismaticConstraint, WeldConstraint, WheelConstraint>;
 
 constexpr int kJointTypeCount = JointConstraintTypes::kCount;
 constexpr int kJointGroupCount = kPositionSolverCount * kJointTypeCount;
@@ -77,7 +78,8 @@ static_assert(storedAt<JointType::Revolute, RevoluteJoint>() &&
                   storedAt<JointType::Friction, FrictionJoint>() &&
                   storedAt<JointType::Motor, MotorJoint>() &&
                   storedAt<JointType::Prismatic, PrismaticJoint>() &&
-                  storedAt<JointType::Weld, WeldJoint>(),
+                  storedAt<JointType::Weld, WeldJoint>() &&
+                  storedAt<JointType::Wheel, WheelJoint>(),
               "JointData lists the joint types in the order of the public JointType");
 
 }  // namespace pivot

@@ -10,17 +10,13 @@
 // wB += iB (rB x P + L), the opposite on A. Solving the block at once keeps a long beam of
 // welds from bending where the point and angle rows, solved one after the other, would fight.
 //
-// Either half may be soft instead (WeldJointDef's springs): a spring of `hertz` and damping
-// ratio on that half's own effective mass (K2 for the point, iA + iB for the angle), solved
-// before the rigid rows as
-//   lambda = -massScale K^-1 (Cdot + bias) - impulseScale lambda_acc,
-//   c = 1 / (h w (2 z + h w)),  massScale = 1 / (1 + c),  impulseScale = c / (1 + c),
-//   bias = w / (2 z + h w) C,
-// which is the distance joint's spring (length_part.h) written for a matrix K. A soft half has
-// no position correction: the spring is its own. The rigid rows are corrected as the joint's
-// strategy says; ModifiedNGS freezes K at the poses the sweeps start from, FullNGS rebuilds it
-// at every solve (Box2D 2.4.1's weld, bit for bit when both halves are rigid). It offers the
-// strategies the same operations as every joint constraint (revolute_constraint.h lists them).
+// Either half may be soft instead (WeldJointDef's springs): a spring on that half's own
+// effective mass (K2 for the point, iA + iB for the angle; constraints/soft_factors.h), solved
+// before the rigid rows. A soft half has no position correction: the spring is its own. The rigid
+// rows are corrected as the joint's strategy says; ModifiedNGS freezes K at the poses the sweeps
+// start from, FullNGS rebuilds it at every solve (Box2D 2.4.1's weld, bit for bit when both halves
+// are rigid). It offers the strategies the same operations as every joint constraint
+// (revolute_constraint.h lists them).
 #pragma once
 
 #include <cmath>
@@ -28,6 +24,7 @@
 
 #include "constraints/constraint_bodies.h"
 #include "constraints/point_part.h"
+#include "constraints/soft_factors.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "core/mat33.h"
@@ -44,25 +41,6 @@ inline Mat33 weldEffectiveMass(const ConstraintBodies& b, Vec2 rA, Vec2 rB) {
     const float k23 = rA.x * b.iA + rB.x * b.iB;
     return {{k2.cx.x, k2.cx.y, k13}, {k2.cy.x, k2.cy.y, k23}, {k13, k23, b.iA + b.iB}};
 }
-
-/// A soft row's per-step factors (see the header comment).
-struct SoftFactors {
-    float massScale = 1.0f;
-    float impulseScale = 0.0f;
-    float biasRate = 0.0f;  // 1/s: the bias is biasRate C
-
-    static SoftFactors of(const JointSpring& spring, float h) {
-        const float omega = 2.0f * kPi * spring.hertz;
-        const float a1 = 2.0f * spring.dampingRatio + h * omega;
-        const float c = 1.0f / (h * omega * a1);
-        SoftFactors f{1.0f / (1.0f + c), c / (1.0f + c), omega / a1};
-        if (!std::isfinite(f.massScale) || !std::isfinite(f.impulseScale) ||
-            !std::isfinite(f.biasRate)) {
-            f = SoftFactors{0.0f, 0.0f, 0.0f};  // no spring force at all rather than a NaN
-        }
-        return f;
-    }
-};
 
 struct WeldConstraint {
     using Storage = WeldJoint;

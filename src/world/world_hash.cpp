@@ -72,6 +72,25 @@ void hashJointData(StateHasher& h, const WeldJoint& j) {
     h.add(j.impulse.y);
     h.add(j.impulse.z);
 }
+void hashJointData(StateHasher& h, const WheelJoint& j) {
+    h.add(static_cast<std::int32_t>(JointType::Wheel));
+    h.add(j.localAxisA);
+    h.add(j.spring.enabled);
+    h.add(j.spring.hertz);
+    h.add(j.spring.dampingRatio);
+    h.add(j.enableLimit);
+    h.add(j.lowerTranslation);
+    h.add(j.upperTranslation);
+    h.add(j.enableMotor);
+    h.add(j.motorSpeed);
+    h.add(j.maxMotorTorque);
+    h.add(j.impulse);
+    h.add(j.springImpulse);
+    h.add(j.lowerImpulse);
+    h.add(j.upperImpulse);
+    h.add(j.motorImpulse);
+    h.add(j.axis);
+}
 void hashJointData(StateHasher& h, const PrismaticJoint& j) {
     h.add(static_cast<std::int32_t>(JointType::Prismatic));
     h.add(j.localAxisA);

@@ -75,6 +75,9 @@ struct World::Impl {
     /// A joint's slot index after checking that it is of `type`, or pivot::Error naming both
     /// types.
     std::int32_t jointIndexOfType(const char* call, JointId id, JointType type) const;
+    /// As jointIndexOfType, for calls that two types answer.
+    std::int32_t jointIndexOfTypes(const char* call, JointId id, JointType type,
+                                   JointType other) const;
     /// A friction or motor joint's slot index, or pivot::Error.
     std::int32_t velocityJointIndex(const char* call, JointId id) const;
     template <typename T>

@@ -24,6 +24,17 @@ void setLimit(PrismaticJoint& joint, const TranslationLimit& limit) {
     joint.upperTranslation = limit.upper;
     joint.lowerImpulse = joint.upperImpulse = 0.0f;
 }
+void setLimit(WheelJoint& joint, const TranslationLimit& limit) {
+    joint.enableLimit = limit.enabled;
+    joint.lowerTranslation = limit.lower;
+    joint.upperTranslation = limit.upper;
+    joint.lowerImpulse = joint.upperImpulse = 0.0f;
+}
+void setMotor(WheelJoint& joint, const JointMotor& motor) {
+    joint.enableMotor = motor.enabled;
+    joint.motorSpeed = motor.speed;
+    joint.maxMotorTorque = motor.maxTorque;
+}
 void setMotor(PrismaticJoint& joint, const LinearMotor& motor) {
     joint.enableMotor = motor.enabled;
     joint.motorSpeed = motor.speed;
@@ -111,6 +122,7 @@ const char* jointTypeName(JointType type) {
         case JointType::Motor: return "motor";
         case JointType::Prismatic: return "prismatic";
         case JointType::Weld: return "weld";
+        case JointType::Wheel: return "wheel";
     }
     return "invalid";
 }
@@ -131,6 +143,18 @@ std::int32_t World::Impl::jointIndexOfType(const char* call, JointId id, JointTy
     if (actual != type) {
         fail(call, "joint " + std::to_string(index) + " is a " + jointTypeName(actual) +
                        " joint; this call is for " + jointTypeName(type) + " joints");
+    }
+    return index;
+}
+
+std::int32_t World::Impl::jointIndexOfTypes(const char* call, JointId id, JointType type,
+                                            JointType other) const {
+    const std::int32_t index = jointIndex(call, id);
+    const JointType actual = joints[index].type();
+    if (actual != type && actual != other) {
+        fail(call, "joint " + std::to_string(index) + " is a " + jointTypeName(actual) +
+                       " joint; this call is for " + jointTypeName(type) + " and " +
+                       jointTypeName(other) + " joints");
     }
     return index;
 }
@@ -303,6 +327,50 @@ JointId World::createJoint(const WeldJointDef& def) {
     return w.addJoint(joint);
 }
 
+JointId World::createJoint(const WheelJointDef& def) {
+    const char* call = "World::createJoint";
+    Impl& w = *impl_;
+    const auto [a, b] = checkBodies(call, def, w);
+    requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
+    requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
+    const Vec2 unitAxis = checkedUnitAxis(call, def.worldAxis ? "def.worldAxis" : "def.localAxisA",
+                                          def.worldAxis.value_or(def.localAxisA));
+    const PositionSolver solver = checkSolverOf(call, def, w);
+    if (def.worldAnchor) {
+        requireCoordinate(call, "def.worldAnchor", *def.worldAnchor);
+        if (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{}) {
+            fail(call, "def.worldAnchor " + formatVec2(*def.worldAnchor) +
+                           " is set together with def.localAnchorA " +
+                           formatVec2(def.localAnchorA) + " or def.localAnchorB " +
+                           formatVec2(def.localAnchorB) +
+                           "; the world anchor would replace them: set one or the other");
+        }
+    }
+    if (def.worldAxis && def.localAxisA != Vec2{1.0f, 0.0f}) {
+        fail(call, "def.worldAxis " + formatVec2(*def.worldAxis) +
+                       " is set together with def.localAxisA " + formatVec2(def.localAxisA) +
+                       "; the world axis would replace it: set one or the other");
+    }
+    checkBiasAndLetGo(call, def);
+    checkSpring(call, "def.spring", def.spring);
+    checkTranslationLimit(call, "def.limit", def.limit);
+    checkMotor(call, "def.motor", def.motor);
+
+    Joint joint = jointFromDef(def, a, b);
+    setStrategyFields(joint, def, solver);
+    const Body& bodyA = w.bodies[a];
+    joint.localAnchorA =
+        def.worldAnchor ? inverseTransformPoint(bodyA.xf, *def.worldAnchor) : def.localAnchorA;
+    joint.localAnchorB = def.worldAnchor ? inverseTransformPoint(w.bodies[b].xf, *def.worldAnchor)
+                                         : def.localAnchorB;
+    WheelJoint& wheel = joint.data.emplace<WheelJoint>();
+    wheel.localAxisA = def.worldAxis ? inverseRotate(bodyA.xf.q, unitAxis) : unitAxis;
+    wheel.spring = def.spring;
+    setLimit(wheel, def.limit);
+    setMotor(wheel, def.motor);
+    return w.addJoint(joint);
+}
+
 JointId World::createJoint(const FrictionJointDef& def) {
     const char* call = "World::createJoint";
     Impl& w = *impl_;
@@ -432,6 +500,10 @@ Vec2 World::jointReactionForce(JointId id) const {
     if (const auto* weld = std::get_if<WeldJoint>(&j.data)) {
         return j.impulseInvDt * Vec2{weld->impulse.x, weld->impulse.y};
     }
+    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) {
+        const Vec2 perp{-wheel->axis.y, wheel->axis.x};
+        return j.impulseInvDt * (wheel->impulse * perp + wheel->axialImpulse() * wheel->axis);
+    }
     if (const auto* prismatic = std::get_if<PrismaticJoint>(&j.data)) {
         const Vec2 perp{-prismatic->axis.y, prismatic->axis.x};
         return j.impulseInvDt *
@@ -465,12 +537,19 @@ float World::jointReactionTorque(JointId id) const {
     if (const auto* weld = std::get_if<WeldJoint>(&j.data)) {
         return j.impulseInvDt * weld->impulse.z;
     }
+    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) {
+        return j.impulseInvDt * wheel->motorImpulse;
+    }
     return 0.0f;
 }
 float World::jointMotorTorque(JointId id) const {
     const char* call = "World::jointMotorTorque";
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Revolute);
+    const std::int32_t index =
+        impl_->jointIndexOfTypes(call, id, JointType::Revolute, JointType::Wheel);
     const Joint& j = impl_->joints[index];
+    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) {
+        return j.impulseInvDt * wheel->motorImpulse;
+    }
     return j.impulseInvDt * std::get<RevoluteJoint>(j.data).motorImpulse;
 }
 
@@ -494,19 +573,27 @@ void World::setJointLimit(JointId id, const JointLimit& limit) {
     wakeUp(impl_->bodies[j.bodyB()]);
 }
 JointMotor World::jointMotor(JointId id) const {
-    const Joint& j =
-        impl_->joints[impl_->jointIndexOfType("World::jointMotor", id, JointType::Revolute)];
+    const Joint& j = impl_->joints[impl_->jointIndexOfTypes("World::jointMotor", id,
+                                                            JointType::Revolute, JointType::Wheel)];
+    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) {
+        return {wheel->enableMotor, wheel->motorSpeed, wheel->maxMotorTorque};
+    }
     const RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
     return {r.enableMotor, r.motorSpeed, r.maxMotorTorque};
 }
 void World::setJointMotor(JointId id, const JointMotor& motor) {
     const char* call = "World::setJointMotor";
-    Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Revolute)];
+    Joint& j =
+        impl_->joints[impl_->jointIndexOfTypes(call, id, JointType::Revolute, JointType::Wheel)];
     checkMotor(call, "motor", motor);
-    RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
-    r.enableMotor = motor.enabled;
-    r.motorSpeed = motor.speed;
-    r.maxMotorTorque = motor.maxTorque;
+    if (auto* wheel = std::get_if<WheelJoint>(&j.data)) {
+        setMotor(*wheel, motor);
+    } else {
+        RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+        r.enableMotor = motor.enabled;
+        r.motorSpeed = motor.speed;
+        r.maxMotorTorque = motor.maxTorque;
+    }
     wakeUp(impl_->bodies[j.bodyA()]);
     wakeUp(impl_->bodies[j.bodyB()]);
 }
@@ -712,26 +799,36 @@ std::vector<JointId> World::jointIds() const {
     return ids;
 }
 
-// --- prismatic joints ------------------------------------------------------------------------
+// --- prismatic and wheel joints ----------------------------------------------------------------
+
+namespace {
+/// The axis in body A's frame of a joint that slides along one.
+Vec2 localAxisOf(const Joint& j) {
+    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) return wheel->localAxisA;
+    return std::get<PrismaticJoint>(j.data).localAxisA;
+}
+}  // namespace
 
 float World::jointTranslation(JointId id) const {
     const char* call = "World::jointTranslation";
-    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Prismatic)];
+    const Joint& j =
+        impl_->joints[impl_->jointIndexOfTypes(call, id, JointType::Prismatic, JointType::Wheel)];
     const Transform& xfA = impl_->bodies[j.bodyA()].xf;
     const Transform& xfB = impl_->bodies[j.bodyB()].xf;
     const Vec2 d = transformPoint(xfB, j.localAnchorB) - transformPoint(xfA, j.localAnchorA);
-    return dot(rotate(xfA.q, std::get<PrismaticJoint>(j.data).localAxisA), d);
+    return dot(rotate(xfA.q, localAxisOf(j)), d);
 }
 
 float World::jointTranslationSpeed(JointId id) const {
     const char* call = "World::jointTranslationSpeed";
-    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Prismatic)];
+    const Joint& j =
+        impl_->joints[impl_->jointIndexOfTypes(call, id, JointType::Prismatic, JointType::Wheel)];
     const Body& a = impl_->bodies[j.bodyA()];
     const Body& b = impl_->bodies[j.bodyB()];
     const Vec2 rA = rotate(a.xf.q, j.localAnchorA - a.localCenter);
     const Vec2 rB = rotate(b.xf.q, j.localAnchorB - b.localCenter);
     const Vec2 d = (b.center + rB) - (a.center + rA);
-    const Vec2 axis = rotate(a.xf.q, std::get<PrismaticJoint>(j.data).localAxisA);
+    const Vec2 axis = rotate(a.xf.q, localAxisOf(j));
     // The axis turns with A: d . (wA x axis), plus the anchors' relative velocity along it.
     const Vec2 vA = a.linearVelocity + cross(a.angularVelocity, rA);
     const Vec2 vB = b.linearVelocity + cross(b.angularVelocity, rB);
@@ -817,6 +914,35 @@ void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     std::get<WeldJoint>(j.data).angularSpring = spring;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+// --- wheel joints ----------------------------------------------------------------------------
+
+JointSpring World::wheelJointSpring(JointId id) const {
+    return impl_->jointData<WheelJoint>("World::wheelJointSpring", id, JointType::Wheel).spring;
+}
+void World::setWheelJointSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setWheelJointSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    std::get<WheelJoint>(j.data).spring = spring;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+TranslationLimit World::wheelJointLimit(JointId id) const {
+    const WheelJoint& w =
+        impl_->jointData<WheelJoint>("World::wheelJointLimit", id, JointType::Wheel);
+    return {w.enableLimit, w.lowerTranslation, w.upperTranslation};
+}
+void World::setWheelJointLimit(JointId id, const TranslationLimit& limit) {
+    const char* call = "World::setWheelJointLimit";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
+    checkTranslationLimit(call, "limit", limit);
+    Joint& j = impl_->joints[index];
+    setLimit(std::get<WheelJoint>(j.data), limit);
     wakeUp(impl_->bodies[j.bodyA()]);
     wakeUp(impl_->bodies[j.bodyB()]);
 }

@@ -216,13 +216,75 @@ Box2dScene buildWeldBeam(bool continuous) {
         b2Body* body = scene.world->CreateBody(&def);
         b2PolygonShape shape;
         shape.SetAsBox(0.5f, load ? 0.5f : 0.125f);
-        body->CreateFixture(&shape, load ? 5.0f : 1.0f);
+        b2FixtureDef fixture;
+        fixture.shape = &shape;
+        fixture.density = load ? 5.0f : 1.0f;
+        fixture.filter.groupIndex = -1;  // one object: its parts never collide
+        body->CreateFixture(&fixture);
         b2WeldJointDef jd;  // stiffness 0: rigid
         jd.Initialize(previous, body, b2Vec2(static_cast<float>(i), 5.0f));
         scene.joints.push_back(scene.world->CreateJoint(&jd));
         scene.bodies.push_back(body);
         previous = body;
     }
+    return scene;
+}
+
+Box2dScene buildCar(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    b2Body* groundBody = ground(*scene.world);
+    b2FixtureDef fixture;
+    b2PolygonShape bump;
+    fixture.shape = &bump;
+    fixture.friction = 0.6f;
+    for (int i = -5; i <= 5; ++i) {
+        bump.SetAsBox(0.5f, 0.15f, b2Vec2(3.0f * static_cast<float>(i), 0.0f), 0.0f);
+        groundBody->CreateFixture(&fixture);
+    }
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(0.0f, 1.3f);
+    b2Body* chassis = scene.world->CreateBody(&def);
+    b2PolygonShape box;
+    box.SetAsBox(1.25f, 0.25f);
+    fixture.shape = &box;
+    fixture.friction = 0.6f;  // pivot2d's default
+    fixture.density = 1.0f;
+    chassis->CreateFixture(&fixture);
+    scene.bodies.push_back(chassis);
+    b2CircleShape tyre;
+    tyre.m_radius = 0.4f;
+    fixture.shape = &tyre;
+    fixture.friction = 0.9f;
+    for (float x : {-0.9f, 0.9f}) {
+        def.position.Set(x, 0.55f);
+        b2Body* wheel = scene.world->CreateBody(&def);
+        wheel->CreateFixture(&fixture);
+        b2WheelJointDef jd;
+        jd.Initialize(chassis, wheel, b2Vec2(x, 0.55f), b2Vec2(0.0f, 1.0f));
+        // The suspension row's effective mass: anchor B is x across from the chassis's centre.
+        const float k =
+            1.0f / chassis->GetMass() + 1.0f / wheel->GetMass() + x * x / chassis->GetInertia();
+        const float omega = 2.0f * b2_pi * 4.0f;
+        jd.stiffness = omega * omega / k;
+        jd.damping = 2.0f * 0.7f * omega / k;
+        jd.enableLimit = true;
+        jd.lowerTranslation = -0.25f;
+        jd.upperTranslation = 0.25f;
+        jd.enableMotor = x < 0.0f;
+        jd.motorSpeed = -10.0f;
+        jd.maxMotorTorque = 20.0f;
+        scene.joints.push_back(scene.world->CreateJoint(&jd));
+        scene.bodies.push_back(wheel);
+    }
+    auto* drive = static_cast<b2WheelJoint*>(scene.joints.front());
+    scene.beforeStep = [drive, chassis](Box2dScene&, int) {  // as the pivot2d scene
+        const float speed = drive->GetMotorSpeed();
+        const float x = chassis->GetPosition().x;
+        if ((x > 12.0f && speed < 0.0f) || (x < -12.0f && speed > 0.0f)) {
+            drive->SetMotorSpeed(-speed);
+        }
+    };
     return scene;
 }
 

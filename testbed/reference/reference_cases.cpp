@@ -34,6 +34,7 @@ const std::vector<ReferenceCase>& referenceCases() {
         {"motor_drive", false, scenes::buildMotorDrive, box2d::buildMotorDrive},
         {"elevator", false, scenes::buildElevator, box2d::buildElevator},
         {"weld_beam", false, scenes::buildWeldBeam, box2d::buildWeldBeam},
+        {"car", true, scenes::buildCar, box2d::buildCar, false},  // not bit for bit
         {"double_pendulum", true, scenes::buildDoublePendulum, box2d::buildDoublePendulum},
         {"bridge", true, scenes::buildBridge, box2d::buildBridge},
         {"chain", true, scenes::buildChain, box2d::buildChain},
@@ -99,6 +100,23 @@ scenes::Scene buildPivotCase(const ReferenceCase& c, const scenes::SceneOptions&
     return scene;
 }
 
+namespace {
+// A prismatic or wheel joint's: how far anchor B is off the axis line, combined with how far the
+// translation is beyond the limit.
+template <typename SlideJoint>
+double slideSeparation(SlideJoint& joint) {
+    const b2Vec2 d = joint.GetAnchorB() - joint.GetAnchorA();
+    const b2Vec2 axis = joint.GetBodyA()->GetWorldVector(joint.GetLocalAxisA());
+    const double across = b2Cross(axis, d);  // d . perp, perp = (-axis.y, axis.x)
+    const double x = joint.GetJointTranslation();
+    double beyond = 0.0;
+    if (joint.IsLimitEnabled()) {
+        beyond = std::max({0.0, joint.GetLowerLimit() - x, x - joint.GetUpperLimit()});
+    }
+    return std::hypot(across, beyond);
+}
+}  // namespace
+
 // As World::jointSeparation: a pin's anchor gap; how far a distance joint's length is outside
 // [min, max].
 double box2dSeparation(const b2Joint& joint) {
@@ -114,17 +132,11 @@ double box2dSeparation(const b2Joint& joint) {
     if (joint.GetType() == e_frictionJoint || joint.GetType() == e_motorJoint) return 0.0;
     if (joint.GetType() == e_prismaticJoint) {
         // Box2D 2.4.1 declares GetBodyA and the limit getters without const.
-        auto& prismatic =
-            const_cast<b2PrismaticJoint&>(static_cast<const b2PrismaticJoint&>(joint));
-        const b2Vec2 d = joint.GetAnchorB() - joint.GetAnchorA();
-        const b2Vec2 axis = prismatic.GetBodyA()->GetWorldVector(prismatic.GetLocalAxisA());
-        const double across = b2Cross(axis, d);  // d . perp, perp = (-axis.y, axis.x)
-        const double x = prismatic.GetJointTranslation();
-        double beyond = 0.0;
-        if (prismatic.IsLimitEnabled()) {
-            beyond = std::max({0.0, prismatic.GetLowerLimit() - x, x - prismatic.GetUpperLimit()});
-        }
-        return std::hypot(across, beyond);
+        return slideSeparation(
+            const_cast<b2PrismaticJoint&>(static_cast<const b2PrismaticJoint&>(joint)));
+    }
+    if (joint.GetType() == e_wheelJoint) {
+        return slideSeparation(const_cast<b2WheelJoint&>(static_cast<const b2WheelJoint&>(joint)));
     }
     if (joint.GetType() != e_distanceJoint) return gap;
     const auto& distance = static_cast<const b2DistanceJoint&>(joint);

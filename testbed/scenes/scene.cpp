@@ -57,6 +57,10 @@ const std::vector<SceneInfo>& allScenes() {
          "ten boxes welded into a cantilever out of a wall, a box of 20x their mass welded at "
          "the tip",
          buildWeldBeam},
+        {"car",
+         "a car on two sprung wheel joints driven back and forth over bumps, its rear wheel "
+         "motorised",
+         buildCar},
         {"elevator",
          "a platform on a prismatic joint carrying an off-centre load up and down between limits",
          buildElevator},

@@ -82,6 +82,7 @@ void buildRope(Scene& scene, const SceneOptions& options);
 void buildPulley(Scene& scene, const SceneOptions& options);
 void buildElevator(Scene& scene, const SceneOptions& options);
 void buildWeldBeam(Scene& scene, const SceneOptions& options);
+void buildCar(Scene& scene, const SceneOptions& options);
 void buildTopDown(Scene& scene, const SceneOptions& options);
 void buildMotorDrive(Scene& scene, const SceneOptions& options);
 /// 20 light links holding a ball 3,000 times heavier (not in the testbed table yet).

@@ -80,7 +80,8 @@ const RecordedHashes kRecorded[] = {
     {"pulley",            {0xeeefd922f060bb30ull, 0x8c5fcf8031eabf19ull, 0xd34fb0c41a150427ull, 0x512c6b2eba8854aaull}},
     {"top_down",          {0xf3640b234b73893dull, 0x31c01f8215235f1cull, 0xaeeb44376fa4240bull, 0xca93bf612f861b82ull}},
     {"motor_drive",       {0x219e8351c028691cull, 0xec5d93e75f90de80ull, 0xde8c32bfb5d572b5ull, 0x0eb63675aacac719ull}},
-    {"weld_beam",         {0x3e37c7331cb6fd80ull, 0x68c8d98e40cb1181ull, 0x0331662de9dbe50eull, 0x3eafa3ce0b5eb323ull}},
+    {"weld_beam",         {0xf4aa1610f9cbad91ull, 0x3da6cc378e39ef85ull, 0xaeb6b8ebe4773043ull, 0xc309103e6d4f92d6ull}},
+    {"car",               {0xd5856f3e7a68ea3full, 0x3955fef5f7444707ull, 0xcbfd3d3b2112093bull, 0x2347258b5c67c0f7ull}},
     {"elevator",          {0x2bc5877b156b2692ull, 0x680591cab71fca3full, 0xf15ac09c6ca38d47ull, 0xc9eca8551f156da3ull}},
 };
 // clang-format on

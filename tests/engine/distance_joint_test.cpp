@@ -277,7 +277,7 @@ TEST(DistanceJoint, BadInputIsRefusedAndChangesNothing) {
     // Calls for another joint type name both types.
     expectRefused([&] { world.jointLimit(p.joint); },
                   "is a distance joint; this call is for revolute joints");
-    expectRefused([&] { world.setJointMotor(p.joint, JointMotor{}); }, "revolute joints");
+    expectRefused([&] { world.setJointMotor(p.joint, JointMotor{}); }, "revolute and wheel joints");
     JointId pin = world.createJoint(RevoluteJointDef::atWorldAnchor(p.ground, p.ball, {0, 0}));
     const std::uint64_t withPin = world.stateHash();
     try {

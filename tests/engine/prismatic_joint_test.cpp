@@ -233,7 +233,7 @@ TEST(PrismaticJoint, BadInputIsRefusedAndChangesNothing) {
         world.jointTranslation(pin);
         ADD_FAILURE() << "accepted a revolute joint";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("this call is for prismatic joints"),
+        EXPECT_NE(std::string(e.what()).find("this call is for prismatic and wheel joints"),
                   std::string::npos);
     }
 }

@@ -110,7 +110,8 @@ struct JointGrid {
 // 0.9 to 1.1 m, every fifth with a spring), so a coloured island holds both joint types.
 // A grid of circles hung from three static ones, each linked to the one above by a pin and to
 // its left neighbour by a pin, or (everyType) by every joint type in turn: distance, prismatic
-// along the row, weld, pulley (wheels 3 m above each), friction, motor and revolute.
+// along the row, weld, pulley (wheels 3 m above each), friction, motor, wheel (sprung
+// vertically) and revolute.
 void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false) {
     World& world = grid.world;
     std::vector<BodyId> bodies;
@@ -146,7 +147,7 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false
                 }
                 grid.joints.push_back(world.createJoint(jointDef));
             };
-            switch (everyType ? (col + row) % 7 : 6) {
+            switch (everyType ? (col + row) % 8 : 7) {
                 case 0: {
                     DistanceJointDef joint;
                     joint.bodyA = left;
@@ -193,6 +194,14 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false
                     joint.bodyA = left;
                     joint.bodyB = body;
                     joint.maxForce = 20.0f;
+                    add(joint);
+                    break;
+                }
+                case 6: {
+                    WheelJointDef joint =
+                        WheelJointDef::atWorldAnchor(left, body, middle, {0.0f, 1.0f});
+                    joint.spring = {true, 4.0f, 0.7f};
+                    if (k % 3 == 0) joint.limit = {true, -0.1f, 0.1f};
                     add(joint);
                     break;
                 }

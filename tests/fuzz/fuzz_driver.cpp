@@ -467,6 +467,7 @@ private:
             {2, &Driver::createPulleyJoint},
             {3, &Driver::createPrismaticJoint},
             {3, &Driver::createWeldJoint},
+            {3, &Driver::createWheelJoint},
             {2, &Driver::createVelocityJoint},
             {2, &Driver::createMouseJoint},
             {3, &Driver::destroyBody},
@@ -869,6 +870,75 @@ private:
             if (!(std::fabs(length(world_->prismaticJointAxis(id)) - 1.0f) < 1e-5f)) {
                 failure("createJoint: the prismatic axis is not a unit vector");
             }
+        });
+    }
+
+    void createWheelJoint() {
+        if (world_->jointCount() >= kMaxJoints) {
+            destroyJoint();
+            return;
+        }
+        Arg<BodyId> a = pickBody();
+        Arg<BodyId> b = random_.chance(0.05f) ? a : pickBody();
+        WheelJointDef def;
+        def.bodyA = a.value;
+        def.bodyB = b.value;
+        bool bad = a.bad || b.bad || a.value == b.value;
+        const bool atWorldAnchor = random_.chance(0.6f);
+        if (atWorldAnchor) {
+            Arg<Vec2> anchor = values_->coordinate(15.0f);
+            def.worldAnchor = anchor.value;
+            bad = bad || anchor.bad;
+        }
+        if (!atWorldAnchor || (hostile_ > 0.0f && random_.chance(0.1f))) {
+            Arg<Vec2> localA = values_->coordinate(2.0f);
+            Arg<Vec2> localB = values_->coordinate(2.0f);
+            def.localAnchorA = localA.value;
+            def.localAnchorB = localB.value;
+            bad = bad || localA.bad || localB.bad;
+            if (atWorldAnchor && (def.localAnchorA != Vec2{} || def.localAnchorB != Vec2{})) {
+                bad = true;
+            }
+        }
+        const bool worldAxis = random_.chance(0.5f);
+        Arg<Vec2> ax = axis();
+        (worldAxis ? def.worldAxis.emplace() : def.localAxisA) = ax.value;
+        bad = bad || ax.bad;
+        if (worldAxis && hostile_ > 0.0f && random_.chance(0.1f)) {
+            def.localAxisA = {0.0f, 1.0f};
+            bad = true;
+        }
+        Arg<JointSpring> sp = spring();
+        Arg<TranslationLimit> l = translationLimit();
+        Arg<JointMotor> m = motor();
+        def.spring = sp.value;
+        def.limit = l.value;
+        def.motor = m.value;
+        bad = bad || sp.bad || l.bad || m.bad;
+        if (random_.chance(0.7f)) {
+            Arg<PositionSolver> s = solver();
+            def.positionSolver = s.value;
+            bad = bad || s.bad;
+        }
+        if (random_.chance(0.4f)) {
+            Arg<float> bias = values_->fraction();
+            def.biasFactor = bias.value;
+            bad = bad || bias.bad;
+        }
+        if (random_.chance(0.2f)) {
+            Arg<float> letGo = values_->nonNegativeUpTo(20.0f, kMaxMagnitude);
+            def.letGoSeparation = letGo.value;
+            bad = bad || letGo.bad;
+        }
+        def.collideConnected = random_.chance(0.3f);
+        def.userData = random_.next();
+        trace("createWheelJoint a=" + idText(a.value) + " b=" + idText(b.value));
+        attempt("World::createJoint", verdict(bad), [&] {
+            JointId id = journal_.createJoint(def);
+            noteTag(id);
+            joints_.remember(id);
+            if (world_->jointType(id) != JointType::Wheel)
+                failure("createJoint: not a wheel joint");
         });
     }
 
@@ -1358,6 +1428,23 @@ private:
                     // The prismatic joint's setters.
                     const bool notPrismatic = !joint.bad && !isType(joint, JointType::Prismatic);
                     const bool notWeld = !joint.bad && !isType(joint, JointType::Weld);
+                    const bool notWheel = !joint.bad && !isType(joint, JointType::Wheel);
+                    if (random_.chance(0.3f)) {
+                        if (random_.chance(0.5f)) {
+                            Arg<JointSpring> sp = spring();
+                            trace("setWheelJointSpring " + idText(joint.value));
+                            attempt("World::setWheelJointSpring",
+                                    verdict(joint.bad || notWheel || sp.bad),
+                                    [&] { journal_.setWheelJointSpring(joint.value, sp.value); });
+                        } else {
+                            Arg<TranslationLimit> l = translationLimit();
+                            trace("setWheelJointLimit " + idText(joint.value));
+                            attempt("World::setWheelJointLimit",
+                                    verdict(joint.bad || notWheel || l.bad),
+                                    [&] { journal_.setWheelJointLimit(joint.value, l.value); });
+                        }
+                        break;
+                    }
                     if (random_.chance(0.4f)) {
                         Arg<JointSpring> sp = spring();
                         const bool linear = random_.chance(0.5f);
@@ -1474,7 +1561,8 @@ private:
             case 1: {
                 Arg<JointMotor> m = motor();
                 trace("setJointMotor " + idText(joint.value) + " " + text(m.value.speed));
-                const bool other = !joint.bad && !isType(joint, JointType::Revolute);
+                const bool other = !joint.bad && !isType(joint, JointType::Revolute) &&
+                                   !isType(joint, JointType::Wheel);
                 attempt("World::setJointMotor", verdict(joint.bad || other || m.bad),
                         [&] { journal_.setJointMotor(joint.value, m.value); });
                 break;
@@ -1706,14 +1794,21 @@ private:
                     const bool notVelocity = !joint.bad && !velocityOnly(joint);
                     const bool notPrismatic = !joint.bad && !isType(joint, JointType::Prismatic);
                     const bool notWeld = !joint.bad && !isType(joint, JointType::Weld);
+                    const bool notWheel = !joint.bad && !isType(joint, JointType::Wheel);
+                    const bool notSlide = notPrismatic && notWheel;
+                    const bool notMotorised = notRevolute && notWheel;
                     std::vector<std::tuple<const char*, bool, std::function<void()>>> typed = {
+                        {"World::wheelJointSpring", notWheel,
+                         [&] { w.wheelJointSpring(joint.value); }},
+                        {"World::wheelJointLimit", notWheel,
+                         [&] { w.wheelJointLimit(joint.value); }},
                         {"World::weldJointLinearSpring", notWeld,
                          [&] { w.weldJointLinearSpring(joint.value); }},
                         {"World::weldJointAngularSpring", notWeld,
                          [&] { w.weldJointAngularSpring(joint.value); }},
-                        {"World::jointTranslation", notPrismatic,
+                        {"World::jointTranslation", notSlide,
                          [&] { w.jointTranslation(joint.value); }},
-                        {"World::jointTranslationSpeed", notPrismatic,
+                        {"World::jointTranslationSpeed", notSlide,
                          [&] { w.jointTranslationSpeed(joint.value); }},
                         {"World::prismaticJointAxis", notPrismatic,
                          [&] { w.prismaticJointAxis(joint.value); }},
@@ -1721,10 +1816,10 @@ private:
                          [&] { w.prismaticJointLimit(joint.value); }},
                         {"World::prismaticJointMotorForce", notPrismatic,
                          [&] { w.prismaticJointMotorForce(joint.value); }},
-                        {"World::jointMotorTorque", notRevolute,
+                        {"World::jointMotorTorque", notMotorised,
                          [&] { w.jointMotorTorque(joint.value); }},
                         {"World::jointLimit", notRevolute, [&] { w.jointLimit(joint.value); }},
-                        {"World::jointMotor", notRevolute, [&] { w.jointMotor(joint.value); }},
+                        {"World::jointMotor", notMotorised, [&] { w.jointMotor(joint.value); }},
                         {"World::distanceJointRestLength", notDistance,
                          [&] { w.distanceJointRestLength(joint.value); }},
                         {"World::distanceJointLimit", notDistance,

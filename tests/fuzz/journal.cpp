@@ -168,6 +168,22 @@ JointId Journal::createJoint(const WeldJointDef& def) {
     return id;
 }
 
+JointId Journal::createJoint(const WheelJointDef& def) {
+    JointId id = world_->createJoint(def);
+    lines_.push_back(
+        "wheel " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " + nameOf('b', def.bodyB) +
+        " " + num(def.worldAnchor.has_value()) + " " + num(def.worldAnchor.value_or(Vec2{})) + " " +
+        num(def.localAnchorA) + " " + num(def.localAnchorB) + " " + num(def.worldAxis.has_value()) +
+        " " + num(def.worldAxis.value_or(Vec2{})) + " " + num(def.localAxisA) + " " +
+        num(def.spring.enabled) + " " + num(def.spring.hertz) + " " + num(def.spring.dampingRatio) +
+        " " + num(def.limit.enabled) + " " + num(def.limit.lower) + " " + num(def.limit.upper) +
+        " " + num(def.motor.enabled) + " " + num(def.motor.speed) + " " + num(def.motor.maxTorque) +
+        " " + num(def.positionSolver ? int(*def.positionSolver) : -1) + " " +
+        num(def.biasFactor.value_or(-1.0f)) + " " + num(def.collideConnected) + " " +
+        num(def.letGoSeparation.value_or(-1.0f)));
+    return id;
+}
+
 JointId Journal::createJoint(const FrictionJointDef& def) {
     JointId id = world_->createJoint(def);
     lines_.push_back("friction " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " +
@@ -311,6 +327,16 @@ void Journal::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
     world_->setWeldJointAngularSpring(id, spring);
     lines_.push_back("weldAngularSpring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
                      num(spring.hertz) + " " + num(spring.dampingRatio));
+}
+void Journal::setWheelJointSpring(JointId id, const JointSpring& spring) {
+    world_->setWheelJointSpring(id, spring);
+    lines_.push_back("wheelSpring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
+                     num(spring.hertz) + " " + num(spring.dampingRatio));
+}
+void Journal::setWheelJointLimit(JointId id, const TranslationLimit& limit) {
+    world_->setWheelJointLimit(id, limit);
+    lines_.push_back("wheelLimit " + nameOf('j', id) + " " + num(limit.enabled) + " " +
+                     num(limit.lower) + " " + num(limit.upper));
 }
 void Journal::setJointMaxForce(JointId id, float force) {
     world_->setJointMaxForce(id, force);
@@ -647,6 +673,51 @@ ReplayResult replay(std::istream& in) {
             const float letGo = f.f();
             if (letGo >= 0.0f) def.letGoSeparation = letGo;
             call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "wheel") {
+            std::string name = f.word();
+            WheelJointDef def;
+            def.bodyA = body(f.word());
+            def.bodyB = body(f.word());
+            const bool hasWorldAnchor = f.b();
+            const Vec2 anchor = f.v();
+            if (hasWorldAnchor) def.worldAnchor = anchor;
+            def.localAnchorA = f.v();
+            def.localAnchorB = f.v();
+            const bool hasWorldAxis = f.b();
+            const Vec2 axis = f.v();
+            if (hasWorldAxis) def.worldAxis = axis;
+            def.localAxisA = f.v();
+            def.spring.enabled = f.b();
+            def.spring.hertz = f.f();
+            def.spring.dampingRatio = f.f();
+            def.limit.enabled = f.b();
+            def.limit.lower = f.f();
+            def.limit.upper = f.f();
+            def.motor.enabled = f.b();
+            def.motor.speed = f.f();
+            def.motor.maxTorque = f.f();
+            int solver = f.i();
+            if (solver >= 0) def.positionSolver = static_cast<PositionSolver>(solver);
+            float bias = f.f();
+            if (bias >= 0.0f) def.biasFactor = bias;
+            def.collideConnected = f.b();
+            const float letGo = f.f();
+            if (letGo >= 0.0f) def.letGoSeparation = letGo;
+            call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "wheelSpring") {
+            JointId j = joint(f.word());
+            JointSpring sp;
+            sp.enabled = f.b();
+            sp.hertz = f.f();
+            sp.dampingRatio = f.f();
+            call = [&w, j, sp] { w.setWheelJointSpring(j, sp); };
+        } else if (command == "wheelLimit") {
+            JointId j = joint(f.word());
+            TranslationLimit l;
+            l.enabled = f.b();
+            l.lower = f.f();
+            l.upper = f.f();
+            call = [&w, j, l] { w.setWheelJointLimit(j, l); };
         } else if (command == "weld") {
             std::string name = f.word();
             WeldJointDef def;

@@ -36,6 +36,7 @@ public:
     JointId createJoint(const PulleyJointDef& def);
     JointId createJoint(const PrismaticJointDef& def);
     JointId createJoint(const WeldJointDef& def);
+    JointId createJoint(const WheelJointDef& def);
     JointId createJoint(const FrictionJointDef& def);
     JointId createJoint(const MotorJointDef& def);
     MouseJointId createMouseJoint(const MouseJointDef& def);
@@ -64,6 +65,8 @@ public:
     void setPrismaticJointMotor(JointId id, const LinearMotor& motor);
     void setPrismaticJointSpring(JointId id, const JointSpring& spring);
     void setWeldJointLinearSpring(JointId id, const JointSpring& spring);
+    void setWheelJointSpring(JointId id, const JointSpring& spring);
+    void setWheelJointLimit(JointId id, const TranslationLimit& limit);
     void setWeldJointAngularSpring(JointId id, const JointSpring& spring);
     void setJointMaxForce(JointId id, float force);
     void setMotorJointLinearOffset(JointId id, Vec2 offset);

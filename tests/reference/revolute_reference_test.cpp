@@ -66,6 +66,7 @@ TEST_P(AgainstBox2d, TrajectoriesAreIdenticalOnX86) {
     // same float operations in the same order, from bit-identical masses: over the compared
     // steps the runs are identical, not just within 1e-4.
     const ReferenceCase& c = GetParam();
+    if (!c.bitForBit) GTEST_SKIP() << c.name << ": other float operations than Box2D's";
     TrajectoryDifference d = compareTrajectories(c, fullNgs(), comparedSteps(c));
     EXPECT_EQ(d.position, 0.0);
     EXPECT_EQ(d.angle, 0.0);
