@@ -1,0 +1,370 @@
+// The World facade, part four: the calls one or two joint types answer (and refuse for the
+// others, naming both types).
+#include "world/joint_settings.h"
+#include "world/world_checks.h"
+#include "world/world_impl.h"
+
+namespace pivot {
+
+float World::jointMotorTorque(JointId id) const {
+    const char* call = "World::jointMotorTorque";
+    const std::int32_t index =
+        impl_->jointIndexOfTypes(call, id, JointType::Revolute, JointType::Wheel);
+    const Joint& j = impl_->joints[index];
+    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) {
+        return j.impulseInvDt * wheel->motorImpulse;
+    }
+    return j.impulseInvDt * std::get<RevoluteJoint>(j.data).motorImpulse;
+}
+
+JointLimit World::jointLimit(JointId id) const {
+    const Joint& j =
+        impl_->joints[impl_->jointIndexOfType("World::jointLimit", id, JointType::Revolute)];
+    const RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+    return {r.enableLimit, r.lowerAngle, r.upperAngle};
+}
+void World::setJointLimit(JointId id, const JointLimit& limit) {
+    const char* call = "World::setJointLimit";
+    Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Revolute)];
+    checkLimit(call, "limit", limit);
+    RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+    r.enableLimit = limit.enabled;
+    r.lowerAngle = limit.lower;
+    r.upperAngle = limit.upper;
+    r.lowerImpulse = 0.0f;
+    r.upperImpulse = 0.0f;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+JointMotor World::jointMotor(JointId id) const {
+    const Joint& j = impl_->joints[impl_->jointIndexOfTypes("World::jointMotor", id,
+                                                            JointType::Revolute, JointType::Wheel)];
+    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) {
+        return {wheel->enableMotor, wheel->motorSpeed, wheel->maxMotorTorque};
+    }
+    const RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+    return {r.enableMotor, r.motorSpeed, r.maxMotorTorque};
+}
+void World::setJointMotor(JointId id, const JointMotor& motor) {
+    const char* call = "World::setJointMotor";
+    Joint& j =
+        impl_->joints[impl_->jointIndexOfTypes(call, id, JointType::Revolute, JointType::Wheel)];
+    checkMotor(call, "motor", motor);
+    if (auto* wheel = std::get_if<WheelJoint>(&j.data)) {
+        setMotor(*wheel, motor);
+    } else {
+        RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+        r.enableMotor = motor.enabled;
+        r.motorSpeed = motor.speed;
+        r.maxMotorTorque = motor.maxTorque;
+    }
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+float World::distanceJointRestLength(JointId id) const {
+    return impl_
+        ->jointData<DistanceJoint>("World::distanceJointRestLength", id, JointType::Distance)
+        .length;
+}
+void World::setDistanceJointRestLength(JointId id, float length) {
+    const char* call = "World::setDistanceJointRestLength";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
+    checkRestLength(call, "length", length);
+    Joint& j = impl_->joints[index];
+    std::get<DistanceJoint>(j.data).length = length;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+LengthLimit World::distanceJointLimit(JointId id) const {
+    const DistanceJoint& d =
+        impl_->jointData<DistanceJoint>("World::distanceJointLimit", id, JointType::Distance);
+    return {d.enableLimit, d.minLength, d.maxLength};
+}
+void World::setDistanceJointLimit(JointId id, const LengthLimit& limit) {
+    const char* call = "World::setDistanceJointLimit";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
+    checkLengthLimit(call, "limit", limit);
+    Joint& j = impl_->joints[index];
+    DistanceJoint& d = std::get<DistanceJoint>(j.data);
+    setLimit(d, limit);
+    d.lowerImpulse = d.upperImpulse = 0.0f;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+JointSpring World::distanceJointSpring(JointId id) const {
+    const DistanceJoint& d =
+        impl_->jointData<DistanceJoint>("World::distanceJointSpring", id, JointType::Distance);
+    return {d.enableSpring, d.hertz, d.dampingRatio};
+}
+void World::setDistanceJointSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setDistanceJointSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    setSpring(std::get<DistanceJoint>(j.data), spring);
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+Vec2 World::pulleyJointGroundAnchorA(JointId id) const {
+    return impl_->jointData<PulleyJoint>("World::pulleyJointGroundAnchorA", id, JointType::Pulley)
+        .groundAnchorA;
+}
+Vec2 World::pulleyJointGroundAnchorB(JointId id) const {
+    return impl_->jointData<PulleyJoint>("World::pulleyJointGroundAnchorB", id, JointType::Pulley)
+        .groundAnchorB;
+}
+float World::pulleyJointRatio(JointId id) const {
+    return impl_->jointData<PulleyJoint>("World::pulleyJointRatio", id, JointType::Pulley).ratio;
+}
+float World::pulleyJointLengthA(JointId id) const {
+    const char* call = "World::pulleyJointLengthA";
+    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Pulley)];
+    return distance(transformPoint(impl_->bodies[j.bodyA()].xf, j.localAnchorA),
+                    std::get<PulleyJoint>(j.data).groundAnchorA);
+}
+float World::pulleyJointLengthB(JointId id) const {
+    const char* call = "World::pulleyJointLengthB";
+    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Pulley)];
+    return distance(transformPoint(impl_->bodies[j.bodyB()].xf, j.localAnchorB),
+                    std::get<PulleyJoint>(j.data).groundAnchorB);
+}
+
+namespace {
+// The friction or motor joint's maximum force and torque: the two types share these calls.
+struct Limits {
+    float* force;
+    float* torque;
+};
+Limits velocityJointLimits(Joint& j) {
+    if (auto* f = std::get_if<FrictionJoint>(&j.data)) return {&f->maxForce, &f->maxTorque};
+    auto& m = std::get<MotorJoint>(j.data);
+    return {&m.maxForce, &m.maxTorque};
+}
+}  // namespace
+
+std::int32_t World::Impl::velocityJointIndex(const char* call, JointId id) const {
+    const std::int32_t index = jointIndex(call, id);
+    if (!joints[index].isVelocityOnly()) {
+        fail(call, "joint " + std::to_string(index) + " is a " +
+                       jointTypeName(joints[index].type()) +
+                       " joint; this call is for friction and motor joints");
+    }
+    return index;
+}
+
+float World::jointMaxForce(JointId id) const {
+    Joint& j = impl_->joints[impl_->velocityJointIndex("World::jointMaxForce", id)];
+    return *velocityJointLimits(j).force;
+}
+void World::setJointMaxForce(JointId id, float force) {
+    const char* call = "World::setJointMaxForce";
+    Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
+    requireNonNegative(call, "force", force);
+    *velocityJointLimits(j).force = force;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+float World::jointMaxTorque(JointId id) const {
+    Joint& j = impl_->joints[impl_->velocityJointIndex("World::jointMaxTorque", id)];
+    return *velocityJointLimits(j).torque;
+}
+void World::setJointMaxTorque(JointId id, float torque) {
+    const char* call = "World::setJointMaxTorque";
+    Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
+    requireNonNegative(call, "torque", torque);
+    *velocityJointLimits(j).torque = torque;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+Vec2 World::motorJointLinearOffset(JointId id) const {
+    return impl_->jointData<MotorJoint>("World::motorJointLinearOffset", id, JointType::Motor)
+        .linearOffset;
+}
+void World::setMotorJointLinearOffset(JointId id, Vec2 offset) {
+    const char* call = "World::setMotorJointLinearOffset";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
+    requireCoordinate(call, "offset", offset);
+    Joint& j = impl_->joints[index];
+    std::get<MotorJoint>(j.data).linearOffset = offset;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+float World::motorJointAngularOffset(JointId id) const {
+    return impl_->jointData<MotorJoint>("World::motorJointAngularOffset", id, JointType::Motor)
+        .angularOffset;
+}
+void World::setMotorJointAngularOffset(JointId id, float offset) {
+    const char* call = "World::setMotorJointAngularOffset";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
+    requireMagnitude(call, "offset", offset);
+    Joint& j = impl_->joints[index];
+    std::get<MotorJoint>(j.data).angularOffset = offset;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+float World::motorJointCorrectionFactor(JointId id) const {
+    return impl_->jointData<MotorJoint>("World::motorJointCorrectionFactor", id, JointType::Motor)
+        .correctionFactor;
+}
+void World::setMotorJointCorrectionFactor(JointId id, float factor) {
+    const char* call = "World::setMotorJointCorrectionFactor";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
+    requireInRange(call, "factor", factor, 0.0f, 1.0f);
+    Joint& j = impl_->joints[index];
+    std::get<MotorJoint>(j.data).correctionFactor = factor;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+// --- prismatic and wheel joints ----------------------------------------------------------------
+
+namespace {
+/// The axis in body A's frame of a joint that slides along one.
+Vec2 localAxisOf(const Joint& j) {
+    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) return wheel->localAxisA;
+    return std::get<PrismaticJoint>(j.data).localAxisA;
+}
+}  // namespace
+
+float World::jointTranslation(JointId id) const {
+    const char* call = "World::jointTranslation";
+    const Joint& j =
+        impl_->joints[impl_->jointIndexOfTypes(call, id, JointType::Prismatic, JointType::Wheel)];
+    const Transform& xfA = impl_->bodies[j.bodyA()].xf;
+    const Transform& xfB = impl_->bodies[j.bodyB()].xf;
+    const Vec2 d = transformPoint(xfB, j.localAnchorB) - transformPoint(xfA, j.localAnchorA);
+    return dot(rotate(xfA.q, localAxisOf(j)), d);
+}
+
+float World::jointTranslationSpeed(JointId id) const {
+    const char* call = "World::jointTranslationSpeed";
+    const Joint& j =
+        impl_->joints[impl_->jointIndexOfTypes(call, id, JointType::Prismatic, JointType::Wheel)];
+    const Body& a = impl_->bodies[j.bodyA()];
+    const Body& b = impl_->bodies[j.bodyB()];
+    const Vec2 rA = rotate(a.xf.q, j.localAnchorA - a.localCenter);
+    const Vec2 rB = rotate(b.xf.q, j.localAnchorB - b.localCenter);
+    const Vec2 d = (b.center + rB) - (a.center + rA);
+    const Vec2 axis = rotate(a.xf.q, localAxisOf(j));
+    // The axis turns with A: d . (wA x axis), plus the anchors' relative velocity along it.
+    const Vec2 vA = a.linearVelocity + cross(a.angularVelocity, rA);
+    const Vec2 vB = b.linearVelocity + cross(b.angularVelocity, rB);
+    return dot(d, cross(a.angularVelocity, axis)) + dot(axis, vB - vA);
+}
+
+Vec2 World::prismaticJointAxis(JointId id) const {
+    const Joint& j = impl_->joints[impl_->jointIndexOfType("World::prismaticJointAxis", id,
+                                                           JointType::Prismatic)];
+    return rotate(impl_->bodies[j.bodyA()].xf.q, std::get<PrismaticJoint>(j.data).localAxisA);
+}
+
+TranslationLimit World::prismaticJointLimit(JointId id) const {
+    const PrismaticJoint& p =
+        impl_->jointData<PrismaticJoint>("World::prismaticJointLimit", id, JointType::Prismatic);
+    return {p.enableLimit, p.lowerTranslation, p.upperTranslation};
+}
+void World::setPrismaticJointLimit(JointId id, const TranslationLimit& limit) {
+    const char* call = "World::setPrismaticJointLimit";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
+    checkTranslationLimit(call, "limit", limit);
+    Joint& j = impl_->joints[index];
+    setLimit(std::get<PrismaticJoint>(j.data), limit);
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+LinearMotor World::prismaticJointMotor(JointId id) const {
+    const PrismaticJoint& p =
+        impl_->jointData<PrismaticJoint>("World::prismaticJointMotor", id, JointType::Prismatic);
+    return {p.enableMotor, p.motorSpeed, p.maxMotorForce};
+}
+void World::setPrismaticJointMotor(JointId id, const LinearMotor& motor) {
+    const char* call = "World::setPrismaticJointMotor";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
+    checkLinearMotor(call, "motor", motor);
+    Joint& j = impl_->joints[index];
+    setMotor(std::get<PrismaticJoint>(j.data), motor);
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+JointSpring World::prismaticJointSpring(JointId id) const {
+    const PrismaticJoint& p =
+        impl_->jointData<PrismaticJoint>("World::prismaticJointSpring", id, JointType::Prismatic);
+    return {p.enableSpring, p.hertz, p.dampingRatio};
+}
+void World::setPrismaticJointSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setPrismaticJointSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    setSpring(std::get<PrismaticJoint>(j.data), spring);
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+float World::prismaticJointMotorForce(JointId id) const {
+    const char* call = "World::prismaticJointMotorForce";
+    const Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Prismatic)];
+    return j.impulseInvDt * std::get<PrismaticJoint>(j.data).motorImpulse;
+}
+
+// --- weld joints -----------------------------------------------------------------------------
+
+JointSpring World::weldJointLinearSpring(JointId id) const {
+    return impl_->jointData<WeldJoint>("World::weldJointLinearSpring", id, JointType::Weld)
+        .linearSpring;
+}
+JointSpring World::weldJointAngularSpring(JointId id) const {
+    return impl_->jointData<WeldJoint>("World::weldJointAngularSpring", id, JointType::Weld)
+        .angularSpring;
+}
+void World::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setWeldJointLinearSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    std::get<WeldJoint>(j.data).linearSpring = spring;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setWeldJointAngularSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    std::get<WeldJoint>(j.data).angularSpring = spring;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+// --- wheel joints ----------------------------------------------------------------------------
+
+JointSpring World::wheelJointSpring(JointId id) const {
+    return impl_->jointData<WheelJoint>("World::wheelJointSpring", id, JointType::Wheel).spring;
+}
+void World::setWheelJointSpring(JointId id, const JointSpring& spring) {
+    const char* call = "World::setWheelJointSpring";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
+    checkSpring(call, "spring", spring);
+    Joint& j = impl_->joints[index];
+    std::get<WheelJoint>(j.data).spring = spring;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+TranslationLimit World::wheelJointLimit(JointId id) const {
+    const WheelJoint& w =
+        impl_->jointData<WheelJoint>("World::wheelJointLimit", id, JointType::Wheel);
+    return {w.enableLimit, w.lowerTranslation, w.upperTranslation};
+}
+void World::setWheelJointLimit(JointId id, const TranslationLimit& limit) {
+    const char* call = "World::setWheelJointLimit";
+    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
+    checkTranslationLimit(call, "limit", limit);
+    Joint& j = impl_->joints[index];
+    setLimit(std::get<WheelJoint>(j.data), limit);
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
+}  // namespace pivot
