@@ -2,9 +2,10 @@
 //
 // A joint constrains two bodies: a revolute joint pins a point of body A to a point of body B,
 // C = (cB + rB) - (cA + rA) = 0, where c is a body's centre of mass and r the anchor relative to
-// it; a distance joint holds its two anchors a length apart, C = |pB - pA| - length. The velocity
-// solver keeps dC/dt at zero; because it does so only to first order, C drifts, and each
-// joint's PositionSolver says how that drift is removed (see docs/position-correction.md).
+// it; a distance joint holds its two anchors a length apart, C = |pB - pA| - length; each other
+// type's constraint is described at its def. The velocity solver keeps dC/dt at zero; because it
+// does so only to first order, C drifts, and each joint's PositionSolver says how that drift is
+// removed (see docs/position-correction.md).
 #pragma once
 
 #include <cstdint>
@@ -179,8 +180,8 @@ struct PulleyJointDef {
     std::uint64_t userData = 0;
 };
 
-/// Bounds on a prismatic joint's translation (World::jointTranslation), m, lower <= upper. Both
-/// are corrected by the joint's PositionSolver, without slop.
+/// Bounds on a prismatic or wheel joint's translation (World::jointTranslation), m,
+/// lower <= upper. Both are corrected by the joint's PositionSolver, without slop.
 struct TranslationLimit {
     bool enabled = false;
     float lower = 0.0f;
