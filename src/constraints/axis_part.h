@@ -118,6 +118,18 @@ struct AxisLimits {
     float lowerTerm = 0.0f;  // velocity targets added to Cdot (speculative, or Baumgarte's)
     float upperTerm = 0.0f;
 
+    /// Loads a joint's limit settings and stored impulses (zero while disabled) for a step
+    /// whose rows start at coordinate x, the step 1 / invH long.
+    void load(bool on, float lo, float hi, float storedLower, float storedUpper, float x,
+              float invH) {
+        enabled = on;
+        lower = lo;
+        upper = hi;
+        lowerImpulse = on ? storedLower : 0.0f;
+        upperImpulse = on ? storedUpper : 0.0f;
+        setTerms(x, invH);
+    }
+
     /// The impulse the limits apply along the axis, to B.
     float impulse() const { return lowerImpulse - upperImpulse; }
     bool equal() const { return upper - lower < 2.0f * kLinearSlop; }

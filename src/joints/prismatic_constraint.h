@@ -104,12 +104,8 @@ struct PrismaticConstraint {
         referenceAngle = joint.referenceAngle;
         measure(poses);
         impulse = p.impulse;
-        limits.enabled = p.enableLimit;
-        limits.lower = p.lowerTranslation;
-        limits.upper = p.upperTranslation;
-        limits.lowerImpulse = p.enableLimit ? p.lowerImpulse : 0.0f;
-        limits.upperImpulse = p.enableLimit ? p.upperImpulse : 0.0f;
-        limits.setTerms(translation, step.invDt);
+        limits.load(p.enableLimit, p.lowerTranslation, p.upperTranslation, p.lowerImpulse,
+                    p.upperImpulse, translation, step.invDt);
         motorEnabled = p.enableMotor;
         motorSpeed = p.motorSpeed;
         maxMotorImpulse = step.dt * p.maxMotorForce;

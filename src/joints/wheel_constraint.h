@@ -74,12 +74,8 @@ struct WheelConstraint {
         spring = w.spring.enabled;
         springImpulse = spring ? w.springImpulse : 0.0f;
         if (spring) springFactors = SoftFactors::of(w.spring, step.dt);
-        limits.enabled = w.enableLimit;
-        limits.lower = w.lowerTranslation;
-        limits.upper = w.upperTranslation;
-        limits.lowerImpulse = w.enableLimit ? w.lowerImpulse : 0.0f;
-        limits.upperImpulse = w.enableLimit ? w.upperImpulse : 0.0f;
-        limits.setTerms(translation, step.invDt);
+        limits.load(w.enableLimit, w.lowerTranslation, w.upperTranslation, w.lowerImpulse,
+                    w.upperImpulse, translation, step.invDt);
         motorEnabled = w.enableMotor && !bodies.fixedRotation();
         motorSpeed = w.motorSpeed;
         maxMotorImpulse = step.dt * w.maxMotorTorque;

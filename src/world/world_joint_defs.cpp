@@ -80,6 +80,23 @@ void setAnchors(Joint& joint, const Def& def, const Body& bodyA, const Body& bod
         joint.referenceAngle = def.referenceAngle;
     }
 }
+// The defs with an axis (prismatic, wheel): in body A's frame, or in the world's at creation; a
+// def that sets both is refused. Returns the axis normalised.
+template <typename Def>
+Vec2 checkAxis(const char* call, const Def& def) {
+    const Vec2 unit = checkedUnitAxis(call, def.worldAxis ? "def.worldAxis" : "def.localAxisA",
+                                      def.worldAxis.value_or(def.localAxisA));
+    if (def.worldAxis && def.localAxisA != Vec2{1.0f, 0.0f}) {
+        fail(call, "def.worldAxis " + formatVec2(*def.worldAxis) +
+                       " is set together with def.localAxisA " + formatVec2(def.localAxisA) +
+                       "; the world axis would replace it: set one or the other");
+    }
+    return unit;
+}
+template <typename Def>
+Vec2 axisInBodyA(const Def& def, Vec2 unitAxis, const Body& bodyA) {
+    return def.worldAxis ? inverseRotate(bodyA.xf.q, unitAxis) : unitAxis;
+}
 }  // namespace
 
 JointId World::createJoint(const RevoluteJointDef& def) {
@@ -178,16 +195,9 @@ JointId World::createJoint(const PrismaticJointDef& def) {
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
     requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
     requireMagnitude(call, "def.referenceAngle", def.referenceAngle);
-    const Vec2 givenAxis = def.worldAxis.value_or(def.localAxisA);
-    const Vec2 unitAxis =
-        checkedUnitAxis(call, def.worldAxis ? "def.worldAxis" : "def.localAxisA", givenAxis);
+    const Vec2 unitAxis = checkAxis(call, def);
     const PositionSolver solver = checkSolverOf(call, def, w);
     checkWorldAnchor(call, def);
-    if (def.worldAxis && def.localAxisA != Vec2{1.0f, 0.0f}) {
-        fail(call, "def.worldAxis " + formatVec2(*def.worldAxis) +
-                       " is set together with def.localAxisA " + formatVec2(def.localAxisA) +
-                       "; the world axis would replace it: set one or the other");
-    }
     checkBiasAndLetGo(call, def);
     checkTranslationLimit(call, "def.limit", def.limit);
     checkLinearMotor(call, "def.motor", def.motor);
@@ -199,7 +209,7 @@ JointId World::createJoint(const PrismaticJointDef& def) {
     const Body& bodyB = w.bodies[b];
     setAnchors(joint, def, bodyA, bodyB);
     PrismaticJoint& prismatic = joint.data.emplace<PrismaticJoint>();
-    prismatic.localAxisA = def.worldAxis ? inverseRotate(bodyA.xf.q, unitAxis) : unitAxis;
+    prismatic.localAxisA = axisInBodyA(def, unitAxis, bodyA);
     setLimit(prismatic, def.limit);
     setMotor(prismatic, def.motor);
     setSpring(prismatic, def.spring);
@@ -234,8 +244,7 @@ JointId World::createJoint(const WheelJointDef& def) {
     const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
     requireCoordinate(call, "def.localAnchorB", def.localAnchorB);
-    const Vec2 unitAxis = checkedUnitAxis(call, def.worldAxis ? "def.worldAxis" : "def.localAxisA",
-                                          def.worldAxis.value_or(def.localAxisA));
+    const Vec2 unitAxis = checkAxis(call, def);
     const PositionSolver solver = checkSolverOf(call, def, w);
     if (def.worldAnchor) {
         requireCoordinate(call, "def.worldAnchor", *def.worldAnchor);
@@ -246,11 +255,6 @@ JointId World::createJoint(const WheelJointDef& def) {
                            formatVec2(def.localAnchorB) +
                            "; the world anchor would replace them: set one or the other");
         }
-    }
-    if (def.worldAxis && def.localAxisA != Vec2{1.0f, 0.0f}) {
-        fail(call, "def.worldAxis " + formatVec2(*def.worldAxis) +
-                       " is set together with def.localAxisA " + formatVec2(def.localAxisA) +
-                       "; the world axis would replace it: set one or the other");
     }
     checkBiasAndLetGo(call, def);
     checkSpring(call, "def.spring", def.spring);
@@ -265,7 +269,7 @@ JointId World::createJoint(const WheelJointDef& def) {
     joint.localAnchorB = def.worldAnchor ? inverseTransformPoint(w.bodies[b].xf, *def.worldAnchor)
                                          : def.localAnchorB;
     WheelJoint& wheel = joint.data.emplace<WheelJoint>();
-    wheel.localAxisA = def.worldAxis ? inverseRotate(bodyA.xf.q, unitAxis) : unitAxis;
+    wheel.localAxisA = axisInBodyA(def, unitAxis, bodyA);
     wheel.spring = def.spring;
     setLimit(wheel, def.limit);
     setMotor(wheel, def.motor);
