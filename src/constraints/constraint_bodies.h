@@ -19,8 +19,8 @@ struct ConstraintBodies {
     bool fixedRotation() const { return iA + iB == 0.0f; }
 };
 
-/// The constraint's view of bodies a and b, in solver slots `slots`.
-inline ConstraintBodies constraintBodies(BodyPair slots, const Body& a, const Body& b) {
+/// The constraint's view of bodies a and b, in solver slots slots[0] and slots[1].
+inline ConstraintBodies constraintBodies(const JointSlots& slots, const Body& a, const Body& b) {
     ConstraintBodies bodies;
     bodies.indexA = slots[0];
     bodies.indexB = slots[1];

@@ -24,4 +24,11 @@ struct SolverPose {
 /// The solver slots of a constraint's two bodies within its island.
 using BodyPair = std::array<std::int32_t, 2>;
 
+/// The solver slots of the bodies a joint acts on within its island: A and B, then C and D for
+/// a joint that acts on four (a gear, which also moves the bodies its two joints hang from);
+/// kNoSlot for a body a joint does not have.
+constexpr int kMaxJointBodies = 4;
+constexpr std::int32_t kNoSlot = -1;
+using JointSlots = std::array<std::int32_t, kMaxJointBodies>;
+
 }  // namespace pivot

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "constraints/solver_body.h"
 #include "core/buffer.h"
 #include "islands/team.h"
 
@@ -21,11 +22,11 @@ class GraphColoring {
 public:
     static constexpr int kMaxColors = 32;
 
-    /// Colours items[0..count) (constraint numbers; pairs[item] are its two solver bodies,
-    /// fixed[body] != 0 for bodies that never move). Appends the items to `order`, colour by
-    /// colour and in their original order within a colour, and one batch per non-empty colour
-    /// to `batches`, numbered from `base` (the position in the constraint array of the first
-    /// item appended). Allocates only while its scratch grows.
+    /// Colours items[0..count) (constraint numbers; pairs[item] are its solver bodies, two or
+    /// more, kNoSlot for none; fixed[body] != 0 for bodies that never move). Appends the items to
+    /// `order`, colour by colour and in their original order within a colour, and one batch per
+    /// non-empty colour to `batches`, numbered from `base` (the position in the constraint array of
+    /// the first item appended). Allocates only while its scratch grows.
     template <typename Pairs>
     void color(const std::int32_t* items, int count, const Pairs& pairs, const std::uint8_t* fixed,
                int bodyCount, std::vector<std::int32_t>& order, std::vector<Batch>& batches,
@@ -49,17 +50,19 @@ void GraphColoring::color(const std::int32_t* items, int count, const Pairs& pai
     std::int32_t sizes[kMaxColors + 1] = {};
 
     for (int i = 0; i < count; ++i) {
-        const auto& pair = pairs[items[i]];
-        const bool movableA = fixed[pair[0]] == 0;
-        const bool movableB = fixed[pair[1]] == 0;
-        std::uint64_t used = (movableA ? masks_[pair[0]] : 0) | (movableB ? masks_[pair[1]] : 0);
+        const auto movable = [&](std::int32_t body) { return body != kNoSlot && !fixed[body]; };
+        std::uint64_t used = 0;
+        for (const std::int32_t body : pairs[items[i]]) {
+            if (movable(body)) used |= masks_[body];
+        }
         std::uint64_t free = ~used & kAllColors;
         int color = kMaxColors;  // overflow
         if (free != 0) {
             color = __builtin_ctzll(free);
             const std::uint64_t bit = std::uint64_t{1} << color;
-            if (movableA) masks_[pair[0]] |= bit;
-            if (movableB) masks_[pair[1]] |= bit;
+            for (const std::int32_t body : pairs[items[i]]) {
+                if (movable(body)) masks_[body] |= bit;
+            }
         }
         colorOf_[i] = static_cast<std::uint8_t>(color);
         ++sizes[color];
@@ -79,8 +82,9 @@ void GraphColoring::color(const std::int32_t* items, int count, const Pairs& pai
 
     // Leave the masks zeroed for the next call.
     for (int i = 0; i < count; ++i) {
-        masks_[pairs[items[i]][0]] = 0;
-        masks_[pairs[items[i]][1]] = 0;
+        for (const std::int32_t body : pairs[items[i]]) {
+            if (body != kNoSlot) masks_[body] = 0;
+        }
     }
 }
 

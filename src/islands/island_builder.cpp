@@ -85,7 +85,8 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet
             jointVisited_[jointIndex] = 1;
             std::int32_t other = reach(joint.edges[1 - side].body, storage, set, range.bodyBegin);
             set.joints.push_back(jointIndex);
-            set.jointBodies.push_back(side == 0 ? BodyPair{self, other} : BodyPair{other, self});
+            set.jointBodies.push_back(side == 0 ? JointSlots{self, other, kNoSlot, kNoSlot}
+                                                : JointSlots{other, self, kNoSlot, kNoSlot});
         }
     }
     range.bodyEnd = static_cast<std::int32_t>(set.bodies.size());

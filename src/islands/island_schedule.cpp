@@ -81,10 +81,10 @@ void IslandScheduler::planContacts(const IslandView& island, IslandSchedule& sch
 
 void IslandScheduler::giveFixedBodiesPrivateSlots(const IslandView& island,
                                                   IslandSchedule& schedule) {
-    const auto privatize = [&](std::vector<BodyPair>& pairs) {
-        for (BodyPair& pair : pairs) {
+    const auto privatize = [&](auto& pairs) {
+        for (auto& pair : pairs) {
             for (std::int32_t& index : pair) {
-                if (index < island.bodyCount && fixed_[index]) {
+                if (index != kNoSlot && index < island.bodyCount && fixed_[index]) {
                     schedule.fixedCopies.push_back(index);
                     index = island.bodyCount +
                             static_cast<std::int32_t>(schedule.fixedCopies.size()) - 1;

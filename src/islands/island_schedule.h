@@ -45,7 +45,7 @@ inline bool isColored(const IslandView& island) {
 struct IslandSchedule {
     bool colored = false;
     std::vector<std::int32_t> jointIds;  // joint pool indices, in solving order
-    std::vector<BodyPair> jointPairs;    // their solver bodies
+    std::vector<JointSlots> jointPairs;  // their solver bodies
     std::array<std::int32_t, kJointGroupCount + 1> groupStart{};
     std::array<std::vector<Batch>, kJointGroupCount> jointBatches;  // within each group
     std::vector<std::int32_t> contactIds;  // contact pool indices, in solving order

@@ -19,7 +19,7 @@ struct IslandView {
     const BodyPair* contactBodies;
     int contactCount;
     const std::int32_t* joints;
-    const BodyPair* jointBodies;
+    const JointSlots* jointBodies;
     int jointCount;
     const std::int32_t* mouseJoints;
     const std::int32_t* mouseBodies;
@@ -39,8 +39,8 @@ struct IslandSet {
     std::vector<std::int32_t> bodies;    // body pool indices; solver index = position - bodyBegin
     std::vector<std::int32_t> contacts;  // touching contacts, in the order they were reached
     std::vector<BodyPair> contactBodies;
-    std::vector<std::int32_t> joints;  // revolute joints, in the order they were reached
-    std::vector<BodyPair> jointBodies;
+    std::vector<std::int32_t> joints;  // joints, in the order they were reached
+    std::vector<JointSlots> jointBodies;
     std::vector<std::int32_t> mouseJoints;
     std::vector<std::int32_t> mouseBodies;  // solver index of each mouse joint's body
     std::vector<Range> ranges;

@@ -13,6 +13,7 @@
 #include "constraints/length_part.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "core/slot_pool.h"
 #include "joints/distance_joint.h"
 #include "joints/joint.h"
 #include "model/body.h"
@@ -46,8 +47,10 @@ struct DistanceConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
     /// stored. Returns the joint's separation squared, m^2 (DistanceJoint::separation).
-    float prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
-                  BodyPair slots, const SolverPose* poses, const StepContext& step) {
+    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+                  const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
+        const Body& a = pool[joint.bodyA()];
+        const Body& b = pool[joint.bodyB()];
         const DistanceJoint& d = std::get<DistanceJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();

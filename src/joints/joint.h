@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <variant>
 
+#include "core/slot_pool.h"
 #include "joints/distance_joint.h"
 #include "joints/prismatic_joint.h"
 #include "joints/pulley_joint.h"
@@ -17,6 +18,7 @@
 #include "joints/velocity_joints.h"
 #include "joints/weld_joint.h"
 #include "joints/wheel_joint.h"
+#include "model/body.h"
 #include "model/body_edge.h"
 #include "pivot/joint.h"
 #include "pivot/math.h"
@@ -65,8 +67,10 @@ struct Joint {
     float anchorDistance(const Transform& xfA, const Transform& xfB) const {
         return distance(transformPoint(xfA, localAnchorA), transformPoint(xfB, localAnchorB));
     }
-    /// m, how far the joint is from what it allows with the bodies at these transforms.
-    float separation(const Transform& xfA, const Transform& xfB) const {
+    /// m, how far the joint is from what it allows with its bodies where they are.
+    float separation(const SlotPool<Body>& bodies) const {
+        const Transform& xfA = bodies[bodyA()].xf;
+        const Transform& xfB = bodies[bodyB()].xf;
         const Vec2 pA = transformPoint(xfA, localAnchorA);
         const Vec2 pB = transformPoint(xfB, localAnchorB);
         return std::visit([&](const auto& data) { return data.separation(xfA.q, pA, pB); }, data);

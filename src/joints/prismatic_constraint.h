@@ -35,6 +35,7 @@
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "core/mat33.h"
+#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/prismatic_joint.h"
 #include "model/body.h"
@@ -91,8 +92,10 @@ struct PrismaticConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
     /// stored. Returns the joint's separation squared, m^2 (PrismaticJoint::separation).
-    float prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
-                  BodyPair slots, const SolverPose* poses, const StepContext& step) {
+    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+                  const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
+        const Body& a = pool[joint.bodyA()];
+        const Body& b = pool[joint.bodyB()];
         const PrismaticJoint& p = std::get<PrismaticJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();

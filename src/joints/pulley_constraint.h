@@ -9,6 +9,7 @@
 #include "constraints/pulley_part.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/pulley_joint.h"
 #include "model/body.h"
@@ -27,8 +28,10 @@ struct PulleyConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the stored impulse.
     /// Returns the joint's separation squared, C^2.
-    float prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
-                  BodyPair slots, const SolverPose* poses, const StepContext&) {
+    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+                  const JointSlots& slots, const SolverPose* poses, const StepContext&) {
+        const Body& a = pool[joint.bodyA()];
+        const Body& b = pool[joint.bodyB()];
         const PulleyJoint& p = std::get<PulleyJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();

@@ -22,6 +22,7 @@
 #include "constraints/point_part.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/revolute_joint.h"
 #include "model/body.h"
@@ -39,8 +40,10 @@ struct RevoluteConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
     /// stored (unscaled: see startImpulses). Returns the anchors' separation squared, m^2.
-    float prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
-                  BodyPair slots, const SolverPose* poses, const StepContext& step) {
+    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+                  const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
+        const Body& a = pool[joint.bodyA()];
+        const Body& b = pool[joint.bodyB()];
         const RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();

@@ -20,6 +20,7 @@
 #include "constraints/point_part.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/velocity_joints.h"
 #include "model/body.h"
@@ -132,7 +133,7 @@ struct ClampedVelocityRows {
 
 protected:
     void prepareBodies(std::int32_t index, const Joint& joint, const Body& a, const Body& b,
-                       BodyPair slots) {
+                       const JointSlots& slots) {
         jointIndex = index;
         biasFactor = joint.biasFactor();
         bodies = constraintBodies(slots, a, b);
@@ -142,8 +143,10 @@ protected:
 struct FrictionConstraint : ClampedVelocityRows {
     using Storage = FrictionJoint;
 
-    float prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
-                  BodyPair slots, const SolverPose* poses, const StepContext& step) {
+    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+                  const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
+        const Body& a = pool[joint.bodyA()];
+        const Body& b = pool[joint.bodyB()];
         const FrictionJoint& f = std::get<FrictionJoint>(joint.data);
         prepareBodies(index, joint, a, b, slots);
         rA = rotate(Rot(poses[bodies.indexA].a), joint.localAnchorA - a.localCenter);
@@ -169,8 +172,10 @@ struct FrictionConstraint : ClampedVelocityRows {
 struct MotorConstraint : ClampedVelocityRows {
     using Storage = MotorJoint;
 
-    float prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
-                  BodyPair slots, const SolverPose* poses, const StepContext& step) {
+    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+                  const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
+        const Body& a = pool[joint.bodyA()];
+        const Body& b = pool[joint.bodyB()];
         const MotorJoint& m = std::get<MotorJoint>(joint.data);
         prepareBodies(index, joint, a, b, slots);
         const SolverPose& A = poses[bodies.indexA];

@@ -28,6 +28,7 @@
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "core/mat33.h"
+#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/weld_joint.h"
 #include "model/body.h"
@@ -67,8 +68,10 @@ struct WeldConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulse as
     /// stored. Returns the joint's separation squared, m^2 (WeldJoint::separation).
-    float prepare(const Joint& joint, std::int32_t index, const Body& a, const Body& b,
-                  BodyPair slots, const SolverPose* poses, const StepContext& step) {
+    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+                  const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
+        const Body& a = pool[joint.bodyA()];
+        const Body& b = pool[joint.bodyB()];
         const WeldJoint& w = std::get<WeldJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();

@@ -65,9 +65,8 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
             auto& joint = joints[jointIndex];
             auto& c = group[k];
             c = {};
-            const float separationSquared =
-                c.prepare(joint, jointIndex, bodies[joint.bodyA()], bodies[joint.bodyB()],
-                          schedule.jointPairs[at], work.positions.data(), step);
+            const float separationSquared = c.prepare(
+                joint, jointIndex, bodies, schedule.jointPairs[at], work.positions.data(), step);
             if (beyondLetGoSeparation(joint, separationSquared, step)) {
                 joint.letGoFor(JointLetGoReason::Separation, std::sqrt(separationSquared));
                 ++report.letGoJoints;
@@ -95,8 +94,7 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
             c.storeImpulses(joint, invDt);
             if (!joint.hasFiniteReactions()) {
                 // The bodies are still at their start-of-step poses (written back later).
-                const float separation =
-                    joint.separation(bodies[joint.bodyA()].xf, bodies[joint.bodyB()].xf);
+                const float separation = joint.separation(bodies);
                 joint.letGoFor(JointLetGoReason::NonFinite, separation);
                 ++report.letGoJoints;
             }

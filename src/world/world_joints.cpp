@@ -102,7 +102,7 @@ Vec2 World::jointAnchorB(JointId id) const {
 }
 float World::jointSeparation(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndex("World::jointSeparation", id)];
-    return j.separation(impl_->bodies[j.bodyA()].xf, impl_->bodies[j.bodyB()].xf);
+    return j.separation(impl_->bodies);
 }
 float World::jointLength(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndex("World::jointLength", id)];
