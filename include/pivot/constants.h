@@ -79,6 +79,9 @@ constexpr float kMinPulleyRatio = 0.01f;
 /// the rounding of the positions), and is not held.
 constexpr float kMinPulleyLength = 10.0f * kLinearSlop;
 
+/// A gear joint's |ratio| lies in [kMinGearRatio, 1 / kMinGearRatio], for the same reason.
+constexpr float kMinGearRatio = 0.01f;
+
 /// Step defaults: iterations of the velocity and position phases.
 constexpr int kDefaultVelocityIterations = 8;
 constexpr int kDefaultPositionIterations = 3;

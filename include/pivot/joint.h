@@ -28,10 +28,11 @@ enum class JointType : std::uint8_t {
     Prismatic,
     Weld,
     Wheel,
+    Gear,
 };
 
 /// The type's name: "revolute", "distance", "pulley", "friction", "motor", "prismatic", "weld",
-/// "wheel"; "invalid" for a value out of range.
+/// "wheel", "gear"; "invalid" for a value out of range.
 const char* jointTypeName(JointType type);
 
 /// Bounds on the joint angle (angleB - angleA - referenceAngle), rad, lower <= upper. The limit
@@ -322,6 +323,35 @@ struct WheelJointDef {
         def.worldAxis = axis;
         return def;
     }
+};
+
+/// Everything needed to create a gear joint: it couples two revolute or prismatic joints, each
+/// between a base body (its body A) and a moving body (its body B), so that
+///   coordinate1 + ratio * coordinate2 = constant,
+/// where a revolute joint's coordinate is its angle (World::jointAngle, rad) and a prismatic
+/// joint's its translation (World::jointTranslation, m); the constant is the sum when the gear
+/// is created. Two wheels that mesh, a rack and pinion, a lever turning a slider. A scalar
+/// constraint on four bodies (both joints' bodies: the gear pushes the bases back as well),
+/// corrected by the gear's own PositionSolver; the two joints keep theirs.
+///
+/// The gear's body A is joint1's body B and its body B is joint2's body B; they must differ.
+/// While a gear is built on a joint, World::destroyJoint refuses that joint (destroy the gear
+/// first); World::destroyBody destroys, with a body's joints, the gears built on them.
+struct GearJointDef {
+    JointId joint1;  ///< a revolute or prismatic joint
+    JointId joint2;  ///< another one
+    /// |ratio| in [kMinGearRatio, 1 / kMinGearRatio]. Joint1 moving by d moves joint2 by
+    /// -d / ratio: two meshing wheels of radii r1 and r2 (which turn opposite ways) have
+    /// ratio r2 / r1; a pinion of radius r on joint1 driving a rack on joint2 has ratio
+    /// 1 / r or -1 / r (rad/m), the sign depending on the rack's axis.
+    float ratio = 1.0f;
+    std::optional<PositionSolver> positionSolver;
+    std::optional<float> biasFactor;
+    /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation), in
+    /// joint1's units: rad for a revolute joint, m for a prismatic one.
+    std::optional<float> letGoSeparation;
+    bool collideConnected = false;
+    std::uint64_t userData = 0;
 };
 
 /// Everything needed to create a friction joint: top-down friction between two bodies (a box

@@ -135,8 +135,9 @@ public:
 
     // --- bodies -----------------------------------------------------------------------------
     BodyId createBody(const BodyDef& def);
-    /// Destroys the body, its shapes, its contacts, every joint attached to it and its mouse
-    /// joints, and wakes every body it touched or was jointed to.
+    /// Destroys the body, its shapes, its contacts, every joint attached to it (and the gear
+    /// joints built on those) and its mouse joints, and wakes every body it touched or was
+    /// jointed to.
     void destroyBody(BodyId id);
     bool isValid(BodyId id) const;
     int bodyCount() const;
@@ -266,6 +267,8 @@ public:
     JointId createJoint(const PrismaticJointDef& def);
     JointId createJoint(const WeldJointDef& def);
     JointId createJoint(const WheelJointDef& def);
+    JointId createJoint(const GearJointDef& def);
+    /// Refuses a joint that a gear joint is built on: destroy the gear first.
     void destroyJoint(JointId id);
     bool isValid(JointId id) const;
     int jointCount() const;
@@ -283,7 +286,8 @@ public:
     /// for a pulley joint |lengthA + ratio lengthB - the same at creation|, for a weld joint
     /// |anchorB - anchorA| (0 while its point is soft), for a prismatic or wheel joint
     /// how far anchor B is off the axis line, combined (root of the sum of squares) with how far
-    /// the translation is beyond its limit.
+    /// the translation is beyond its limit, for a gear joint |coordinate1 + ratio coordinate2 -
+    /// constant| in its joint1's units (rad or m: GearJointDef).
     float jointSeparation(JointId id) const;
     /// m, |anchorB - anchorA|.
     float jointLength(JointId id) const;
@@ -315,7 +319,7 @@ public:
     Vec2 jointReactionForce(JointId id) const;
     /// N m, the torque the joint applied to body B in that step (revolute: motor plus limits;
     /// friction and motor: their angular row; prismatic and weld: what holds their angle;
-    /// wheel: its motor; distance and pulley joints apply none).
+    /// wheel: its motor; gear: its one row's; distance and pulley joints apply none).
     float jointReactionTorque(JointId id) const;
 
     // Revolute joints (the calls from here to setJointMotor refuse other types, but for the
@@ -371,6 +375,15 @@ public:
     void setWheelJointSpring(JointId id, const JointSpring& spring);
     TranslationLimit wheelJointLimit(JointId id) const;
     void setWheelJointLimit(JointId id, const TranslationLimit& limit);
+
+    // Gear joints (these calls refuse other types).
+    JointId gearJointJoint1(JointId id) const;
+    JointId gearJointJoint2(JointId id) const;
+    float gearJointRatio(JointId id) const;
+    /// |ratio| in [kMinGearRatio, 1 / kMinGearRatio]. The gear keeps its present error: the
+    /// constant is chosen again so that C is what it was, and nothing jumps. Wakes the gear's
+    /// bodies.
+    void setGearJointRatio(JointId id, float ratio);
 
     // Weld joints (these calls refuse other types). Each setter wakes the joint's bodies; an
     // enabled spring makes that half soft from the next step.

@@ -1,6 +1,7 @@
 #include "islands/island_builder.h"
 
 #include <algorithm>
+#include <array>
 
 #include "core/buffer.h"
 
@@ -84,9 +85,16 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet
             if (jointVisited_[jointIndex] || joint.letGo) continue;
             jointVisited_[jointIndex] = 1;
             std::int32_t other = reach(joint.edges[1 - side].body, storage, set, range.bodyBegin);
+            JointSlots slots = side == 0 ? JointSlots{self, other, kNoSlot, kNoSlot}
+                                         : JointSlots{other, self, kNoSlot, kNoSlot};
+            // A gear's C and D are in its island even when the joints that hang its bodies from
+            // them are let go.
+            const std::array<std::int32_t, 2> extra = joint.extraBodies();
+            for (int k = 0; k < 2; ++k) {
+                if (extra[k] != -1) slots[2 + k] = reach(extra[k], storage, set, range.bodyBegin);
+            }
             set.joints.push_back(jointIndex);
-            set.jointBodies.push_back(side == 0 ? JointSlots{self, other, kNoSlot, kNoSlot}
-                                                : JointSlots{other, self, kNoSlot, kNoSlot});
+            set.jointBodies.push_back(slots);
         }
     }
     range.bodyEnd = static_cast<std::int32_t>(set.bodies.size());

@@ -1,17 +1,21 @@
 // Joint storage: what persists between steps for every joint, whatever its type. The fields all
 // types share are here; each type's own settings and accumulated impulses are its alternative of
 // `data` (revolute_joint.h, distance_joint.h, pulley_joint.h, velocity_joints.h,
-// prismatic_joint.h, weld_joint.h, wheel_joint.h), in the order of joints/joint_types.h
+// prismatic_joint.h, weld_joint.h, wheel_joint.h, gear_joint.h), in the order of
+// joints/joint_types.h
 // and of the public JointType. The per-step solver state lives in each type's constraint, built
 // afresh for each island each step.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <variant>
 
 #include "core/slot_pool.h"
 #include "joints/distance_joint.h"
+#include "joints/gear_joint.h"
 #include "joints/prismatic_joint.h"
 #include "joints/pulley_joint.h"
 #include "joints/revolute_joint.h"
@@ -26,10 +30,12 @@
 namespace pivot {
 
 using JointData = std::variant<RevoluteJoint, DistanceJoint, PulleyJoint, FrictionJoint, MotorJoint,
-                               PrismaticJoint, WeldJoint, WheelJoint>;
+                               PrismaticJoint, WeldJoint, WheelJoint, GearJoint>;
 
 struct Joint {
-    BodyEdge edges[2];  // edges[0].body is body A, edges[1].body is body B
+    // edges[0].body is body A, edges[1].body is body B. A gear also acts on two more bodies
+    // (extraBodies), which do not list it: it is reached through A and B.
+    BodyEdge edges[2];
     Vec2 localAnchorA;  // origin-relative, in body A's frame
     Vec2 localAnchorB;
     float referenceAngle = 0.0f;  // rad, angleB - angleA when the joint angle is zero
@@ -47,9 +53,18 @@ struct Joint {
     float letGoAt = 0.0f;           // m, the separation then
     bool hasLetGoOverride = false;  // letGoOverride replaces WorldDef::jointLetGoSeparation
     float letGoOverride = 0.0f;     // m; 0: never
+    std::int32_t gearCount = 0;     // gear joints built on this one (destroyed before it)
 
     std::int32_t bodyA() const { return edges[0].body; }
     std::int32_t bodyB() const { return edges[1].body; }
+    /// The bodies the joint acts on besides A and B, -1 for none: a gear's C and D (the bodies
+    /// its two joints hang from).
+    std::array<std::int32_t, 2> extraBodies() const {
+        if (const auto* gear = std::get_if<GearJoint>(&data)) {
+            return {gear->side1.base, gear->side2.base};
+        }
+        return {-1, -1};
+    }
     /// The position in joints/joint_types.h's list.
     int typeIndex() const { return static_cast<int>(data.index()); }
     float biasFactor() const { return hasBiasOverride ? biasOverride : defaultBiasFactor(solver); }
@@ -67,13 +82,22 @@ struct Joint {
     float anchorDistance(const Transform& xfA, const Transform& xfB) const {
         return distance(transformPoint(xfA, localAnchorA), transformPoint(xfB, localAnchorB));
     }
-    /// m, how far the joint is from what it allows with its bodies where they are.
+    /// m (a gear's: in its joint1's units), how far the joint is from what it allows with its
+    /// bodies where they are.
     float separation(const SlotPool<Body>& bodies) const {
-        const Transform& xfA = bodies[bodyA()].xf;
-        const Transform& xfB = bodies[bodyB()].xf;
-        const Vec2 pA = transformPoint(xfA, localAnchorA);
-        const Vec2 pB = transformPoint(xfB, localAnchorB);
-        return std::visit([&](const auto& data) { return data.separation(xfA.q, pA, pB); }, data);
+        const Body& a = bodies[bodyA()];
+        const Body& b = bodies[bodyB()];
+        const Vec2 pA = transformPoint(a.xf, localAnchorA);
+        const Vec2 pB = transformPoint(b.xf, localAnchorB);
+        return std::visit(
+            [&](const auto& d) {
+                if constexpr (std::is_same_v<std::decay_t<decltype(d)>, GearJoint>) {
+                    return std::fabs(d.error(a, b, bodies[d.side1.base], bodies[d.side2.base]));
+                } else {
+                    return d.separation(a.xf.q, pA, pB);
+                }
+            },
+            data);
     }
     /// Whether the stored impulses, and the forces and torques they stand for (impulse / dt),
     /// are all finite: what the reaction queries report must be.

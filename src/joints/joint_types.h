@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "joints/distance_constraint.h"
+#include "joints/gear_constraint.h"
 #include "joints/joint.h"
 #include "joints/prismatic_constraint.h"
 #include "joints/pulley_constraint.h"
@@ -39,9 +40,9 @@ struct JointTypeList {
     }
 };
 
-using JointConstraintTypes =
-    JointTypeList<RevoluteConstraint, DistanceConstraint, PulleyConstraint, FrictionConstraint,
-                  MotorConstraint, PrismaticConstraint, WeldConstraint, WheelConstraint>;
+using JointConstraintTypes = JointTypeList<RevoluteConstraint, DistanceConstraint, PulleyConstraint,
+                                           FrictionConstraint, MotorConstraint, PrismaticConstraint,
+                                           WeldConstraint, WheelConstraint, GearConstraint>;
 
 constexpr int kJointTypeCount = JointConstraintTypes::kCount;
 constexpr int kJointGroupCount = kPositionSolverCount * kJointTypeCount;
@@ -79,7 +80,8 @@ static_assert(storedAt<JointType::Revolute, RevoluteJoint>() &&
                   storedAt<JointType::Motor, MotorJoint>() &&
                   storedAt<JointType::Prismatic, PrismaticJoint>() &&
                   storedAt<JointType::Weld, WeldJoint>() &&
-                  storedAt<JointType::Wheel, WheelJoint>(),
+                  storedAt<JointType::Wheel, WheelJoint>() &&
+                  storedAt<JointType::Gear, GearJoint>(),
               "JointData lists the joint types in the order of the public JointType");
 
 }  // namespace pivot

@@ -55,7 +55,7 @@ void World::destroyBody(BodyId id) {
         const Joint& joint = w.joints[edgeOwner(body.jointList)];
         wakeUp(w.bodies[joint.bodyA()]);
         wakeUp(w.bodies[joint.bodyB()]);
-        w.removeJoint(edgeOwner(body.jointList));
+        w.removeJointAndItsGears(edgeOwner(body.jointList));
     }
     while (body.contactList != -1) {
         const Contact& contact = w.contacts[edgeOwner(body.contactList)];

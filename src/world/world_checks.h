@@ -1,6 +1,7 @@
 // Checks shared by the World facade's files.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "core/validation.h"
@@ -71,6 +72,17 @@ inline void checkRestLength(const char* call, const char* field, float length) {
         fail(call, std::string(field) + " must be in [kLinearSlop, kMaxCoordinate] (" +
                        formatFloat(kLinearSlop) + " to " + formatFloat(kMaxCoordinate) +
                        " m) (got " + formatFloat(length) + ")");
+    }
+}
+
+/// A gear ratio: |ratio| in [kMinGearRatio, 1 / kMinGearRatio].
+inline void checkGearRatio(const char* call, const char* field, float ratio) {
+    const float size = std::fabs(ratio);
+    if (!(size >= kMinGearRatio && size <= 1.0f / kMinGearRatio)) {
+        fail(call, std::string(field) +
+                       " must be in [kMinGearRatio, 1 / kMinGearRatio] or that range negated (" +
+                       formatFloat(kMinGearRatio) + " to " + formatFloat(1.0f / kMinGearRatio) +
+                       "), got " + formatFloat(ratio));
     }
 }
 

@@ -110,6 +110,25 @@ void hashJointData(StateHasher& h, const PrismaticJoint& j) {
     h.add(j.springImpulse);
     h.add(j.axis);
 }
+void hashGearSide(StateHasher& h, const GearSide& s) {
+    h.add(s.prismatic);
+    h.add(s.joint);
+    h.add(s.base);
+    h.add(s.localAnchorBase);
+    h.add(s.localAnchorMover);
+    h.add(s.localAxis);
+    h.add(s.referenceAngle);
+}
+void hashJointData(StateHasher& h, const GearJoint& j) {
+    h.add(static_cast<std::int32_t>(JointType::Gear));
+    hashGearSide(h, j.side1);
+    hashGearSide(h, j.side2);
+    h.add(j.ratio);
+    h.add(j.constant);
+    h.add(j.impulse);
+    h.add(j.linearB);
+    h.add(j.angularB);
+}
 }  // namespace
 
 // Everything a public call can change goes in, so that "the hash is unchanged" means "the world
@@ -211,6 +230,9 @@ std::uint64_t World::stateHash() const {
         h.add(j.letGoAt);
         h.add(j.hasLetGoOverride);
         h.add(j.letGoOverride);
+        // Only when a gear is built on the joint, so that worlds without gears keep the hashes
+        // recorded before there were any.
+        if (j.gearCount != 0) h.add(j.gearCount);
     });
     h.add(w.mouseJoints.size());
     w.mouseJoints.forEach([&](std::int32_t index, const MouseJoint& m) {

@@ -88,6 +88,8 @@ struct World::Impl {
     /// Stores a checked joint, links it to its bodies and wakes them.
     JointId addJoint(const Joint& joint);
     void removeJoint(std::int32_t jointIndex);
+    /// Removes the gear joints built on the joint (waking their bodies), then the joint.
+    void removeJointAndItsGears(std::int32_t jointIndex);
     void removeShape(std::int32_t shapeIndex);
     void removeMouseJoint(std::int32_t mouseIndex);
     void wakeAll();

@@ -276,6 +276,61 @@ JointId World::createJoint(const WheelJointDef& def) {
     return w.addJoint(joint);
 }
 
+// One joint a gear couples: a live revolute or prismatic joint of this world.
+GearSide checkGearSide(const char* call, const char* field, JointId id, const World::Impl& w) {
+    const std::int32_t index = checkHandle(call, field, id, w.joints, w.id);
+    const Joint& joint = w.joints[index];
+    const JointType type = joint.type();
+    if (type != JointType::Revolute && type != JointType::Prismatic) {
+        fail(call, std::string(field) + " is a " + jointTypeName(type) +
+                       " joint; a gear couples revolute and prismatic joints");
+    }
+    GearSide side;
+    side.prismatic = type == JointType::Prismatic;
+    side.joint = index;
+    side.base = joint.bodyA();
+    side.localAnchorBase = joint.localAnchorA;
+    side.localAnchorMover = joint.localAnchorB;
+    side.referenceAngle = joint.referenceAngle;
+    if (side.prismatic) side.localAxis = std::get<PrismaticJoint>(joint.data).localAxisA;
+    return side;
+}
+
+JointId World::createJoint(const GearJointDef& def) {
+    const char* call = "World::createJoint";
+    Impl& w = *impl_;
+    const GearSide side1 = checkGearSide(call, "def.joint1", def.joint1, w);
+    const GearSide side2 = checkGearSide(call, "def.joint2", def.joint2, w);
+    if (side1.joint == side2.joint) {
+        fail(call, "def.joint1 and def.joint2 are the same joint; a gear couples two");
+    }
+    const std::int32_t a = w.joints[side1.joint].bodyB();
+    const std::int32_t b = w.joints[side2.joint].bodyB();
+    if (a == b) {
+        fail(call,
+             "def.joint1 and def.joint2 move the same body (their body B); the gear "
+             "would join that body to itself");
+    }
+    checkGearRatio(call, "def.ratio", def.ratio);
+    const PositionSolver solver = checkSolverOf(call, def, w);
+    checkBiasAndLetGo(call, def);
+
+    Joint joint = jointFromDef(def, a, b);
+    setStrategyFields(joint, def, solver);
+    joint.localAnchorA = side1.localAnchorMover;
+    joint.localAnchorB = side2.localAnchorMover;
+    GearJoint& gear = joint.data.emplace<GearJoint>();
+    gear.side1 = side1;
+    gear.side2 = side2;
+    gear.ratio = def.ratio;
+    gear.constant = side1.coordinate(w.bodies[side1.base], w.bodies[a]) +
+                    def.ratio * side2.coordinate(w.bodies[side2.base], w.bodies[b]);
+    const JointId id = w.addJoint(joint);
+    ++w.joints[side1.joint].gearCount;
+    ++w.joints[side2.joint].gearCount;
+    return id;
+}
+
 JointId World::createJoint(const FrictionJointDef& def) {
     const char* call = "World::createJoint";
     Impl& w = *impl_;

@@ -309,6 +309,36 @@ float World::prismaticJointMotorForce(JointId id) const {
     return j.impulseInvDt * std::get<PrismaticJoint>(j.data).motorImpulse;
 }
 
+// --- gear joints -----------------------------------------------------------------------------
+
+JointId World::gearJointJoint1(JointId id) const {
+    const GearJoint& g = impl_->jointData<GearJoint>("World::gearJointJoint1", id, JointType::Gear);
+    return impl_->jointId(g.side1.joint);
+}
+JointId World::gearJointJoint2(JointId id) const {
+    const GearJoint& g = impl_->jointData<GearJoint>("World::gearJointJoint2", id, JointType::Gear);
+    return impl_->jointId(g.side2.joint);
+}
+float World::gearJointRatio(JointId id) const {
+    return impl_->jointData<GearJoint>("World::gearJointRatio", id, JointType::Gear).ratio;
+}
+void World::setGearJointRatio(JointId id, float ratio) {
+    const char* call = "World::setGearJointRatio";
+    Impl& w = *impl_;
+    Joint& joint = w.joints[w.jointIndexOfType(call, id, JointType::Gear)];
+    checkGearRatio(call, "ratio", ratio);
+    GearJoint& g = std::get<GearJoint>(joint.data);
+    const Body& a = w.bodies[joint.bodyA()];
+    const Body& b = w.bodies[joint.bodyB()];
+    const Body& c = w.bodies[g.side1.base];
+    const Body& d = w.bodies[g.side2.base];
+    const float error = g.error(a, b, c, d);
+    g.ratio = ratio;
+    g.constant = (g.side1.coordinate(c, a) + ratio * g.side2.coordinate(d, b)) - error;
+    wakeUp(w.bodies[joint.bodyA()]);
+    wakeUp(w.bodies[joint.bodyB()]);
+}
+
 // --- weld joints -----------------------------------------------------------------------------
 
 JointSpring World::weldJointLinearSpring(JointId id) const {

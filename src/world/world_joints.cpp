@@ -15,6 +15,7 @@ const char* jointTypeName(JointType type) {
         case JointType::Prismatic: return "prismatic";
         case JointType::Weld: return "weld";
         case JointType::Wheel: return "wheel";
+        case JointType::Gear: return "gear";
     }
     return "invalid";
 }
@@ -64,6 +65,10 @@ JointId World::Impl::addJoint(const Joint& joint) {
 
 void World::Impl::removeJoint(std::int32_t index) {
     const Joint& joint = joints[index];
+    if (const auto* gear = std::get_if<GearJoint>(&joint.data)) {
+        --joints[gear->side1.joint].gearCount;
+        --joints[gear->side2.joint].gearCount;
+    }
     std::int32_t a = joint.bodyA(), b = joint.bodyB();
     bool preventedCollision = !joint.collideConnected;
     unlinkEdges(joints, bodies, &Body::jointList, index);
@@ -73,8 +78,29 @@ void World::Impl::removeJoint(std::int32_t index) {
     if (preventedCollision) contactManager.refilterBodyPair(a, b);
 }
 
+void World::Impl::removeJointAndItsGears(std::int32_t index) {
+    if (joints[index].gearCount > 0) {
+        joints.forEach([&](std::int32_t gearIndex, const Joint& gear) {
+            const auto* g = std::get_if<GearJoint>(&gear.data);
+            if (g && (g->side1.joint == index || g->side2.joint == index)) {
+                wakeUp(bodies[gear.bodyA()]);
+                wakeUp(bodies[gear.bodyB()]);
+                removeJoint(gearIndex);
+            }
+        });
+    }
+    removeJoint(index);
+}
+
 void World::destroyJoint(JointId id) {
-    impl_->removeJoint(impl_->jointIndex("World::destroyJoint", id));
+    const char* call = "World::destroyJoint";
+    const std::int32_t index = impl_->jointIndex(call, id);
+    const std::int32_t gears = impl_->joints[index].gearCount;
+    if (gears > 0) {
+        fail(call, "joint " + std::to_string(index) + " has " + std::to_string(gears) +
+                       " gear joint(s) built on it; destroy them first");
+    }
+    impl_->removeJoint(index);
 }
 
 bool World::isValid(JointId id) const {
@@ -165,6 +191,9 @@ Vec2 World::jointReactionForce(JointId id) const {
         return j.impulseInvDt *
                (prismatic->impulse.x * perp + prismatic->axialImpulse() * prismatic->axis);
     }
+    if (const auto* gear = std::get_if<GearJoint>(&j.data)) {
+        return (j.impulseInvDt * gear->impulse) * gear->linearB;
+    }
     return j.impulseInvDt * std::get<RevoluteJoint>(j.data).impulse;
 }
 
@@ -195,6 +224,9 @@ float World::jointReactionTorque(JointId id) const {
     }
     if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) {
         return j.impulseInvDt * wheel->motorImpulse;
+    }
+    if (const auto* gear = std::get_if<GearJoint>(&j.data)) {
+        return (j.impulseInvDt * gear->impulse) * gear->angularB;
     }
     return 0.0f;
 }

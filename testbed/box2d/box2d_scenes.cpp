@@ -205,6 +205,70 @@ Box2dScene buildElevator(bool continuous) {
     return scene;
 }
 
+Box2dScene buildGearTrain(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    const auto dynamicBody = [&](float x, float y, const b2Shape& shape) {
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(x, y);
+        b2Body* body = scene.world->CreateBody(&def);
+        body->CreateFixture(&shape, 1.0f);
+        return body;
+    };
+    b2CircleShape smallDisc;
+    smallDisc.m_radius = 1.0f;
+    b2Body* small = dynamicBody(-3.0f, 8.0f, smallDisc);
+    b2CircleShape bigDisc;
+    bigDisc.m_radius = 2.0f;
+    b2Body* big = dynamicBody(0.0f, 8.0f, bigDisc);
+    b2PolygonShape rackShape;
+    rackShape.SetAsBox(0.2f, 2.0f);
+    b2Body* rack = dynamicBody(2.3f, 8.0f, rackShape);
+    b2BodyDef carrierDef;
+    carrierDef.type = b2_kinematicBody;
+    carrierDef.position.Set(0.0f, 8.0f);
+    carrierDef.linearVelocity.Set(0.5f, 0.0f);
+    b2Body* carrier = scene.world->CreateBody(&carrierDef);
+
+    b2PrismaticJointDef slide;
+    slide.Initialize(carrier, rack, b2Vec2(2.3f, 8.0f), b2Vec2(0.0f, 1.0f));
+    slide.enableLimit = true;
+    slide.lowerTranslation = -1.5f;
+    slide.upperTranslation = 1.5f;
+    b2Joint* shaft = scene.world->CreateJoint(&slide);
+    b2RevoluteJointDef drive;
+    drive.Initialize(carrier, small, b2Vec2(-3.0f, 8.0f));
+    drive.enableMotor = true;
+    drive.motorSpeed = 1.0f;
+    drive.maxMotorTorque = 100.0f;
+    auto* pin1 = static_cast<b2RevoluteJoint*>(scene.world->CreateJoint(&drive));
+    b2RevoluteJointDef idler;
+    idler.Initialize(carrier, big, b2Vec2(0.0f, 8.0f));
+    b2Joint* pin2 = scene.world->CreateJoint(&idler);
+    b2GearJointDef mesh;
+    mesh.bodyA = small;
+    mesh.bodyB = big;
+    mesh.joint1 = pin1;
+    mesh.joint2 = pin2;
+    mesh.ratio = 2.0f;
+    b2Joint* gear1 = scene.world->CreateJoint(&mesh);
+    b2GearJointDef pinion;
+    pinion.bodyA = big;
+    pinion.bodyB = rack;
+    pinion.joint1 = pin2;
+    pinion.joint2 = shaft;
+    pinion.ratio = 0.5f;
+    b2Joint* gear2 = scene.world->CreateJoint(&pinion);
+
+    scene.bodies = {small, big, rack};
+    scene.joints = {shaft, pin1, pin2, gear1, gear2};
+    scene.beforeStep = [pin1](Box2dScene&, int step) {
+        if (step == 0 || step % 240 != 0) return;  // as the pivot2d scene
+        pin1->SetMotorSpeed(-pin1->GetMotorSpeed());
+    };
+    return scene;
+}
+
 Box2dScene buildWeldBeam(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     b2Body* previous = staticBody(*scene.world);

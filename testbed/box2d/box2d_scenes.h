@@ -40,6 +40,7 @@ Box2dScene buildTopDown(bool continuous = false);
 Box2dScene buildMotorDrive(bool continuous = false);
 Box2dScene buildElevator(bool continuous = false);
 Box2dScene buildWeldBeam(bool continuous = false);
+Box2dScene buildGearTrain(bool continuous = false);
 /// Box2D 2.4.1's wheel spring takes a stiffness and damping (N/m, N s/m): the twin computes
 /// them from pivot2d's 4 Hz and 0.7 on the effective mass of the suspension row at the start,
 /// the same spring while the chassis is level.

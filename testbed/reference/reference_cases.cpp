@@ -34,6 +34,7 @@ const std::vector<ReferenceCase>& referenceCases() {
         {"motor_drive", false, scenes::buildMotorDrive, box2d::buildMotorDrive},
         {"elevator", false, scenes::buildElevator, box2d::buildElevator},
         {"weld_beam", false, scenes::buildWeldBeam, box2d::buildWeldBeam},
+        {"gear_train", false, scenes::buildGearTrain, box2d::buildGearTrain},
         {"car", true, scenes::buildCar, box2d::buildCar, false},  // not bit for bit
         {"double_pendulum", true, scenes::buildDoublePendulum, box2d::buildDoublePendulum},
         {"bridge", true, scenes::buildBridge, box2d::buildBridge},
@@ -137,6 +138,19 @@ double box2dSeparation(const b2Joint& joint) {
     }
     if (joint.GetType() == e_wheelJoint) {
         return slideSeparation(const_cast<b2WheelJoint&>(static_cast<const b2WheelJoint&>(joint)));
+    }
+    if (joint.GetType() == e_gearJoint) {
+        // |coordinate1 + ratio coordinate2 - constant|. Box2D keeps the constant private; the
+        // twins create their gears with both joints at coordinate 0, so it is 0.
+        auto& gear = const_cast<b2GearJoint&>(static_cast<const b2GearJoint&>(joint));
+        const auto coordinate = [](b2Joint* coupled) -> double {
+            if (coupled->GetType() == e_revoluteJoint) {
+                return static_cast<b2RevoluteJoint*>(coupled)->GetJointAngle();
+            }
+            return static_cast<b2PrismaticJoint*>(coupled)->GetJointTranslation();
+        };
+        return std::fabs(coordinate(gear.GetJoint1()) +
+                         double(gear.GetRatio()) * coordinate(gear.GetJoint2()));
     }
     if (joint.GetType() != e_distanceJoint) return gap;
     const auto& distance = static_cast<const b2DistanceJoint&>(joint);

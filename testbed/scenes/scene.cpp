@@ -64,6 +64,10 @@ const std::vector<SceneInfo>& allScenes() {
         {"elevator",
          "a platform on a prismatic joint carrying an off-centre load up and down between limits",
          buildElevator},
+        {"pulley_gear",
+         "a motorised wheel geared to a bigger one geared to a rack on a limited slide, the rack "
+         "hung on a pulley against a swinging counterweight",
+         buildPulleyGear},
     };
     return scenes;
 }

@@ -81,6 +81,9 @@ void buildDistancePendulum(Scene& scene, const SceneOptions& options);
 void buildRope(Scene& scene, const SceneOptions& options);
 void buildPulley(Scene& scene, const SceneOptions& options);
 void buildElevator(Scene& scene, const SceneOptions& options);
+void buildPulleyGear(Scene& scene, const SceneOptions& options);
+/// Not in the table: the gear joint's Box2D reference case (gear_train.cpp).
+void buildGearTrain(Scene& scene, const SceneOptions& options);
 void buildWeldBeam(Scene& scene, const SceneOptions& options);
 void buildCar(Scene& scene, const SceneOptions& options);
 void buildTopDown(Scene& scene, const SceneOptions& options);

@@ -83,6 +83,7 @@ const RecordedHashes kRecorded[] = {
     {"weld_beam",         {0xf4aa1610f9cbad91ull, 0x3da6cc378e39ef85ull, 0xaeb6b8ebe4773043ull, 0xc309103e6d4f92d6ull}},
     {"car",               {0xd5856f3e7a68ea3full, 0x3955fef5f7444707ull, 0xcbfd3d3b2112093bull, 0x2347258b5c67c0f7ull}},
     {"elevator",          {0x2bc5877b156b2692ull, 0x680591cab71fca3full, 0xf15ac09c6ca38d47ull, 0xc9eca8551f156da3ull}},
+    {"pulley_gear",       {0xe52bf8b11dac06d3ull, 0x97101f5f7ded6424ull, 0x81cd9fe5f05c540cull, 0x632e4225479dfa3aull}},
 };
 // clang-format on
 

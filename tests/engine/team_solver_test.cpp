@@ -111,10 +111,13 @@ struct JointGrid {
 // A grid of circles hung from three static ones, each linked to the one above by a pin and to
 // its left neighbour by a pin, or (everyType) by every joint type in turn: distance, prismatic
 // along the row, weld, pulley (wheels 3 m above each), friction, motor, wheel (sprung
-// vertically) and revolute.
+// vertically) and revolute; and gears: between a cell's pin and its left neighbour's (four
+// bodies), its pin and the pin above (one body on both sides), and a prismatic link and the
+// left neighbour's pin (the same, the other way round).
 void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false) {
     World& world = grid.world;
     std::vector<BodyId> bodies;
+    std::vector<JointId> pins(std::size_t(n) * std::size_t(n));  // each cell's pin from above
     ShapeDef shape;
     shape.filter.categoryBits = 0x0002;
     shape.filter.maskBits = 0x0001;
@@ -136,8 +139,25 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false
                 if (mixedSolvers) joint.positionSolver = solvers[grid.joints.size() % 4];
                 grid.joints.push_back(world.createJoint(joint));
             };
-            if (row > 0) link(bodies[(row - 1) * n + col], {float(col), 0.5f - float(row)});
+            if (row > 0) {
+                link(bodies[(row - 1) * n + col], {float(col), 0.5f - float(row)});
+                pins[row * n + col] = grid.joints.back();
+            }
+            const auto gear = [&](JointId joint1, JointId joint2, float ratio) {
+                GearJointDef joint;
+                joint.joint1 = joint1;
+                joint.joint2 = joint2;
+                joint.ratio = ratio;
+                if (mixedSolvers) joint.positionSolver = solvers[grid.joints.size() % 4];
+                grid.joints.push_back(world.createJoint(joint));
+            };
+            if (everyType && row > 1 && (col + row) % 8 == 7) {
+                gear(pins[row * n + col], pins[(row - 1) * n + col], 1.0f);
+            }
             if (col == 0) continue;
+            if (everyType && row > 0 && (col + row) % 8 == 4) {
+                gear(pins[row * n + col], pins[row * n + col - 1], -1.0f);
+            }
             const BodyId left = bodies[row * n + col - 1];
             const Vec2 middle{float(col) - 0.5f, -float(row)};
             const auto add = [&](auto jointDef) {
@@ -163,6 +183,7 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false
                     if (k % 3 == 0) joint.limit = {true, -0.1f, 0.1f};
                     if (k % 5 == 0) joint.spring = {true, 4.0f, 0.3f};
                     add(joint);
+                    if (row > 0) gear(grid.joints.back(), pins[row * n + col - 1], 2.0f);
                     break;
                 }
                 case 2: {

@@ -468,6 +468,7 @@ private:
             {3, &Driver::createPrismaticJoint},
             {3, &Driver::createWeldJoint},
             {3, &Driver::createWheelJoint},
+            {2, &Driver::createGearJoint},
             {2, &Driver::createVelocityJoint},
             {2, &Driver::createMouseJoint},
             {3, &Driver::destroyBody},
@@ -1070,6 +1071,78 @@ private:
         });
     }
 
+    // Whether a gear is built on the joint: World::destroyJoint refuses it then.
+    bool carriesGear(JointId joint) const {
+        for (JointId id : world_->jointIds()) {
+            if (world_->jointType(id) != JointType::Gear) continue;
+            if (world_->gearJointJoint1(id) == joint || world_->gearJointJoint2(id) == joint) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    void createGearJoint() {
+        if (world_->jointCount() >= kMaxJoints) {
+            destroyJoint();
+            return;
+        }
+        // Mostly among the joints a gear can couple, so that gears are built often enough to
+        // be stepped, changed and destroyed.
+        std::vector<JointId> coupleableIds;
+        for (JointId id : world_->jointIds()) {
+            const JointType type = world_->jointType(id);
+            if (type == JointType::Revolute || type == JointType::Prismatic) {
+                coupleableIds.push_back(id);
+            }
+        }
+        const auto pickCoupleable = [&]() -> Arg<JointId> {
+            if (coupleableIds.empty() || random_.chance(0.2f)) return pickJoint();
+            return {coupleableIds[random_.below(static_cast<int>(coupleableIds.size()))], false};
+        };
+        Arg<JointId> joint1 = pickCoupleable();
+        Arg<JointId> joint2 = random_.chance(0.05f) ? joint1 : pickCoupleable();
+        GearJointDef def;
+        def.joint1 = joint1.value;
+        def.joint2 = joint2.value;
+        const auto coupleable = [&](const Arg<JointId>& j) {
+            return isType(j, JointType::Revolute) || isType(j, JointType::Prismatic);
+        };
+        bool bad = joint1.bad || joint2.bad || joint1.value == joint2.value ||
+                   !coupleable(joint1) || !coupleable(joint2) ||
+                   world_->jointBodyB(joint1.value) == world_->jointBodyB(joint2.value);
+        if (hostile_ > 0.0f && random_.chance(0.1f)) {
+            def.ratio = random_.chance(0.5f) ? 0.0f : values_->garbage();
+            bad = true;
+        } else {
+            def.ratio = (random_.chance(0.5f) ? -1.0f : 1.0f) * random_.uniform(0.5f, 2.0f);
+        }
+        if (random_.chance(0.7f)) {
+            Arg<PositionSolver> s = solver();
+            def.positionSolver = s.value;
+            bad = bad || s.bad;
+        }
+        if (random_.chance(0.3f)) {
+            Arg<float> bias = values_->fraction();
+            def.biasFactor = bias.value;
+            bad = bad || bias.bad;
+        }
+        if (random_.chance(0.2f)) {
+            Arg<float> letGo = values_->nonNegativeUpTo(20.0f, kMaxMagnitude);
+            def.letGoSeparation = letGo.value;
+            bad = bad || letGo.bad;
+        }
+        def.collideConnected = random_.chance(0.3f);
+        def.userData = random_.next();
+        trace("createGearJoint j1=" + idText(joint1.value) + " j2=" + idText(joint2.value));
+        attempt("World::createJoint", verdict(bad), [&] {
+            JointId id = journal_.createJoint(def);
+            noteTag(id);
+            joints_.remember(id);
+            if (world_->jointType(id) != JointType::Gear) failure("createJoint: not a gear joint");
+        });
+    }
+
     // A friction or a motor joint, at random.
     void createVelocityJoint() {
         if (world_->jointCount() >= kMaxJoints) {
@@ -1172,6 +1245,18 @@ private:
                     joints.push_back(j);
                 }
             }
+            // And the gears built on those joints.
+            const std::size_t attached = joints.size();
+            for (JointId g : world_->jointIds()) {
+                if (world_->jointType(g) != JointType::Gear) continue;
+                if (std::find(joints.begin(), joints.end(), g) != joints.end()) continue;
+                const auto begin = joints.begin();
+                const auto end = joints.begin() + static_cast<std::ptrdiff_t>(attached);
+                if (std::find(begin, end, world_->gearJointJoint1(g)) != end ||
+                    std::find(begin, end, world_->gearJointJoint2(g)) != end) {
+                    joints.push_back(g);
+                }
+            }
         }
         trace("destroyBody " + idText(body.value));
         int bodyCount = world_->bodyCount(), shapeCount = world_->shapeCount(),
@@ -1215,7 +1300,8 @@ private:
     void destroyJoint() {
         Arg<JointId> joint = pickJoint();
         trace("destroyJoint " + idText(joint.value));
-        attempt("World::destroyJoint", verdict(joint.bad), [&] {
+        const bool geared = !joint.bad && carriesGear(joint.value);
+        attempt("World::destroyJoint", verdict(joint.bad || geared), [&] {
             journal_.destroyJoint(joint.value);
             if (world_->isValid(joint.value)) failure("destroyJoint: the joint is still valid");
         });
@@ -1429,6 +1515,21 @@ private:
                     const bool notPrismatic = !joint.bad && !isType(joint, JointType::Prismatic);
                     const bool notWeld = !joint.bad && !isType(joint, JointType::Weld);
                     const bool notWheel = !joint.bad && !isType(joint, JointType::Wheel);
+                    const bool notGear = !joint.bad && !isType(joint, JointType::Gear);
+                    if (random_.chance(0.15f)) {
+                        float ratio =
+                            (random_.chance(0.5f) ? -1.0f : 1.0f) * random_.uniform(0.5f, 2.0f);
+                        bool badRatio = false;
+                        if (hostile_ > 0.0f && random_.chance(0.2f)) {
+                            ratio = random_.chance(0.5f) ? 0.0f : values_->garbage();
+                            badRatio = true;
+                        }
+                        trace("setGearJointRatio " + idText(joint.value) + " " + text(ratio));
+                        attempt("World::setGearJointRatio",
+                                verdict(joint.bad || notGear || badRatio),
+                                [&] { journal_.setGearJointRatio(joint.value, ratio); });
+                        break;
+                    }
                     if (random_.chance(0.3f)) {
                         if (random_.chance(0.5f)) {
                             Arg<JointSpring> sp = spring();
@@ -1795,6 +1896,7 @@ private:
                     const bool notPrismatic = !joint.bad && !isType(joint, JointType::Prismatic);
                     const bool notWeld = !joint.bad && !isType(joint, JointType::Weld);
                     const bool notWheel = !joint.bad && !isType(joint, JointType::Wheel);
+                    const bool notGear = !joint.bad && !isType(joint, JointType::Gear);
                     const bool notSlide = notPrismatic && notWheel;
                     const bool notMotorised = notRevolute && notWheel;
                     std::vector<std::tuple<const char*, bool, std::function<void()>>> typed = {
@@ -1828,6 +1930,9 @@ private:
                          [&] { w.distanceJointSpring(joint.value); }},
                         {"World::pulleyJointRatio", notPulley,
                          [&] { w.pulleyJointRatio(joint.value); }},
+                        {"World::gearJointRatio", notGear, [&] { w.gearJointRatio(joint.value); }},
+                        {"World::gearJointJoint1", notGear,
+                         [&] { w.gearJointJoint1(joint.value); }},
                         {"World::pulleyJointLengthA", notPulley,
                          [&] { w.pulleyJointLengthA(joint.value); }},
                         {"World::pulleyJointGroundAnchorB", notPulley,
@@ -1982,7 +2087,7 @@ private:
                         continue;
                     }
                     BodyId a = world_->jointBodyA(j);
-                    attempt("World::destroyJoint", Verdict::Valid,
+                    attempt("World::destroyJoint", carriesGear(j) ? Verdict::Bad : Verdict::Valid,
                             [&] { journal_.destroyJoint(j); });
                     if (random_.chance(0.2f)) {
                         attempt("World::destroyBody", Verdict::Valid,

@@ -135,6 +135,16 @@ JointId Journal::createJoint(const PulleyJointDef& def) {
     return id;
 }
 
+JointId Journal::createJoint(const GearJointDef& def) {
+    JointId id = world_->createJoint(def);
+    lines_.push_back("gear " + nameNew('j', id) + " " + nameOf('j', def.joint1) + " " +
+                     nameOf('j', def.joint2) + " " + num(def.ratio) + " " +
+                     num(def.positionSolver ? int(*def.positionSolver) : -1) + " " +
+                     num(def.biasFactor.value_or(-1.0f)) + " " + num(def.collideConnected) + " " +
+                     num(def.letGoSeparation.value_or(-1.0f)));
+    return id;
+}
+
 JointId Journal::createJoint(const PrismaticJointDef& def) {
     JointId id = world_->createJoint(def);
     lines_.push_back("prismatic " + nameNew('j', id) + " " + nameOf('b', def.bodyA) + " " +
@@ -332,6 +342,10 @@ void Journal::setWheelJointSpring(JointId id, const JointSpring& spring) {
     world_->setWheelJointSpring(id, spring);
     lines_.push_back("wheelSpring " + nameOf('j', id) + " " + num(spring.enabled) + " " +
                      num(spring.hertz) + " " + num(spring.dampingRatio));
+}
+void Journal::setGearJointRatio(JointId id, float ratio) {
+    world_->setGearJointRatio(id, ratio);
+    lines_.push_back("gearRatio " + nameOf('j', id) + " " + num(ratio));
 }
 void Journal::setWheelJointLimit(JointId id, const TranslationLimit& limit) {
     world_->setWheelJointLimit(id, limit);
@@ -704,6 +718,24 @@ ReplayResult replay(std::istream& in) {
             const float letGo = f.f();
             if (letGo >= 0.0f) def.letGoSeparation = letGo;
             call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "gear") {
+            std::string name = f.word();
+            GearJointDef def;
+            def.joint1 = joint(f.word());
+            def.joint2 = joint(f.word());
+            def.ratio = f.f();
+            int solver = f.i();
+            if (solver >= 0) def.positionSolver = static_cast<PositionSolver>(solver);
+            float bias = f.f();
+            if (bias >= 0.0f) def.biasFactor = bias;
+            def.collideConnected = f.b();
+            const float letGo = f.f();
+            if (letGo >= 0.0f) def.letGoSeparation = letGo;
+            call = [&w, &joints, name, def] { joints[name] = w.createJoint(def); };
+        } else if (command == "gearRatio") {
+            JointId j = joint(f.word());
+            const float ratio = f.f();
+            call = [&w, j, ratio] { w.setGearJointRatio(j, ratio); };
         } else if (command == "wheelSpring") {
             JointId j = joint(f.word());
             JointSpring sp;

@@ -34,6 +34,7 @@ public:
     JointId createJoint(const RevoluteJointDef& def);
     JointId createJoint(const DistanceJointDef& def);
     JointId createJoint(const PulleyJointDef& def);
+    JointId createJoint(const GearJointDef& def);
     JointId createJoint(const PrismaticJointDef& def);
     JointId createJoint(const WeldJointDef& def);
     JointId createJoint(const WheelJointDef& def);
@@ -66,6 +67,7 @@ public:
     void setPrismaticJointSpring(JointId id, const JointSpring& spring);
     void setWeldJointLinearSpring(JointId id, const JointSpring& spring);
     void setWheelJointSpring(JointId id, const JointSpring& spring);
+    void setGearJointRatio(JointId id, float ratio);
     void setWheelJointLimit(JointId id, const TranslationLimit& limit);
     void setWeldJointAngularSpring(JointId id, const JointSpring& spring);
     void setJointMaxForce(JointId id, float force);
