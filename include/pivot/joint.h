@@ -334,7 +334,10 @@ struct WheelJointDef {
 /// constraint on four bodies (both joints' bodies: the gear pushes the bases back as well),
 /// corrected by the gear's own PositionSolver; the two joints keep theirs.
 ///
-/// The gear's body A is joint1's body B and its body B is joint2's body B; they must differ.
+/// The gear's body A is joint1's body B and its body B is joint2's body B; they must differ,
+/// and not both be static. (The step finds a gear through its bodies A and B: if both are made
+/// static later, it is not solved until one of them moves again.) A coupled joint that is let
+/// go is not solved, but still keeps its bodies in the gear's island.
 /// While a gear is built on a joint, World::destroyJoint refuses that joint (destroy the gear
 /// first); World::destroyBody destroys, with a body's joints, the gears built on them.
 struct GearJointDef {

@@ -319,7 +319,7 @@ public:
     Vec2 jointReactionForce(JointId id) const;
     /// N m, the torque the joint applied to body B in that step (revolute: motor plus limits;
     /// friction and motor: their angular row; prismatic and weld: what holds their angle;
-    /// wheel: its motor; gear: its one row's; distance and pulley joints apply none).
+    /// wheel: its motor; gear: its row's, on body B; distance and pulley joints apply none).
     float jointReactionTorque(JointId id) const;
 
     // Revolute joints (the calls from here to setJointMotor refuse other types, but for the

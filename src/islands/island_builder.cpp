@@ -81,14 +81,18 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet
             const Joint& joint = storage.joints[jointIndex];
             int side = edgeSide(key);
             key = joint.edges[side].nextKey;
-            // A let-go joint neither connects nor is solved (World::isJointLetGo).
-            if (jointVisited_[jointIndex] || joint.letGo) continue;
+            if (jointVisited_[jointIndex]) continue;
+            // A let-go joint is not solved (World::isJointLetGo), and connects nothing unless a
+            // gear is built on it: the gear moves both of its bodies, so they stay in one
+            // island with the gear's.
+            if (joint.letGo && joint.gearCount == 0) continue;
             jointVisited_[jointIndex] = 1;
             std::int32_t other = reach(joint.edges[1 - side].body, storage, set, range.bodyBegin);
+            if (joint.letGo) continue;
             JointSlots slots = side == 0 ? JointSlots{self, other, kNoSlot, kNoSlot}
                                          : JointSlots{other, self, kNoSlot, kNoSlot};
-            // A gear's C and D are in its island even when the joints that hang its bodies from
-            // them are let go.
+            // A gear's C and D: its joints connect them to A and B (let go or not), so they
+            // are in this island; reached here for their slots (a static body is not expanded).
             const std::array<std::int32_t, 2> extra = joint.extraBodies();
             for (int k = 0; k < 2; ++k) {
                 if (extra[k] != -1) slots[2 + k] = reach(extra[k], storage, set, range.bodyBegin);

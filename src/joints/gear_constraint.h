@@ -132,7 +132,7 @@ struct GearConstraint {
         impulse += solveRow(velocities, withBias ? bias : 0.0f);
     }
 
-    /// At the rows last measured, as the other joints' biases.
+    /// factor C at these poses (C depends on the coordinates only, not on the rows).
     void setBias(const SolverPose* poses, float factor) { bias = factor * error(poses); }
 
     void restartAt(const SolverPose* poses, float) { measure(poses); }

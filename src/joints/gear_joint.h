@@ -36,9 +36,11 @@ struct GearJoint {
     GearSide side1;  // joint1: its moving body is the gear's body A
     GearSide side2;  // joint2: its moving body is the gear's body B
     float ratio = 1.0f;
-    float constant = 0.0f;  // coordinate1 + ratio coordinate2 when created, less the error then
+    // coordinate1 + ratio coordinate2 when created (World::setGearJointRatio chooses it again,
+    // keeping C).
+    float constant = 0.0f;
 
-    float impulse = 0.0f;  // accumulated, in joint1's units times N s (per m or per rad)
+    float impulse = 0.0f;  // accumulated: N m s if joint1 is revolute, N s if prismatic
     Vec2 linearB;          // body B's Jacobian row when last solved (reactions)
     float angularB = 0.0f;
 

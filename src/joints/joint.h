@@ -2,9 +2,8 @@
 // types share are here; each type's own settings and accumulated impulses are its alternative of
 // `data` (revolute_joint.h, distance_joint.h, pulley_joint.h, velocity_joints.h,
 // prismatic_joint.h, weld_joint.h, wheel_joint.h, gear_joint.h), in the order of
-// joints/joint_types.h
-// and of the public JointType. The per-step solver state lives in each type's constraint, built
-// afresh for each island each step.
+// joints/joint_types.h and of the public JointType. The per-step solver state lives in each
+// type's constraint, built afresh for each island each step.
 #pragma once
 
 #include <array>

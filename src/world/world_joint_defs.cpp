@@ -311,6 +311,11 @@ JointId World::createJoint(const GearJointDef& def) {
              "def.joint1 and def.joint2 move the same body (their body B); the gear "
              "would join that body to itself");
     }
+    if (w.bodies[a].type == BodyType::Static && w.bodies[b].type == BodyType::Static) {
+        fail(call,
+             "def.joint1 and def.joint2 both move a static body (their body B); a gear "
+             "turns the bodies its joints move, so one of them must be able to move");
+    }
     checkGearRatio(call, "def.ratio", def.ratio);
     const PositionSolver solver = checkSolverOf(call, def, w);
     checkBiasAndLetGo(call, def);

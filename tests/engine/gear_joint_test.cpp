@@ -169,6 +169,22 @@ TEST(GearJoint, AGearboxOnAFloatingBodyHoldsItsRatioInOneVelocityIteration) {
     }
 }
 
+TEST(GearJoint, AGearedMechanismAtRestSleepsAndItsSettersWakeIt) {
+    for (PositionSolver solver : kSolvers) {
+        SCOPED_TRACE(positionSolverName(solver));
+        RackAndPinion r(solver);
+        r.world.setPrismaticJointLimit(r.slide, {true, -0.5f, 0.5f});
+        for (int i = 0; i < 300; ++i) r.world.step(kDt);  // falls onto the limit and stops
+        EXPECT_NEAR(r.world.jointTranslation(r.slide), -0.5f, 0.01f);
+        EXPECT_FALSE(r.world.isBodyAwake(r.rack));
+        EXPECT_FALSE(r.world.isBodyAwake(r.pinion));
+        EXPECT_LT(r.world.jointSeparation(r.gear), 1e-3f);
+        r.world.setGearJointRatio(r.gear, -1.0f);
+        EXPECT_TRUE(r.world.isBodyAwake(r.rack));
+        EXPECT_TRUE(r.world.isBodyAwake(r.pinion));
+    }
+}
+
 TEST(GearJoint, ChangingTheRatioKeepsThePresentErrorAndDrivesTheNewRatio) {
     Wheels w(PositionSolver::FullNGS);
     for (int i = 0; i < 30; ++i) w.world.step(kDt);
@@ -237,6 +253,46 @@ TEST(GearJoint, ALetGoPinStillLeavesTheGearItsBodies) {
     }
 }
 
+TEST(GearJoint, ABaseOnlyALetGoJointConnectsIsStillInTheGearsIsland) {
+    // The base of joint2 is a dynamic body created last, so the step starts its island search
+    // there; with joint2 let go, only that joint still ties the base to the gear's island.
+    World world{WorldDef{}};
+    BodyId ground = world.createBody(BodyDef{});
+    BodyId wheel1 = disc(world, {0, 0}, 1.0f);
+    BodyId wheel2 = disc(world, {3, 0}, 2.0f);
+    BodyDef plateDef;
+    plateDef.type = BodyType::Dynamic;
+    plateDef.position = {3, 0};
+    BodyId plate = world.createBody(plateDef);
+    ShapeDef apart;
+    apart.filter.groupIndex = -1;  // the plate sits inside wheel2
+    world.createShape(plate, apart, Polygon::box(0.5f, 0.5f));
+    world.setShapeFilter(world.bodyShapes(wheel2)[0], apart.filter);
+    JointId pin1 = world.createJoint(RevoluteJointDef::atWorldAnchor(ground, wheel1, {0, 0}));
+    RevoluteJointDef axle = RevoluteJointDef::atWorldAnchor(plate, wheel2, {3, 0});
+    axle.letGoSeparation = 1e-9f;
+    JointId pin2 = world.createJoint(axle);
+    GearJointDef gd;
+    gd.joint1 = pin1;
+    gd.joint2 = pin2;
+    gd.ratio = 2.0f;
+    JointId gear = world.createJoint(gd);
+    world.setBodyAngularVelocity(wheel1, 3.0f);
+    world.setBodyTransform(wheel2, {3, 0.5f}, 0);  // the axle comes apart at the first step
+    for (int i = 0; i < 30; ++i) {
+        world.step(kDt);
+        ASSERT_TRUE(std::isfinite(world.jointSeparation(gear))) << "step " << i;
+        for (const JointLetGoEvent& e : world.jointLetGoEvents()) {
+            ASSERT_EQ(e.joint, pin2) << "step " << i;
+            ASSERT_TRUE(std::isfinite(e.separation)) << "step " << i;
+        }
+    }
+    EXPECT_TRUE(world.isJointLetGo(pin2));
+    EXPECT_FALSE(world.isJointLetGo(gear));
+    EXPECT_LT(world.jointSeparation(gear), 1e-3f);
+    EXPECT_EQ(world.lastStepStats().islandCount, 1);
+}
+
 TEST(GearJoint, BadInputIsRefusedAndChangesNothing) {
     RackAndPinion r(PositionSolver::FullNGS);
     World& world = r.world;
@@ -285,6 +341,22 @@ TEST(GearJoint, BadInputIsRefusedAndChangesNothing) {
     }
     EXPECT_EQ(world.stateHash(), withSecond);
     world.destroyJoint(second);
+    // Two joints that move static bodies.
+    {
+        World statics{WorldDef{}};
+        BodyId base = disc(statics, {0, 0}, 1.0f);
+        BodyId s1 = statics.createBody(BodyDef{});
+        BodyId s2 = statics.createBody(BodyDef{});
+        GearJointDef both;
+        both.joint1 = statics.createJoint(RevoluteJointDef::atWorldAnchor(base, s1, {0, 0}));
+        both.joint2 = statics.createJoint(RevoluteJointDef::atWorldAnchor(base, s2, {0, 0}));
+        try {
+            statics.createJoint(both);
+            ADD_FAILURE() << "accepted a gear between two static bodies";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("both move a static body"), std::string::npos);
+        }
+    }
     // The typed calls refuse other types, and other types' calls refuse a gear.
     const std::uint64_t after = world.stateHash();
     try {

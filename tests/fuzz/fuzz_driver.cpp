@@ -1110,7 +1110,9 @@ private:
         };
         bool bad = joint1.bad || joint2.bad || joint1.value == joint2.value ||
                    !coupleable(joint1) || !coupleable(joint2) ||
-                   world_->jointBodyB(joint1.value) == world_->jointBodyB(joint2.value);
+                   world_->jointBodyB(joint1.value) == world_->jointBodyB(joint2.value) ||
+                   (world_->bodyType(world_->jointBodyB(joint1.value)) == BodyType::Static &&
+                    world_->bodyType(world_->jointBodyB(joint2.value)) == BodyType::Static);
         if (hostile_ > 0.0f && random_.chance(0.1f)) {
             def.ratio = random_.chance(0.5f) ? 0.0f : values_->garbage();
             bad = true;
