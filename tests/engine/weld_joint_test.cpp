@@ -12,9 +12,6 @@ using namespace pivot;
 namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
-const PositionSolver kSolvers[] = {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
-                                   PositionSolver::ModifiedNGS, PositionSolver::FullNGS};
-
 // Five 1 x 0.25 m boxes welded end to end out of a wall at y = 5.
 struct Beam {
     World world;

@@ -2002,7 +2002,10 @@ private:
     void freeFunctions() {
         switch (random_.below(4)) {
             case 0: {
-                auto [p, v] = polygon();
+                // Not a structured binding: C++17 lambdas cannot capture one.
+                const std::pair<Polygon, Verdict> generated = polygon();
+                const Polygon& p = generated.first;
+                const Verdict v = generated.second;
                 Arg<float> density = values_->density(true);
                 attempt("computeMass", density.bad ? Verdict::Bad : v, [&] {
                     MassData m = computeMass(p, density.value);
