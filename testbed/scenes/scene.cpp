@@ -68,6 +68,18 @@ const std::vector<SceneInfo>& allScenes() {
          "a motorised wheel geared to a bigger one geared to a rack on a limited slide, the rack "
          "hung on a pulley against a swinging counterweight",
          buildPulleyGear},
+        {"stretched_chain",
+         "40 links hung from the ground and released level, every joint starting 1 m apart",
+         buildStretchedChain},
+        {"ball_chain", "40 links released level holding a ball of 600 times a link's mass",
+         buildBallChain},
+        {"mass_ratio",
+         "20 links released level holding a ball of 3,000 times a link's mass by its rim",
+         buildMassRatio},
+        {"heavy_stack", "six 1 kg boxes stacked under a 100 kg box", buildHeavyStack},
+        {"overlap_recovery",
+         "a pyramid of ten boxes created a quarter of a box deep into each other and the ground",
+         buildOverlapRecovery},
     };
     return scenes;
 }

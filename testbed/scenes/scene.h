@@ -82,6 +82,10 @@ void buildRope(Scene& scene, const SceneOptions& options);
 void buildPulley(Scene& scene, const SceneOptions& options);
 void buildElevator(Scene& scene, const SceneOptions& options);
 void buildPulleyGear(Scene& scene, const SceneOptions& options);
+void buildStretchedChain(Scene& scene, const SceneOptions& options);
+void buildBallChain(Scene& scene, const SceneOptions& options);
+void buildHeavyStack(Scene& scene, const SceneOptions& options);
+void buildOverlapRecovery(Scene& scene, const SceneOptions& options);
 /// Not in the table: the gear joint's Box2D reference case (gear_train.cpp).
 void buildGearTrain(Scene& scene, const SceneOptions& options);
 void buildWeldBeam(Scene& scene, const SceneOptions& options);

@@ -84,6 +84,11 @@ const RecordedHashes kRecorded[] = {
     {"car",               {0xd5856f3e7a68ea3full, 0x3955fef5f7444707ull, 0xcbfd3d3b2112093bull, 0x2347258b5c67c0f7ull}},
     {"elevator",          {0x2bc5877b156b2692ull, 0x680591cab71fca3full, 0xf15ac09c6ca38d47ull, 0xc9eca8551f156da3ull}},
     {"pulley_gear",       {0xe52bf8b11dac06d3ull, 0x97101f5f7ded6424ull, 0x81cd9fe5f05c540cull, 0x632e4225479dfa3aull}},
+    {"stretched_chain",   {0xf1d6f2d41db2723cull, 0x5d4194dbfcabf712ull, 0xee504abefc9d994full, 0xef66ba65ab6445e0ull}},
+    {"ball_chain",        {0x3b745929917ebf4aull, 0x3cd7ae76fb09efbaull, 0x75d6ea2b7e84cc68ull, 0xa33aa4f143b8fe7cull}},
+    {"mass_ratio",        {0x27b0b8bbdfece63aull, 0x1efd442b3530d9dfull, 0x94449ea87cafd829ull, 0x77b4877c61a58670ull}},
+    {"heavy_stack",       {0x08c475b272262242ull, 0xcf8992d1c7ce371full, 0x6034900afcc6d710ull, 0x692b26b863ecc1adull}},
+    {"overlap_recovery",  {0xb1f33b4b74b3d82bull, 0xf3e51cf809fa54beull, 0x7014479612dcbd91ull, 0x61c2fc806591620cull}},
 };
 // clang-format on
 
