@@ -52,27 +52,12 @@ void buildGearTrain(Scene& scene, const SceneOptions& options) {
     RevoluteJointDef idler = RevoluteJointDef::atWorldAnchor(carrier, big, {0.0f, 8.0f});
     strategy(idler);
     const JointId pin2 = world.createJoint(idler);
-    GearJointDef mesh;
-    mesh.joint1 = pin1;
-    mesh.joint2 = pin2;
-    mesh.ratio = 2.0f;
-    strategy(mesh);
-    const JointId gear1 = world.createJoint(mesh);
-    GearJointDef pinion;
-    pinion.joint1 = pin2;
-    pinion.joint2 = shaft;
-    pinion.ratio = 0.5f;
-    strategy(pinion);
-    const JointId gear2 = world.createJoint(pinion);
+    const JointId gear1 = world.createJoint(options.gear(pin1, pin2, 2.0f));
+    const JointId gear2 = world.createJoint(options.gear(pin2, shaft, 0.5f));
 
     scene.bodies = {small, big, rack};
     scene.joints = {shaft, pin1, pin2, gear1, gear2};
-    scene.beforeStep = [pin1](Scene& s, int step) {
-        if (step == 0 || step % kStepsPerReversal != 0) return;
-        JointMotor motor = s.world->jointMotor(pin1);
-        motor.speed = -motor.speed;
-        s.world->setJointMotor(pin1, motor);
-    };
+    scene.beforeStep = reverseMotorEvery(pin1, kStepsPerReversal);
 }
 
 }  // namespace pivot::scenes

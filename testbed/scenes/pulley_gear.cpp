@@ -50,18 +50,8 @@ void buildPulleyGear(Scene& scene, const SceneOptions& options) {
     slide.limit = {true, -1.5f, 1.5f};
     strategy(slide);
     const JointId shaft = world.createJoint(slide);
-    GearJointDef mesh;
-    mesh.joint1 = pin1;
-    mesh.joint2 = pin2;
-    mesh.ratio = 2.0f;
-    strategy(mesh);
-    const JointId gear1 = world.createJoint(mesh);
-    GearJointDef pinion;
-    pinion.joint1 = pin2;
-    pinion.joint2 = shaft;
-    pinion.ratio = 0.5f;
-    strategy(pinion);
-    const JointId gear2 = world.createJoint(pinion);
+    const JointId gear1 = world.createJoint(options.gear(pin1, pin2, 2.0f));
+    const JointId gear2 = world.createJoint(options.gear(pin2, shaft, 0.5f));
     PulleyJointDef rope;
     rope.bodyA = rack;
     rope.bodyB = counterweight;
@@ -74,12 +64,7 @@ void buildPulleyGear(Scene& scene, const SceneOptions& options) {
 
     scene.bodies = {small, big, rack, counterweight};
     scene.joints = {pin1, pin2, shaft, gear1, gear2, pulley};
-    scene.beforeStep = [pin1](Scene& s, int step) {
-        if (step == 0 || step % kStepsPerReversal != 0) return;
-        JointMotor motor = s.world->jointMotor(pin1);
-        motor.speed = -motor.speed;
-        s.world->setJointMotor(pin1, motor);
-    };
+    scene.beforeStep = reverseMotorEvery(pin1, kStepsPerReversal);
 }
 
 }  // namespace pivot::scenes

@@ -9,6 +9,25 @@ RevoluteJointDef SceneOptions::jointAt(BodyId a, BodyId b, Vec2 anchor) const {
     return def;
 }
 
+GearJointDef SceneOptions::gear(JointId joint1, JointId joint2, float ratio) const {
+    GearJointDef def;
+    def.joint1 = joint1;
+    def.joint2 = joint2;
+    def.ratio = ratio;
+    def.positionSolver = solver;
+    def.biasFactor = biasFactor;
+    return def;
+}
+
+std::function<void(Scene&, int)> reverseMotorEvery(JointId joint, int steps) {
+    return [joint, steps](Scene& scene, int step) {
+        if (step == 0 || step % steps != 0) return;
+        JointMotor motor = scene.world->jointMotor(joint);
+        motor.speed = -motor.speed;
+        scene.world->setJointMotor(joint, motor);
+    };
+}
+
 DistanceJointDef SceneOptions::distanceJoint(BodyId a, BodyId b) const {
     DistanceJointDef def;
     def.bodyA = a;

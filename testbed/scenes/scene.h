@@ -28,6 +28,8 @@ struct SceneOptions {
     RevoluteJointDef jointAt(BodyId a, BodyId b, Vec2 anchor) const;
     /// A distance joint def between the bodies' origins carrying this scene's solver and bias.
     DistanceJointDef distanceJoint(BodyId a, BodyId b) const;
+    /// A gear joint def coupling two joints by `ratio`, carrying this scene's solver and bias.
+    GearJointDef gear(JointId joint1, JointId joint2, float ratio) const;
 };
 
 struct Scene {
@@ -45,6 +47,9 @@ struct Scene {
     /// -1: the scene is never meant to be at rest.
     int restFromStep = -1;
 };
+
+/// A Scene::beforeStep that reverses a revolute or wheel joint's motor every `steps` steps.
+std::function<void(Scene&, int)> reverseMotorEvery(JointId joint, int steps);
 
 using SceneBuilder = void (*)(Scene& scene, const SceneOptions& options);
 
