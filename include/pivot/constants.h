@@ -90,6 +90,10 @@ constexpr int kDefaultPositionIterations = 3;
 /// (a negative number cast to unsigned, say) and would stall the caller.
 constexpr int kMaxIterations = 1000;
 
+/// The most substeps a step may be split into (WorldDef::substepCount). Each substep repeats
+/// the whole solve, so beyond this the cost, not the accuracy, is what changes.
+constexpr int kMaxSubsteps = 64;
+
 // Input limits. These are pivot2d's own (Box2D has no such checks): every number the API takes
 // must be finite and within them, or the call throws pivot::Error. They are far beyond anything
 // a game builds, and they keep each product a step forms from them (mass times length squared,

@@ -48,6 +48,14 @@ struct WorldDef {
     /// default: joints are never let go for their separation, however far they are pulled
     /// apart, as in Box2D. A joint's RevoluteJointDef::letGoSeparation overrides it.
     float jointLetGoSeparation = 0.0f;
+    /// In [1, kMaxSubsteps]. Each World::step is solved as this many substeps of dt / n, the
+    /// collision found once at its start: per substep, gravity and forces, every constraint
+    /// rebuilt at the bodies' current poses and warm-started from the last substep, the given
+    /// velocity iterations, integration and the position phase of each joint's strategy (so a
+    /// step costs about n times as much). 1, the default, is the pipeline Box2D 2.4.1 has and
+    /// agrees with it bit for bit; soft step (Box2D v3) uses 4. docs/position-correction.md,
+    /// "Substeps", says what each strategy does per substep.
+    int substepCount = 1;
 };
 
 /// A touching contact as seen from outside, measured at the bodies' current poses.
@@ -86,11 +94,14 @@ struct StepStats {
     int islandCount = 0;
     int bodyCount = 0;   ///< bodies simulated (in an island)
     int jointCount = 0;  ///< joints solved
-    /// Bodies whose move this step was limited by kMaxTranslation / kMaxRotation.
+    /// Bodies whose move this step was limited by kMaxTranslation / kMaxRotation (with
+    /// substeps, each substep's limit is its share of the step's: a body is counted once per
+    /// substep that limited it).
     int translationClamps = 0;
     int rotationClamps = 0;
-    /// The most NGS position iterations any island ran (fewer than asked when every error was
-    /// within slop early). 0 when no island has an NGS joint or NGS contact.
+    /// The most NGS position iterations any island ran, summed over its substeps (fewer than
+    /// asked when every error was within slop early). 0 when no island has an NGS joint or NGS
+    /// contact.
     int positionIterations = 0;
     int contactCount = 0;       ///< contacts in the world (broad-phase boxes overlapping)
     int touchingCount = 0;      ///< of which touching (manifold with points)
@@ -115,13 +126,18 @@ public:
 
     // --- simulation -------------------------------------------------------------------------
     /// Advance by dt seconds, in [kMinTimeStep, kMaxTimeStep], with the given iteration counts,
-    /// in [0, kMaxIterations]. Contact and joint impulses of the previous step warm-start this
-    /// one scaled by the ratio of the steps, but never scaled up: after a step much shorter than
-    /// this one its impulses say little about this step's forces (see
+    /// in [0, kMaxIterations], each run in every substep (WorldDef::substepCount; dt divided by
+    /// it must still be at least kMinTimeStep). Contact and joint impulses of the previous step
+    /// warm-start this one scaled by the ratio of the steps, but never scaled up: after a step much
+    /// shorter than this one its impulses say little about this step's forces (see
     /// docs/position-correction.md, "Changing the time step").
     void step(float dt, int velocityIterations = kDefaultVelocityIterations,
               int positionIterations = kDefaultPositionIterations);
     const StepStats& lastStepStats() const;
+    /// WorldDef::substepCount. Changing it takes effect at the next step; the warm start scales
+    /// the last substep's impulses by the ratio of the substeps' lengths, as for a change of dt.
+    int substepCount() const;
+    void setSubstepCount(int count);
 
     Vec2 gravity() const;
     /// Changes gravity and wakes every body, so sleeping bodies feel the change.

@@ -8,9 +8,13 @@ namespace pivot {
 
 /// Settings of one World::step, shared by every island.
 struct StepContext {
+    // The length of one substep, h = step / substepCount (the step's with one substep): what
+    // every constraint is built for, and what its impulses are per.
     float dt = 0.0f;
     float invDt = 0.0f;
-    float dtRatio = 0.0f;  // min(dt / previous dt, 1), scales warm-start impulses
+    float dtRatio = 0.0f;  // min(h / previous h, 1), scales warm-start impulses
+    int substepCount = 1;
+    float stepDt = 0.0f;  // the whole step, s (sleep timers)
     Vec2 gravity;
     int velocityIterations = 0;
     int positionIterations = 0;

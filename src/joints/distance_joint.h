@@ -35,9 +35,13 @@ struct DistanceJoint {
 
     bool hasFiniteReactions(float invDt) const {
         return std::isfinite(invDt * impulse) && std::isfinite(invDt * lowerImpulse) &&
-               std::isfinite(invDt * upperImpulse) && std::isfinite(invDt * axialImpulse());
+               std::isfinite(invDt * upperImpulse) && std::isfinite(invDt * axialImpulse()) &&
+               isFinite(axis);
     }
-    void clearImpulses() { impulse = lowerImpulse = upperImpulse = 0.0f; }
+    void clearImpulses() {
+        impulse = lowerImpulse = upperImpulse = 0.0f;
+        axis = Vec2{};  // measured in a diverged substep, it may not be finite
+    }
     /// m, how far the joint, its anchors (in world coordinates) where they are, is from what it
     /// allows.
     float separation(Rot, Vec2 anchorA, Vec2 anchorB) const {

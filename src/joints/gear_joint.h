@@ -54,7 +54,7 @@ struct GearJoint {
     }
     void clearImpulses() {
         impulse = 0.0f;
-        linearB = Vec2{};  // rows measured in a diverged island may not be finite
+        linearB = Vec2{};  // rows measured in a diverged island or substep may not be finite
         angularB = 0.0f;
     }
 };

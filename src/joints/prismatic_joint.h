@@ -40,11 +40,13 @@ struct PrismaticJoint {
     bool hasFiniteReactions(float invDt) const {
         return isFinite(invDt * impulse) && std::isfinite(invDt * motorImpulse) &&
                std::isfinite(invDt * lowerImpulse) && std::isfinite(invDt * upperImpulse) &&
-               std::isfinite(invDt * springImpulse) && std::isfinite(invDt * axialImpulse());
+               std::isfinite(invDt * springImpulse) && std::isfinite(invDt * axialImpulse()) &&
+               isFinite(axis);
     }
     void clearImpulses() {
         impulse = Vec2{};
         motorImpulse = lowerImpulse = upperImpulse = springImpulse = 0.0f;
+        axis = Vec2{};  // measured in a diverged substep, it may not be finite
     }
     /// m: how far anchor B is off the axis line, combined with how far the translation is
     /// beyond the limit (when enabled).

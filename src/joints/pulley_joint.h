@@ -20,9 +20,13 @@ struct PulleyJoint {
 
     float constant() const { return lengthA + ratio * lengthB; }
     bool hasFiniteReactions(float invDt) const {
-        return std::isfinite(invDt * impulse) && std::isfinite(invDt * ratio * impulse);
+        return std::isfinite(invDt * impulse) && std::isfinite(invDt * ratio * impulse) &&
+               isFinite(axisB);
     }
-    void clearImpulses() { impulse = 0.0f; }
+    void clearImpulses() {
+        impulse = 0.0f;
+        axisB = Vec2{};  // measured in a diverged substep, it may not be finite
+    }
     /// m, |C|: how far the rope's two lengths are from what it was cut to.
     float separation(Rot, Vec2 anchorA, Vec2 anchorB) const {
         return std::fabs(constant() - distance(anchorA, groundAnchorA) -

@@ -37,10 +37,12 @@ struct WheelJoint {
     bool hasFiniteReactions(float invDt) const {
         return std::isfinite(invDt * impulse) && std::isfinite(invDt * springImpulse) &&
                std::isfinite(invDt * lowerImpulse) && std::isfinite(invDt * upperImpulse) &&
-               std::isfinite(invDt * motorImpulse) && std::isfinite(invDt * axialImpulse());
+               std::isfinite(invDt * motorImpulse) && std::isfinite(invDt * axialImpulse()) &&
+               isFinite(axis);
     }
     void clearImpulses() {
         impulse = springImpulse = lowerImpulse = upperImpulse = motorImpulse = 0.0f;
+        axis = Vec2{};  // measured in a diverged substep, it may not be finite
     }
     /// m: how far anchor B is off the axis line, combined with how far the translation is
     /// beyond the limit (when enabled).

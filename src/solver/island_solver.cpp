@@ -10,29 +10,16 @@ namespace pivot {
 
 namespace {
 
-// Copy body state into the solver slots; apply gravity, forces and damping to dynamic bodies
-// (semi-implicit Euler: velocities first, positions later from the new velocities).
-void integrateVelocities(const Team& team, const IslandView& island, IslandWorkspace& work,
-                         const SlotPool<Body>& bodies, const StepContext& step) {
-    const float h = step.dt;
+// Copy body state into the solver slots, with private copies of the bodies that never move
+// (nothing integrates them, so a copy is simply the body's own state).
+void loadBodies(const Team& team, const IslandView& island, IslandWorkspace& work,
+                const SlotPool<Body>& bodies) {
     const IndexRange mine = team.share(island.bodyCount);
     for (int i = mine.begin; i < mine.end; ++i) {
         const Body& b = bodies[island.bodies[i]];
-        Vec2 v = b.linearVelocity;
-        float w = b.angularVelocity;
-        if (b.type == BodyType::Dynamic) {
-            v += h * b.invMass * (b.gravityScale * b.mass * step.gravity + b.force);
-            w += h * b.invInertia * b.torque;
-            // Damping, dv/dt = -c v, integrated with the Pade approximation
-            // exp(-c h) ~ 1 / (1 + c h): stable for any c h >= 0.
-            v *= 1.0f / (1.0f + h * b.linearDamping);
-            w *= 1.0f / (1.0f + h * b.angularDamping);
-        }
         work.positions[i] = {b.center, b.angle};
-        work.velocities[i] = {v, w};
+        work.velocities[i] = {b.linearVelocity, b.angularVelocity};
     }
-    // Private copies of bodies that never move: nothing integrates them, so a copy is simply
-    // the body's own state.
     const std::vector<std::int32_t>& copies = work.schedule.fixedCopies;
     const IndexRange myCopies = team.share(static_cast<int>(copies.size()));
     for (int k = myCopies.begin; k < myCopies.end; ++k) {
@@ -40,6 +27,27 @@ void integrateVelocities(const Team& team, const IslandView& island, IslandWorks
         const std::size_t slot = static_cast<std::size_t>(island.bodyCount + k);
         work.positions[slot] = {b.center, b.angle};
         work.velocities[slot] = {b.linearVelocity, b.angularVelocity};
+    }
+}
+
+// Gravity, forces and damping over one substep, on the dynamic bodies' solver velocities
+// (semi-implicit Euler: velocities first, positions later from the new velocities).
+void integrateVelocities(const Team& team, const IslandView& island, IslandWorkspace& work,
+                         const SlotPool<Body>& bodies, const StepContext& step) {
+    const float h = step.dt;
+    const IndexRange mine = team.share(island.bodyCount);
+    for (int i = mine.begin; i < mine.end; ++i) {
+        const Body& b = bodies[island.bodies[i]];
+        if (b.type != BodyType::Dynamic) continue;
+        Vec2 v = work.velocities[i].v;
+        float w = work.velocities[i].w;
+        v += h * b.invMass * (b.gravityScale * b.mass * step.gravity + b.force);
+        w += h * b.invInertia * b.torque;
+        // Damping, dv/dt = -c v, integrated with the Pade approximation
+        // exp(-c h) ~ 1 / (1 + c h): stable for any c h >= 0.
+        v *= 1.0f / (1.0f + h * b.linearDamping);
+        w *= 1.0f / (1.0f + h * b.angularDamping);
+        work.velocities[i] = {v, w};
     }
 }
 
@@ -53,9 +61,12 @@ bool beyondLetGoSeparation(const Joint& joint, float separationSquared, const St
 }
 
 // Build each joint's solver constraint in its group (no velocity is touched: the warm start
-// comes after, in warmStartJoints).
+// comes after, in warmStartJoints). The first substep of a step lets go of the joints beyond
+// their let-go separation; later substeps rebuild each constraint at the current poses from the
+// impulses the substep before stored, and keep a let-go joint inert.
 void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
-                   SlotPool<Joint>& joints, const StepContext& step, IslandReport& report) {
+                   SlotPool<Joint>& joints, const StepContext& step, bool firstSubstep,
+                   IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
     work.groups.forEachGroup([&](auto, auto& group, int g) {
         const IndexRange mine = team.share(static_cast<int>(group.size()));
@@ -67,7 +78,9 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
             c = {};
             const float separationSquared = c.prepare(
                 joint, jointIndex, bodies, schedule.jointPairs[at], work.positions.data(), step);
-            if (beyondLetGoSeparation(joint, separationSquared, step)) {
+            if (!firstSubstep && joint.letGo) {
+                c.makeInert();
+            } else if (firstSubstep && beyondLetGoSeparation(joint, separationSquared, step)) {
                 joint.letGoFor(JointLetGoReason::Separation, std::sqrt(separationSquared));
                 ++report.letGoJoints;
                 c.makeInert();
@@ -126,18 +139,23 @@ void prepareMouseJoints(const IslandView& island, IslandWorkspace& work,
 void integratePositions(const Team& team, IslandWorkspace& work, const StepContext& step,
                         IslandReport& report) {
     const float h = step.dt;
+    // Each substep may move a body its share of the step's limit, so the fastest speed does not
+    // depend on the substep count (divided by 1, the limits are exactly the constants).
+    const float substeps = static_cast<float>(step.substepCount);
+    const float maxTranslation = kMaxTranslation / substeps;
+    const float maxRotation = kMaxRotation / substeps;
     const IndexRange mine = team.share(static_cast<int>(work.velocities.size()));
     for (int i = mine.begin; i < mine.end; ++i) {
         SolverVelocity& vel = work.velocities[i];
         SolverPose& pos = work.positions[i];
         Vec2 translation = h * vel.v;
-        if (dot(translation, translation) > kMaxTranslation * kMaxTranslation) {
-            vel.v *= kMaxTranslation / length(translation);
+        if (dot(translation, translation) > maxTranslation * maxTranslation) {
+            vel.v *= maxTranslation / length(translation);
             ++report.translationClamps;
         }
         float rotation = h * vel.w;
-        if (rotation * rotation > kMaxRotation * kMaxRotation) {
-            vel.w *= kMaxRotation / std::fabs(rotation);
+        if (rotation * rotation > maxRotation * maxRotation) {
+            vel.w *= maxRotation / std::fabs(rotation);
             ++report.rotationClamps;
         }
         pos.c += h * vel.v;
@@ -163,7 +181,7 @@ bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepCon
             b.sleepTime = 0.0f;
             minSleepTime = 0.0f;
         } else {
-            b.sleepTime += step.dt;
+            b.sleepTime += step.stepDt;
             minSleepTime = std::min(minSleepTime, b.sleepTime);
         }
     }
@@ -210,50 +228,20 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
     }
 }
 
-}  // namespace
-
-void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
-    work.scheduler.reserve(bound);
-    work.schedule.reserve(bound);
-    work.velocities.reserve(bound.bodies);
-    work.positions.reserve(bound.bodies);
-    work.positionScratch.pseudo.reserve(bound.bodies);
-    work.mouseConstraints.reserve(bound.mouseJoints);
-    work.contactSolver.reserve(bound.contacts);
-}
-
-void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
-                const SolverStorage& storage, const StepContext& step, int teamSize) {
-    const IslandView island = set.view(index);
-    IslandSchedule& schedule = work.schedule;
-    work.scheduler.plan(island, storage.bodies, storage.joints, schedule);
-    const std::size_t slots = static_cast<std::size_t>(schedule.slotCount(island));
-    resizeBuffer(work.velocities, slots);
-    resizeBuffer(work.positions, slots);
-    work.groups.resize(schedule.groupStart);
-    work.contactSolver.reset(island.contactCount, step);
-    resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
-    resizeBuffer(work.positionScratch.pseudo, slots);
-    for (std::vector<SweepTally>& round : work.positionScratch.tallies) {
-        resizeBuffer(round, static_cast<std::size_t>(teamSize));
-    }
-    resizeBuffer(work.memberReports, static_cast<std::size_t>(teamSize));
-}
-
-IslandReport solveIsland(const Team& team, const IslandSet& set, int index, IslandWorkspace& work,
-                         SolverStorage& storage, const StepContext& step) {
-    const IslandView island = set.view(index);
+// One substep (the whole step when there is one): forces, constraints built at the current
+// poses, warm start, velocity iterations, impulses stored, integration, then the position phase
+// of each strategy. Returns what the position phase did.
+PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& work,
+                                 SolverStorage& storage, const StepContext& step, bool firstSubstep,
+                                 IslandReport& mine) {
     const IslandSchedule& schedule = work.schedule;
     SlotPool<Body>& bodies = storage.bodies;
-    IslandReport& mine = work.memberReports[team.member()];
-    mine = IslandReport{};
-
     integrateVelocities(team, island, work, bodies, step);
     team.sync();
     work.contactSolver.prepare(team.share(island.contactCount), schedule.contactIds.data(),
                                schedule.contactPairs.data(), storage.contacts, bodies,
                                storage.shapes, step, work.positions.data());
-    prepareJoints(team, work, bodies, storage.joints, step, mine);
+    prepareJoints(team, work, bodies, storage.joints, step, firstSubstep, mine);
     team.sync();
 
     // Warm start: contacts, then joints, then mouse joints; each velocity sweep then solves
@@ -295,6 +283,60 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index, Isla
     PositionPhaseResult phase =
         solvePositionPhase(team, work.groups, schedule, work.contactSolver, work.positions.data(),
                            work.positionScratch, step.positionIterations, step.dt);
+    // The next substep's set-up reads the poses and stored impulses this one wrote.
+    if (step.substepCount > 1) team.sync();
+    return phase;
+}
+
+}  // namespace
+
+void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
+    work.scheduler.reserve(bound);
+    work.schedule.reserve(bound);
+    work.velocities.reserve(bound.bodies);
+    work.positions.reserve(bound.bodies);
+    work.positionScratch.pseudo.reserve(bound.bodies);
+    work.mouseConstraints.reserve(bound.mouseJoints);
+    work.contactSolver.reserve(bound.contacts);
+}
+
+void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
+                const SolverStorage& storage, const StepContext& step, int teamSize) {
+    const IslandView island = set.view(index);
+    IslandSchedule& schedule = work.schedule;
+    work.scheduler.plan(island, storage.bodies, storage.joints, schedule);
+    const std::size_t slots = static_cast<std::size_t>(schedule.slotCount(island));
+    resizeBuffer(work.velocities, slots);
+    resizeBuffer(work.positions, slots);
+    work.groups.resize(schedule.groupStart);
+    work.contactSolver.reset(island.contactCount, step);
+    resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
+    resizeBuffer(work.positionScratch.pseudo, slots);
+    for (std::vector<SweepTally>& round : work.positionScratch.tallies) {
+        resizeBuffer(round, static_cast<std::size_t>(teamSize));
+    }
+    resizeBuffer(work.memberReports, static_cast<std::size_t>(teamSize));
+}
+
+IslandReport solveIsland(const Team& team, const IslandSet& set, int index, IslandWorkspace& work,
+                         SolverStorage& storage, const StepContext& step) {
+    const IslandView island = set.view(index);
+    SlotPool<Body>& bodies = storage.bodies;
+    IslandReport& mine = work.memberReports[team.member()];
+    mine = IslandReport{};
+
+    // No sync before the first substep's forces: each member integrates the bodies it loaded.
+    loadBodies(team, island, work, bodies);
+    // Later substeps warm-start from the substep before, of the same length.
+    StepContext later = step;
+    later.dtRatio = 1.0f;
+    PositionPhaseResult phase;
+    int positionSweeps = 0;
+    for (int substep = 0; substep < step.substepCount; ++substep) {
+        phase = solveSubstep(team, island, work, storage, substep == 0 ? step : later, substep == 0,
+                             mine);
+        positionSweeps += phase.sweeps;
+    }
     writeBack(team, island, work, bodies, mine);
     team.sync();
     if (!team.leader()) return IslandReport{};
@@ -307,7 +349,7 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index, Isla
         report.edgeBodies += member.edgeBodies;
         report.discardedBodies += member.discardedBodies;
     }
-    report.positionIterations = phase.sweeps;
+    report.positionIterations = positionSweeps;
     report.fellAsleep = updateSleep(island, bodies, step, phase.solved);
     return report;
 }

@@ -38,9 +38,13 @@ void World::Impl::recordBodyEvents(const IslandSet::Range& island) {
 
 void World::Impl::step(float dt, int velocityIterations, int positionIterations) {
     StepContext context;
-    context.dt = dt;
-    context.invDt = 1.0f / dt;
-    context.dtRatio = std::min(previousInvDt * dt, 1.0f);
+    // With one substep, h is dt itself (dt / 1 is exact): the pipeline of Box2D 2.4.1.
+    const float h = dt / static_cast<float>(substepCount);
+    context.dt = h;
+    context.invDt = 1.0f / h;
+    context.dtRatio = std::min(previousInvDt * h, 1.0f);
+    context.substepCount = substepCount;
+    context.stepDt = dt;
     context.gravity = gravity;
     context.velocityIterations = velocityIterations;
     context.positionIterations = positionIterations;

@@ -33,6 +33,7 @@ World::Impl::Impl(const WorldDef& def)
       restitutionThreshold(def.restitutionThreshold),
       enableSleep(def.enableSleep),
       jointLetGoSeparation(def.jointLetGoSeparation),
+      substepCount(def.substepCount),
       pool(def.workerCount),
       contactManager(bodies, shapes, joints, contacts, pool, id),
       stepper(pool) {}
@@ -62,6 +63,7 @@ World::World(const WorldDef& def) {
     requireInRange(call, "def.contactBiasFactor", def.contactBiasFactor, 0.0f, 1.0f);
     requireNonNegative(call, "def.restitutionThreshold", def.restitutionThreshold);
     requireNonNegative(call, "def.jointLetGoSeparation", def.jointLetGoSeparation);
+    checkSubstepCount(call, "def.substepCount", def.substepCount);
     if (def.workerCount < 1 || def.workerCount > 64) {
         fail(call,
              "def.workerCount must be in [1, 64] (got " + std::to_string(def.workerCount) + ")");
@@ -92,6 +94,12 @@ void World::step(float dt, int velocityIterations, int positionIterations) {
     };
     checkIterations("velocityIterations", velocityIterations);
     checkIterations("positionIterations", positionIterations);
+    const int substeps = impl_->substepCount;
+    if (dt / static_cast<float>(substeps) < kMinTimeStep) {
+        fail(call, "dt / substepCount must be >= kMinTimeStep (" + formatFloat(kMinTimeStep) +
+                       " s) (got dt " + formatFloat(dt) + " s in " + std::to_string(substeps) +
+                       " substeps)");
+    }
     impl_->step(dt, velocityIterations, positionIterations);
 }
 
@@ -105,6 +113,15 @@ std::vector<WorldEdgeEvent> World::worldEdgeEvents() const {
 
 std::vector<BodyId> World::discardedBodies() const {
     return impl_->discarded;
+}
+
+int World::substepCount() const {
+    return impl_->substepCount;
+}
+
+void World::setSubstepCount(int count) {
+    checkSubstepCount("World::setSubstepCount", "count", count);
+    impl_->substepCount = count;
 }
 
 Vec2 World::gravity() const {

@@ -26,6 +26,13 @@ inline void checkBodyType(const char* call, const char* field, BodyType type) {
     }
 }
 
+inline void checkSubstepCount(const char* call, const char* field, int count) {
+    if (count < 1 || count > kMaxSubsteps) {
+        fail(call, std::string(field) + " must be in [1, kMaxSubsteps = " +
+                       std::to_string(kMaxSubsteps) + "] (got " + std::to_string(count) + ")");
+    }
+}
+
 inline void checkContactCorrection(const char* call, const char* field,
                                    ContactCorrection correction) {
     int value = static_cast<int>(correction);

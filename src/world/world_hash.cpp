@@ -147,6 +147,8 @@ std::uint64_t World::stateHash() const {
     h.add(w.restitutionThreshold);
     h.add(w.enableSleep);
     h.add(w.jointLetGoSeparation);
+    // Hashed only when it is not 1, so that hashes recorded before substeps existed still hold.
+    if (w.substepCount != 1) h.add(w.substepCount);
     h.add(w.previousInvDt);
     h.add(w.contactManager.hasNewShapes());
 

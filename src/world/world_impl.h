@@ -38,6 +38,7 @@ struct World::Impl {
     float restitutionThreshold;
     bool enableSleep;
     float jointLetGoSeparation;  // m; 0: never
+    int substepCount;            // [1, kMaxSubsteps]
 
     SlotPool<Body> bodies;
     SlotPool<Shape> shapes;
@@ -52,7 +53,8 @@ struct World::Impl {
     std::vector<WorldEdgeEvent> edgeEvents;    // bodies held at the world's edge by it
     std::vector<BodyId> discarded;             // bodies whose solved state it discarded
 
-    float previousInvDt = 0.0f;  // 1/dt of the last step; 0 before the first
+    // 1/h of the last step's substeps (1/dt with one substep); 0 before the first step
+    float previousInvDt = 0.0f;
     StepStats stats;
 
     void step(float dt, int velocityIterations, int positionIterations);

@@ -99,6 +99,8 @@ std::string usage() {
            "  --hz F            steps per second (default 60)\n"
            "  --vel-iters N     velocity iterations per step (default 8)\n"
            "  --pos-iters N     position iterations per step (default 3)\n"
+           "  --substeps N      substeps per step, in [1, 64] (default 1); the iteration\n"
+           "                    counts apply in each substep\n"
            "  --csv FILE        also write the table to FILE as CSV\n"
            "  --html FILE       write a self-contained page replaying the runs in a browser\n"
            "                    (the --scene, or pendulum_drag, chain_drag, bridge_heavy and\n"
@@ -174,6 +176,8 @@ CliOptions parseCli(const std::vector<std::string>& args) {
         } else if (arg == "--pos-iters") {
             options.positionIterations =
                 static_cast<int>(parseInteger(arg, value(), 0, kMaxIterations));
+        } else if (arg == "--substeps") {
+            options.substeps = static_cast<int>(parseInteger(arg, value(), 1, kMaxSubsteps));
         } else if (arg == "--csv") {
             options.csvPath = value();
         } else if (arg == "--docs") {

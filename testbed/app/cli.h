@@ -22,6 +22,7 @@ struct CliOptions {
     float hz = 60.0f;
     int velocityIterations = kDefaultVelocityIterations;
     int positionIterations = kDefaultPositionIterations;
+    int substeps = 1;  ///< WorldDef::substepCount
     std::optional<std::string> csvPath;
     std::optional<std::string> htmlPath;  ///< write the browser replay here
     std::string docsDir = "docs";         ///< report: where results.md goes

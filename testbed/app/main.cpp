@@ -32,6 +32,7 @@ std::vector<testbed::TableRow> runAll(const testbed::CliOptions& options) {
                 sceneOptions.contactCorrection = contact;
                 sceneOptions.biasFactor = options.bias;
                 sceneOptions.hz = options.hz;
+                sceneOptions.substepCount = options.substeps;
                 scenes::Scene scene = scenes::buildScene(info, sceneOptions);
 
                 scenes::RunSettings settings;
@@ -128,7 +129,9 @@ int main(int argc, char** argv) {
         std::vector<testbed::TableRow> rows = runAll(options);
         std::cout << options.steps << " steps at " << options.hz << " Hz, "
                   << options.velocityIterations << " velocity / " << options.positionIterations
-                  << " position iterations\n";
+                  << " position iterations";
+        if (options.substeps > 1) std::cout << " in each of " << options.substeps << " substeps";
+        std::cout << "\n";
         testbed::printTable(std::cout, rows);
         if (options.csvPath) {
             std::ofstream csv(*options.csvPath);

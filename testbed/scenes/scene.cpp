@@ -118,6 +118,7 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
     def.defaultPositionSolver = options.solver;
     def.contactCorrection = options.contactCorrection;
     def.workerCount = options.workerCount;
+    def.substepCount = options.substepCount;
     scene.world = std::make_unique<World>(def);
     info.build(scene, options);
     return scene;

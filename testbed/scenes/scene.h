@@ -22,7 +22,8 @@ struct SceneOptions {
     ContactCorrection contactCorrection = ContactCorrection::NGS;
     float hz = 60.0f;
     Vec2 gravity{0.0f, -10.0f};
-    int workerCount = 1;  ///< WorldDef::workerCount
+    int workerCount = 1;   ///< WorldDef::workerCount
+    int substepCount = 1;  ///< WorldDef::substepCount
 
     /// A revolute joint def at a world anchor carrying this scene's solver and bias.
     RevoluteJointDef jointAt(BodyId a, BodyId b, Vec2 anchor) const;

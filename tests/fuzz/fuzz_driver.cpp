@@ -1761,7 +1761,7 @@ private:
     }
 
     void worldSettings() {
-        switch (random_.below(3)) {
+        switch (random_.below(4)) {
             case 0: {
                 Arg<Vec2> g = random_.chance(0.5f) ? Arg<Vec2>{{0.0f, -10.0f}} : values_->gravity();
                 trace("setGravity " + text(g.value));
@@ -1775,6 +1775,17 @@ private:
                 trace("setContactCorrection " + std::to_string(int(c)));
                 attempt("World::setContactCorrection", verdict(bad),
                         [&] { journal_.setContactCorrection(c); });
+                break;
+            }
+            case 2: {
+                // Mostly one substep (each substep is a whole solve), sometimes a few.
+                bool bad = hostile_ > 0.0f && random_.chance(0.3f);
+                const int badChoices[] = {0, -1, kMaxSubsteps + 1, std::numeric_limits<int>::min()};
+                const int goodChoices[] = {1, 1, 2, 4, 8};
+                const int n = bad ? badChoices[random_.below(4)] : goodChoices[random_.below(5)];
+                trace("setSubstepCount " + std::to_string(n));
+                attempt("World::setSubstepCount", verdict(bad),
+                        [&] { journal_.setSubstepCount(n); });
                 break;
             }
             default: {
@@ -1821,6 +1832,8 @@ private:
                 choices[random_.below(4)];
             bad = true;
         }
+        // Each substep must be at least kMinTimeStep long too.
+        bad = bad || !(dt / static_cast<float>(world_->substepCount()) >= kMinTimeStep);
         trace("step dt=" + text(dt) + " " + std::to_string(velocityIterations) + "/" +
               std::to_string(positionIterations));
         if (attempt("World::step", verdict(bad),
@@ -2140,16 +2153,20 @@ private:
             }
         }
         for (JointId j : w.jointIds()) {
-            JointLimit l = w.jointLimit(j);
-            JointMotor m = w.jointMotor(j);
-            std::printf(
-                "joint %s %s-%s anchors %s %s solver %d bias %s limit %d %s %s motor %d %s "
-                "%s\n",
-                idText(j).c_str(), idText(w.jointBodyA(j)).c_str(), idText(w.jointBodyB(j)).c_str(),
-                text(w.jointAnchorA(j)).c_str(), text(w.jointAnchorB(j)).c_str(),
-                int(w.jointPositionSolver(j)), text(w.jointBiasFactor(j)).c_str(), int(l.enabled),
-                text(l.lower).c_str(), text(l.upper).c_str(), int(m.enabled), text(m.speed).c_str(),
-                text(m.maxTorque).c_str());
+            std::printf("joint %s %s %s-%s anchors %s %s solver %d bias %s", idText(j).c_str(),
+                        jointTypeName(w.jointType(j)), idText(w.jointBodyA(j)).c_str(),
+                        idText(w.jointBodyB(j)).c_str(), text(w.jointAnchorA(j)).c_str(),
+                        text(w.jointAnchorB(j)).c_str(), int(w.jointPositionSolver(j)),
+                        text(w.jointBiasFactor(j)).c_str());
+            // The limit and motor calls are the revolute joint's.
+            if (w.jointType(j) == JointType::Revolute) {
+                JointLimit l = w.jointLimit(j);
+                JointMotor m = w.jointMotor(j);
+                std::printf(" limit %d %s %s motor %d %s %s", int(l.enabled), text(l.lower).c_str(),
+                            text(l.upper).c_str(), int(m.enabled), text(m.speed).c_str(),
+                            text(m.maxTorque).c_str());
+            }
+            std::printf("\n");
         }
         for (const LiveMouse& m : liveMice_) {
             if (w.isValid(m.id)) {

@@ -410,6 +410,10 @@ void Journal::setContactCorrection(ContactCorrection correction) {
     world_->setContactCorrection(correction);
     lines_.push_back("correction " + num(int(correction)));
 }
+void Journal::setSubstepCount(int count) {
+    world_->setSubstepCount(count);
+    lines_.push_back("substeps " + num(count));
+}
 void Journal::setSleepEnabled(bool enabled) {
     world_->setSleepEnabled(enabled);
     lines_.push_back("sleep " + num(enabled));
@@ -994,6 +998,9 @@ ReplayResult replay(std::istream& in) {
         } else if (command == "correction") {
             auto c = static_cast<ContactCorrection>(f.i());
             call = [&w, c] { w.setContactCorrection(c); };
+        } else if (command == "substeps") {
+            const int n = f.i();
+            call = [&w, n] { w.setSubstepCount(n); };
         } else if (command == "sleep") {
             bool on = f.b();
             call = [&w, on] { w.setSleepEnabled(on); };

@@ -84,6 +84,7 @@ public:
     void setMouseTarget(MouseJointId id, Vec2 target);
     void setGravity(Vec2 gravity);
     void setContactCorrection(ContactCorrection correction);
+    void setSubstepCount(int count);
     void setSleepEnabled(bool enabled);
     void step(float dt, int velocityIterations, int positionIterations);
 
