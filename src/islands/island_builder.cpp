@@ -18,6 +18,16 @@ void IslandBuilder::build(SolverStorage& storage, IslandSet& set) {
     clear(bodyVisited_, bodies.capacity());
     clear(jointVisited_, storage.joints.capacity());
     clear(contactVisited_, storage.contacts.capacity());
+    // A gear is listed by its bodies A and B only, yet it moves C and D too: whoever reaches
+    // one of its joints must reach the gear (collect), or C or D could end up in another island
+    // (a D joined only to a static B is never reached from B).
+    gearLinks_.clear();
+    storage.joints.forEach([&](std::int32_t index, const Joint& joint) {
+        if (const auto* gear = std::get_if<GearJoint>(&joint.data)) {
+            gearLinks_.push_back({gear->side1.joint, index});
+            gearLinks_.push_back({gear->side2.joint, index});
+        }
+    });
     for (std::int32_t seed = bodies.capacity() - 1; seed >= 0; --seed) {
         if (!bodies.isAlive(seed) || bodyVisited_[seed]) continue;
         const Body& body = bodies[seed];
@@ -88,11 +98,19 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet
             if (joint.letGo && joint.gearCount == 0) continue;
             jointVisited_[jointIndex] = 1;
             std::int32_t other = reach(joint.edges[1 - side].body, storage, set, range.bodyBegin);
+            if (joint.gearCount > 0) {
+                for (const GearLink& link : gearLinks_) {
+                    if (link.joint != jointIndex) continue;
+                    const Joint& gear = storage.joints[link.gear];
+                    reach(gear.bodyA(), storage, set, range.bodyBegin);
+                    reach(gear.bodyB(), storage, set, range.bodyBegin);
+                }
+            }
             if (joint.letGo) continue;
             JointSlots slots = side == 0 ? JointSlots{self, other, kNoSlot, kNoSlot}
                                          : JointSlots{other, self, kNoSlot, kNoSlot};
-            // A gear's C and D: its joints connect them to A and B (let go or not), so they
-            // are in this island; reached here for their slots (a static body is not expanded).
+            // A gear's C and D: its joints join them to this island (let go or not, and
+            // reached from either end: see gearLinks_); reached here for their slots.
             const std::array<std::int32_t, 2> extra = joint.extraBodies();
             for (int k = 0; k < 2; ++k) {
                 if (extra[k] != -1) slots[2 + k] = reach(extra[k], storage, set, range.bodyBegin);

@@ -33,6 +33,12 @@ private:
     std::int32_t reach(std::int32_t body, SolverStorage& storage, IslandSet& set,
                        std::int32_t bodyBegin);
 
+    /// A gear and one of the two joints it is built on.
+    struct GearLink {
+        std::int32_t joint;
+        std::int32_t gear;
+    };
+    std::vector<GearLink> gearLinks_;  // every gear's two, rebuilt each build
     std::vector<std::uint8_t> bodyVisited_;
     std::vector<std::uint8_t> jointVisited_;
     std::vector<std::uint8_t> contactVisited_;

@@ -293,6 +293,37 @@ TEST(GearJoint, ABaseOnlyALetGoJointConnectsIsStillInTheGearsIsland) {
     EXPECT_EQ(world.lastStepStats().islandCount, 1);
 }
 
+TEST(GearJoint, ABaseJoinedOnlyToAStaticBodyIsStillInTheGearsIsland) {
+    // joint2 turns a static B about a dynamic base D, created last so that the island search
+    // starts at D. D reaches joint2 and the static B, which joins nothing; only the gear, which
+    // D's own joint list does not hold, ties D to wheel1's island. (The fuzz found D's slot
+    // pointing into another island.)
+    World world{WorldDef{}};
+    BodyId ground = world.createBody(BodyDef{});
+    BodyId wheel1 = disc(world, {0, 0}, 1.0f);
+    BodyDef postDef;
+    postDef.position = {3, 0};
+    BodyId post = world.createBody(postDef);  // static: joint2's body B, the gear's B
+    BodyId base = disc(world, {3, 0}, 0.5f);  // joint2's body A: the gear's D
+    JointId pin1 = world.createJoint(RevoluteJointDef::atWorldAnchor(ground, wheel1, {0, 0}));
+    JointId pin2 = world.createJoint(RevoluteJointDef::atWorldAnchor(base, post, {3, 0}));
+    GearJointDef gd;
+    gd.joint1 = pin1;
+    gd.joint2 = pin2;
+    gd.ratio = 2.0f;
+    JointId gear = world.createJoint(gd);
+    world.setBodyAngularVelocity(wheel1, 3.0f);
+    for (int i = 0; i < 30; ++i) {
+        world.step(kDt);
+        ASSERT_EQ(world.lastStepStats().islandCount, 1) << "step " << i;
+        ASSERT_TRUE(std::isfinite(world.jointSeparation(gear))) << "step " << i;
+    }
+    // The gear turns the base about the fixed post as wheel1 turns: joint2's angle is minus
+    // its base's, so wheel1's angle + 2 (post - base angle) stays what it was, 0.
+    EXPECT_LT(world.jointSeparation(gear), 1e-3f);
+    EXPECT_GT(std::fabs(world.bodyAngle(base)), 0.1f);
+}
+
 TEST(GearJoint, BadInputIsRefusedAndChangesNothing) {
     RackAndPinion r(PositionSolver::FullNGS);
     World& world = r.world;
