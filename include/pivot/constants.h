@@ -72,6 +72,22 @@ constexpr float kDefaultBaumgarteBias = 0.2f;
 constexpr float kDefaultPseudoVelocityBias = 0.2f;
 constexpr float kDefaultNgsBias = 1.0f;
 
+/// Soft step's defaults (PositionSolver::SoftStep, ContactCorrection::Soft), Box2D v3's: a joint's
+/// position error is a spring of 60 Hz at damping ratio 2 on the joint's own effective mass,
+/// a contact's penetration one of 30 Hz at damping ratio 10 that never pushes apart faster than
+/// 3 m/s. Joints are stiffer than contacts because a stack may yield a little where a chain
+/// must not; both are heavily damped (a ratio of 1 is critical) so the correction never
+/// overshoots into a bounce. Each is used at most at kMaxSoftHertzShare of the substep rate.
+constexpr float kDefaultJointHertz = 60.0f;
+constexpr float kDefaultJointDampingRatio = 2.0f;
+constexpr float kDefaultContactHertz = 30.0f;
+constexpr float kDefaultContactDampingRatio = 10.0f;
+constexpr float kDefaultContactPushSpeed = 3.0f;  ///< m/s
+/// A soft row's stiffness is at most this share of the substep rate (hertz <= share / h): with
+/// omega h <= pi, a row at damping ratio 2 corrects at most pi / (4 + pi), 44%, of its error per
+/// substep, so it cannot throw the bodies past it the way a full correction can.
+constexpr float kMaxSoftHertzShare = 0.5f;
+
 /// A pulley joint's ratio lies in [kMinPulleyRatio, 1 / kMinPulleyRatio]: beyond, one side's
 /// share of the effective mass vanishes and the constraint is as good as one-sided.
 constexpr float kMinPulleyRatio = 0.01f;

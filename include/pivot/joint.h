@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "pivot/constants.h"
 #include "pivot/id.h"
 #include "pivot/math.h"
 #include "pivot/solvers.h"
@@ -71,6 +72,21 @@ struct JointLetGoEvent {
     float separation = 0.0f;  ///< m, |anchorB - anchorA| when the step let it go
 };
 
+/// How stiff a SoftStep joint holds together (PositionSolver::SoftStep; other strategies keep
+/// it but do not read it): its position error is pulled back by a spring of `hertz` with
+/// `dampingRatio` on the joint's own effective mass, so the stiffness does not depend on the
+/// masses it joins. Each substep uses at most kMaxSoftHertzShare of the substep rate (30 Hz at
+/// 60 Hz with one substep, 60 Hz from two substeps on).
+struct JointSoftness {
+    float hertz = kDefaultJointHertz;                ///< > 0, at most kMaxMagnitude
+    float dampingRatio = kDefaultJointDampingRatio;  ///< >= 0, at most kMaxMagnitude; 1: critical
+
+    friend bool operator==(const JointSoftness& a, const JointSoftness& b) {
+        return a.hertz == b.hertz && a.dampingRatio == b.dampingRatio;
+    }
+    friend bool operator!=(const JointSoftness& a, const JointSoftness& b) { return !(a == b); }
+};
+
 /// Everything needed to create a revolute joint.
 struct RevoluteJointDef {
     BodyId bodyA;
@@ -88,6 +104,7 @@ struct RevoluteJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
+    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
     JointLimit limit;
     JointMotor motor;
     /// m, in [0, kMaxMagnitude]: let the joint go when its anchors are further apart than this
@@ -145,6 +162,7 @@ struct DistanceJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
+    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
     /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far its
     /// length is outside what the joint allows (World::jointSeparation).
     std::optional<float> letGoSeparation;
@@ -175,6 +193,7 @@ struct PulleyJointDef {
     std::optional<float> lengthB;
     std::optional<PositionSolver> positionSolver;
     std::optional<float> biasFactor;
+    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
     /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation).
     std::optional<float> letGoSeparation;
     bool collideConnected = true;  ///< as Box2D's pulley: the two loads may touch
@@ -228,6 +247,7 @@ struct PrismaticJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
+    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
     /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far anchor B
     /// is off the axis line, and beyond a reached limit (World::jointSeparation).
     std::optional<float> letGoSeparation;
@@ -267,6 +287,7 @@ struct WeldJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
+    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
     /// As RevoluteJointDef::letGoSeparation, measured as |anchorB - anchorA| (0 while the point
     /// is soft: World::jointSeparation).
     std::optional<float> letGoSeparation;
@@ -308,6 +329,7 @@ struct WheelJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
+    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
     /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far the
     /// anchor is off the axis line, and beyond a reached limit (World::jointSeparation).
     std::optional<float> letGoSeparation;
@@ -350,6 +372,7 @@ struct GearJointDef {
     float ratio = 1.0f;
     std::optional<PositionSolver> positionSolver;
     std::optional<float> biasFactor;
+    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
     /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation), in
     /// joint1's units: rad for a revolute joint, m for a prismatic one.
     std::optional<float> letGoSeparation;

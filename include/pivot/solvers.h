@@ -24,17 +24,24 @@ enum class PositionSolver : std::uint8_t {
     ModifiedNGS,
     /// As ModifiedNGS, with the effective mass rebuilt at every solve. The default.
     FullNGS,
+    /// Box2D v3's soft step: the error is a stiff, heavily damped spring (the joint's
+    /// JointSoftness: hertz and damping ratio), solved implicitly in the velocity iterations
+    /// from the error at the start of each substep; after integration, relax iterations
+    /// (positionIterations of them) solve the joint again without the spring's bias, so the
+    /// correction leaves no momentum behind. Meant for substeps (WorldDef::substepCount; Box2D
+    /// v3 uses 4). No bias factor.
+    SoftStep,
 };
 
-constexpr int kPositionSolverCount = 4;
+constexpr int kPositionSolverCount = 5;
 
 /// The solver's name as the testbed spells it: baumgarte, pseudo_velocity, modified_ngs,
-/// full_ngs. An out-of-range value gives "invalid".
+/// full_ngs, soft_step. An out-of-range value gives "invalid".
 const char* positionSolverName(PositionSolver solver);
 /// Parses a name made by positionSolverName; nullopt for anything else.
 std::optional<PositionSolver> parsePositionSolver(std::string_view name);
 /// The bias factor a joint uses when its def does not set one: 0.2 for Baumgarte and
-/// PseudoVelocity, 1.0 for the NGS pair.
+/// PseudoVelocity, 1.0 for the NGS pair, 0 for SoftStep (which has none).
 float defaultBiasFactor(PositionSolver solver);
 
 /// How contacts remove penetration (all contacts of a world use the same).
@@ -45,6 +52,11 @@ enum class ContactCorrection : std::uint8_t {
     /// transforms (the manifold is kept in the bodies' local frames, so collision is not run
     /// again) and move the bodies apart, in the same iterations as NGS joints.
     NGS,
+    /// Box2D v3's soft contacts: the penetration is a spring (WorldDef::contactHertz,
+    /// contactDampingRatio) pushing apart no faster than WorldDef::contactPushSpeed, solved in
+    /// the velocity iterations; after integration, relax iterations without it (and with
+    /// restitution). Goes with SoftStep joints and substeps.
+    Soft,
 };
 
 }  // namespace pivot

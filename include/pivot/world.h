@@ -35,6 +35,12 @@ struct WorldDef {
     /// Fraction of a contact's penetration (beyond kLinearSlop) removed per step (Baumgarte)
     /// or per solve (NGS), in [0, 1].
     float contactBiasFactor = kDefaultContactBias;
+    /// ContactCorrection::Soft's spring: hertz (> 0; used at most at kMaxSoftHertzShare of the
+    /// substep rate), damping ratio (>= 0) and the fastest it pushes bodies apart (m/s, > 0),
+    /// each at most kMaxMagnitude.
+    float contactHertz = kDefaultContactHertz;
+    float contactDampingRatio = kDefaultContactDampingRatio;
+    float contactPushSpeed = kDefaultContactPushSpeed;
     /// m/s: contacts closing slower than this do not bounce.
     float restitutionThreshold = kRestitutionThreshold;
     /// Let islands that have come to rest sleep (see BodyDef::allowSleep).
@@ -96,7 +102,8 @@ struct StepStats {
     int jointCount = 0;  ///< joints solved
     /// Bodies whose move this step was limited by kMaxTranslation / kMaxRotation (with
     /// substeps, each substep's limit is its share of the step's: a body is counted once per
-    /// substep that limited it).
+    /// substep that limited it), and bodies whose final velocity was held at kMaxSpeed /
+    /// kMaxAngularSpeed (relax sweeps act after the move's limit).
     int translationClamps = 0;
     int rotationClamps = 0;
     /// The most NGS position iterations any island ran, summed over its substeps (fewer than
@@ -434,6 +441,11 @@ public:
     /// A value in [0, 1], or nullopt for the solver's default. Refused for friction and motor
     /// joints.
     void setJointBiasFactor(JointId id, std::optional<float> biasFactor);
+    /// The stiffness a SoftStep joint holds with (JointSoftness; kept, unread, by the other
+    /// strategies). The setter checks it as the defs do, wakes the joint's bodies, and is
+    /// refused for friction and motor joints.
+    JointSoftness jointSoftness(JointId id) const;
+    void setJointSoftness(JointId id, const JointSoftness& softness);
     /// The value of the def's userData, or the last one set; pivot2d never reads it.
     std::uint64_t jointUserData(JointId id) const;
     void setJointUserData(JointId id, std::uint64_t userData);

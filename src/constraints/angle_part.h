@@ -22,6 +22,7 @@
 #include <cmath>
 
 #include "constraints/constraint_bodies.h"
+#include "constraints/rows.h"
 #include "constraints/solver_body.h"
 #include "pivot/constants.h"
 
@@ -40,10 +41,10 @@ struct AnglePart {
     float motorImpulse = 0.0f;     // accumulated, N m s
     float lowerImpulse = 0.0f;
     float upperImpulse = 0.0f;
-    // Velocity targets added to the limits' Cdot (rad/s): the speculative C / h while a limit is
-    // not reached, and, for Baumgarte joints, the correction of an overshot limit.
-    float lowerTerm = 0.0f;
-    float upperTerm = 0.0f;
+    // Velocity targets added to the limits' Cdot (rows.h): the speculative C / h while a limit is
+    // not reached, and a strategy's bias for an overshot one.
+    BoundTerm lowerTerm;
+    BoundTerm upperTerm;
 
     /// The axial impulse the warm start applies to B (and minus it to A).
     float axialImpulse() const { return motorImpulse + lowerImpulse - upperImpulse; }
@@ -53,6 +54,12 @@ struct AnglePart {
 inline float jointAngle(const AnglePart& a, const SolverPose* positions,
                         const ConstraintBodies& b) {
     return positions[b.indexB].a - positions[b.indexA].a - a.referenceAngle;
+}
+
+/// The speculative limit terms for a step of 1 / invH from the stored angle.
+inline void setLimitTerms(AnglePart& a, float invH) {
+    a.lowerTerm = BoundTerm::speculative(a.angle - a.lower, invH);
+    a.upperTerm = BoundTerm::speculative(a.upper - a.angle, invH);
 }
 
 /// Start of the step: the angle, the axial mass and the speculative limit terms.
@@ -65,8 +72,7 @@ inline void prepareAngle(const ConstraintBodies& b, AnglePart& a, const SolverPo
         a.upperImpulse = 0.0f;
     }
     if (!a.motorEnabled || b.fixedRotation()) a.motorImpulse = 0.0f;
-    a.lowerTerm = std::max(a.angle - a.lower, 0.0f) * invDt;
-    a.upperTerm = std::max(a.upper - a.angle, 0.0f) * invDt;
+    setLimitTerms(a, invDt);
 }
 
 /// The limits' position error as the NGS solves see it (see the header comment): negative
@@ -85,10 +91,10 @@ inline float limitPositionError(const AnglePart& a, float angle) {
 }
 
 /// Motor (unless withMotor is false: pseudo velocities have no motor), then lower and upper
-/// limit, on the given velocities.
-template <bool withMotor = true>
-inline void solveAngleVelocity(const ConstraintBodies& b, AnglePart& a,
-                               SolverVelocity* velocities) {
+/// limit, on the given velocities, the limits as `rows` say (rows.h; `soft` for Rows::Soft).
+template <bool withMotor = true, Rows rows = Rows::Biased>
+inline void solveAngleVelocity(const ConstraintBodies& b, AnglePart& a, SolverVelocity* velocities,
+                               const SoftFactors& soft = SoftFactors{}) {
     if (b.fixedRotation()) return;
     float& wA = velocities[b.indexA].w;
     float& wB = velocities[b.indexB].w;
@@ -105,7 +111,8 @@ inline void solveAngleVelocity(const ConstraintBodies& b, AnglePart& a,
     if (a.limitEnabled) {
         {
             float cdot = wB - wA;
-            float impulse = -a.axialMass * (cdot + a.lowerTerm);
+            float impulse = a.lowerTerm.soften<rows>(
+                -a.axialMass * (cdot + a.lowerTerm.target<rows>()), a.lowerImpulse, soft);
             float old = a.lowerImpulse;
             a.lowerImpulse = std::max(old + impulse, 0.0f);
             impulse = a.lowerImpulse - old;
@@ -114,7 +121,8 @@ inline void solveAngleVelocity(const ConstraintBodies& b, AnglePart& a,
         }
         {
             float cdot = wA - wB;
-            float impulse = -a.axialMass * (cdot + a.upperTerm);
+            float impulse = a.upperTerm.soften<rows>(
+                -a.axialMass * (cdot + a.upperTerm.target<rows>()), a.upperImpulse, soft);
             float old = a.upperImpulse;
             a.upperImpulse = std::max(old + impulse, 0.0f);
             impulse = a.upperImpulse - old;
@@ -129,8 +137,8 @@ inline void solveAngleVelocity(const ConstraintBodies& b, AnglePart& a,
 inline void setLimitBias(AnglePart& a, float k) {
     if (!a.limitEnabled) return;
     float error = limitPositionError(a, a.angle);
-    if (a.angle - a.lower <= 0.0f) a.lowerTerm = k * std::min(error, 0.0f);
-    if (a.upper - a.angle <= 0.0f) a.upperTerm = -k * std::max(error, 0.0f);
+    if (a.angle - a.lower <= 0.0f) a.lowerTerm = {k * std::min(error, 0.0f), true};
+    if (a.upper - a.angle <= 0.0f) a.upperTerm = {-k * std::max(error, 0.0f), true};
 }
 
 /// One NGS solve of the limit on positions: re-measure the angle, rotate the bodies by

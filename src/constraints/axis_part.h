@@ -15,6 +15,7 @@
 #include <algorithm>
 
 #include "constraints/constraint_bodies.h"
+#include "constraints/rows.h"
 #include "constraints/solver_body.h"
 #include "pivot/constants.h"
 #include "pivot/math.h"
@@ -115,8 +116,8 @@ struct AxisLimits {
     float upper = 0.0f;
     float lowerImpulse = 0.0f;  // accumulated, N s
     float upperImpulse = 0.0f;
-    float lowerTerm = 0.0f;  // velocity targets added to Cdot (speculative, or Baumgarte's)
-    float upperTerm = 0.0f;
+    BoundTerm lowerTerm;  // velocity targets added to Cdot (rows.h)
+    BoundTerm upperTerm;
 
     /// Loads a joint's limit settings and stored impulses (zero while disabled) for a step
     /// whose rows start at coordinate x, the step 1 / invH long.
@@ -136,8 +137,8 @@ struct AxisLimits {
 
     /// The speculative terms for a step of length 1 / invH from coordinate x.
     void setTerms(float x, float invH) {
-        lowerTerm = std::max(x - lower, 0.0f) * invH;
-        upperTerm = std::max(upper - x, 0.0f) * invH;
+        lowerTerm = BoundTerm::speculative(x - lower, invH);
+        upperTerm = BoundTerm::speculative(upper - x, invH);
     }
 
     /// Whether the NGS solve treats the limit as active at coordinate x, and its error then:
@@ -156,23 +157,26 @@ struct AxisLimits {
     /// its speculative term.
     void setBias(float x, float k) {
         const float error = positionError(x);
-        if (x - lower <= 0.0f) lowerTerm = k * std::min(error, 0.0f);
-        if (upper - x <= 0.0f) upperTerm = -k * std::max(error, 0.0f);
+        if (x - lower <= 0.0f) lowerTerm = {k * std::min(error, 0.0f), true};
+        if (upper - x <= 0.0f) upperTerm = {-k * std::max(error, 0.0f), true};
     }
 
-    /// One velocity solve of both bounds along the row.
-    void solve(const ConstraintBodies& b, const AxisRow& r, float mass,
-               SolverVelocity* velocities) {
+    /// One velocity solve of both bounds along the row, as `rows` says (rows.h).
+    template <Rows rows = Rows::Biased>
+    void solve(const ConstraintBodies& b, const AxisRow& r, float mass, SolverVelocity* velocities,
+               const SoftFactors& soft = SoftFactors{}) {
         {
             const float cdot = axisSpeed(r, velocities[b.indexA], velocities[b.indexB]);
-            const float lambda = -mass * (cdot + lowerTerm);
+            const float lambda = lowerTerm.soften<rows>(-mass * (cdot + lowerTerm.target<rows>()),
+                                                        lowerImpulse, soft);
             const float old = lowerImpulse;
             lowerImpulse = std::max(old + lambda, 0.0f);
             applyAxisImpulse(b, r, velocities, lowerImpulse - old);
         }
         {
             const float cdot = axisSpeedFlipped(r, velocities[b.indexA], velocities[b.indexB]);
-            const float lambda = -mass * (cdot + upperTerm);
+            const float lambda = upperTerm.soften<rows>(-mass * (cdot + upperTerm.target<rows>()),
+                                                        upperImpulse, soft);
             const float old = upperImpulse;
             upperImpulse = std::max(old + lambda, 0.0f);
             applyAxisImpulseFlipped(b, r, velocities, upperImpulse - old);

@@ -70,6 +70,24 @@ void solveNormalPointByPoint(ContactVelocityConstraint& c, SolverVelocity& A, So
     }
 }
 
+// Soft contacts (rows.h): with `biased`, each point's penetration is a spring pushing apart at
+// up to its soft target, softened; without (the relax sweeps), the rigid row with restitution.
+template <bool biased>
+void solveNormalSoft(ContactVelocityConstraint& c, SolverVelocity& A, SolverVelocity& B,
+                     const SoftFactors& soft) {
+    for (int j = 0; j < c.pointCount; ++j) {
+        ContactVelocityPoint& p = c.points[j];
+        float vn = dot(relativeVelocity(A, B, p.rA, p.rB), c.normal);
+        float lambda = biased ? soft.massScale * (-p.normalMass * (vn - p.softTarget)) -
+                                    soft.impulseScale * p.normalImpulse
+                              : -p.normalMass * (vn - p.velocityBias);
+        float total = std::max(p.normalImpulse + lambda, 0.0f);
+        lambda = total - p.normalImpulse;
+        p.normalImpulse = total;
+        applyImpulse(A, B, c, p, lambda * c.normal);
+    }
+}
+
 // The two normal impulses x of a two-point manifold together: find x >= 0 with
 // vn = K x + b' >= 0 and x_i vn_i = 0, where b' = vn_now - bias - K x_old. Of the four cases
 // (both points pushing; only the first; only the second; neither) the first consistent one is
@@ -165,8 +183,15 @@ MeasuredPoint measure(const ContactPositionConstraint& pc, const Transform& xfA,
 void ContactSolver::reset(int count, const StepContext& step) {
     positionBias_ = step.contactBiasFactor;
     baumgarte_ = step.contactCorrection == ContactCorrection::Baumgarte;
+    soft_ = step.contactCorrection == ContactCorrection::Soft;
+    if (soft_) {
+        const float hertz = std::min(step.contactHertz, kMaxSoftHertzShare * step.invDt);
+        softness_ = SoftFactors::of(hertz, step.contactDampingRatio, step.dt);
+        pushSpeed_ = step.contactPushSpeed;
+    }
+    const bool ngs = step.contactCorrection == ContactCorrection::NGS;
     resizeBuffer(velocity_, static_cast<std::size_t>(count));
-    resizeBuffer(position_, baumgarte_ ? 0 : static_cast<std::size_t>(count));
+    resizeBuffer(position_, ngs ? static_cast<std::size_t>(count) : 0);
 }
 
 void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
@@ -240,10 +265,15 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
                 float push = -step.contactBiasFactor * step.invDt *
                              std::min(0.0f, wm.separations[j] + kLinearSlop);
                 p.velocityBias = std::max(p.velocityBias, push);
+            } else if (soft_) {
+                p.softTarget =
+                    std::min(-softness_.biasRate * std::min(0.0f, wm.separations[j] + kLinearSlop),
+                             pushSpeed_);
             }
         }
 
-        if (c.pointCount == 2) {
+        // Soft contacts solve their points one by one, as Box2D v3 does.
+        if (c.pointCount == 2 && !soft_) {
             const ContactVelocityPoint& p1 = c.points[0];
             const ContactVelocityPoint& p2 = c.points[1];
             float rn1A = cross(p1.rA, c.normal), rn1B = cross(p1.rB, c.normal);
@@ -285,11 +315,23 @@ void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities
         // Friction first: its bound depends on the normal impulse, and penetration matters
         // more than sliding, so the normal solve gets the last word.
         solveFriction(c, A, B);
-        if (c.pointCount == 2) {
+        if (soft_) {
+            solveNormalSoft<true>(c, A, B, softness_);
+        } else if (c.pointCount == 2) {
             solveNormalBlock(c, A, B);
         } else {
             solveNormalPointByPoint(c, A, B);
         }
+    }
+}
+
+void ContactSolver::relax(IndexRange range, SolverVelocity* velocities) {
+    for (int k = range.begin; k < range.end; ++k) {
+        ContactVelocityConstraint& c = velocity_[k];
+        SolverVelocity& A = velocities[c.indexA];
+        SolverVelocity& B = velocities[c.indexB];
+        solveFriction(c, A, B);
+        solveNormalSoft<false>(c, A, B, softness_);
     }
 }
 

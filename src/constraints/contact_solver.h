@@ -9,18 +9,22 @@
 // problem, solved by trying its four cases in turn) when their 2x2 K is well conditioned,
 // which is what lets boxes stack; otherwise only the first point is solved for velocity.
 //
-// Position error (penetration beyond kLinearSlop) is removed one of two ways
+// Position error (penetration beyond kLinearSlop) is removed one of three ways
 // (WorldDef::contactCorrection):
 //   Baumgarte: a velocity bias  beta / h * max(0, -(separation + slop))  at the start of step;
 //   NGS:       after integration, per point, re-measure the separation from the current
 //              transforms and the manifold kept in local frames, and move the bodies by
-//              -K^-1 C with C = clamp(beta (separation + slop), -kMaxLinearCorrection, 0).
+//              -K^-1 C with C = clamp(beta (separation + slop), -kMaxLinearCorrection, 0);
+//   Soft:      a spring (rows.h) with the target min(biasRate max(0, -(separation + slop)),
+//              push speed), softened, point by point; after integration, relax sweeps solve
+//              the rigid rows without it (restitution's target only).
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "constraints/soft_factors.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "core/index_range.h"
@@ -38,6 +42,7 @@ struct ContactVelocityPoint {
     float normalMass = 0.0f;
     float tangentMass = 0.0f;
     float velocityBias = 0.0f;  // restitution or Baumgarte target, m/s
+    float softTarget = 0.0f;    // soft contacts: the spring's push-out speed, m/s
 };
 
 struct ContactVelocityConstraint {
@@ -96,6 +101,9 @@ public:
     float solvePositions(IndexRange range, SolverPose* positions) const;
     /// Whether any contact takes part in the NGS position phase.
     bool hasPositionConstraints() const { return !position_.empty(); }
+    /// Soft contacts: whether they relax, and one relax sweep over [range) (rigid, no spring).
+    bool relaxes() const { return soft_ && !velocity_.empty(); }
+    void relax(IndexRange range, SolverVelocity* velocities);
 
     /// A sweep's contacts count as solved when no point is deeper than three slops.
     static bool withinTolerance(float minSeparation) {
@@ -110,6 +118,9 @@ private:
     std::vector<ContactPositionConstraint> position_;
     float positionBias_ = 0.0f;
     bool baumgarte_ = false;
+    bool soft_ = false;
+    SoftFactors softness_;    // soft contacts' spring for this (sub)step
+    float pushSpeed_ = 0.0f;  // m/s
 };
 
 }  // namespace pivot

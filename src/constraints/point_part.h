@@ -17,6 +17,7 @@
 #include <cmath>
 
 #include "constraints/constraint_bodies.h"
+#include "constraints/rows.h"
 #include "constraints/solver_body.h"
 #include "pivot/math.h"
 
@@ -83,14 +84,16 @@ inline Vec2 preparePoint(const ConstraintBodies& b, PointPart& p, const SolverPo
     return B.c + p.rB - A.c - p.rA;
 }
 
-/// One Gauss-Seidel solve of K P = -(Cdot + bias) on the given velocities. Returns the
-/// impulse applied.
+/// One Gauss-Seidel solve of K P = -(Cdot + bias) on the given velocities, softened under
+/// Rows::Soft (rows.h). Returns the impulse applied.
+template <Rows rows = Rows::Biased>
 inline Vec2 solvePointVelocity(const ConstraintBodies& b, const PointPart& p,
-                               SolverVelocity* velocities, Vec2 bias) {
+                               SolverVelocity* velocities, Vec2 bias,
+                               const SoftFactors& soft = SoftFactors{}) {
     SolverVelocity& A = velocities[b.indexA];
     SolverVelocity& B = velocities[b.indexB];
     Vec2 cdot = B.v + cross(B.w, p.rB) - A.v - cross(A.w, p.rA);
-    Vec2 P = solveWithCachedDet(p, -(cdot + bias));
+    Vec2 P = soften<rows>(solveWithCachedDet(p, -(cdot + bias)), p.impulse, soft);
     A.v -= b.mA * P;
     A.w -= b.iA * cross(p.rA, P);
     B.v += b.mB * P;

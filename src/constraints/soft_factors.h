@@ -22,8 +22,11 @@ struct SoftFactors {
     float biasRate = 0.0f;  // 1/s: the bias is biasRate C
 
     static SoftFactors of(const JointSpring& spring, float h) {
-        const float omega = 2.0f * kPi * spring.hertz;
-        const float a1 = 2.0f * spring.dampingRatio + h * omega;
+        return of(spring.hertz, spring.dampingRatio, h);
+    }
+    static SoftFactors of(float hertz, float dampingRatio, float h) {
+        const float omega = 2.0f * kPi * hertz;
+        const float a1 = 2.0f * dampingRatio + h * omega;
         const float c = 1.0f / (h * omega * a1);
         SoftFactors f{1.0f / (1.0f + c), c / (1.0f + c), omega / a1};
         if (!std::isfinite(f.massScale) || !std::isfinite(f.impulseScale) ||

@@ -22,6 +22,9 @@ struct StepContext {
     bool enableSleep = true;
     ContactCorrection contactCorrection = ContactCorrection::NGS;
     float contactBiasFactor = 0.0f;
+    float contactHertz = 0.0f;  // ContactCorrection::Soft's
+    float contactDampingRatio = 0.0f;
+    float contactPushSpeed = 0.0f;
     float restitutionThreshold = 0.0f;
     float jointLetGoSeparation = 0.0f;  // WorldDef's; 0: never
 };

@@ -26,6 +26,9 @@ constexpr Vec3 cross(Vec3 a, Vec3 b) {
 constexpr Vec3 operator*(float s, Vec3 v) {
     return {s * v.x, s * v.y, s * v.z};
 }
+constexpr Vec3 operator-(Vec3 a, Vec3 b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
 
 struct Mat33 {
     Vec3 cx;

@@ -11,6 +11,7 @@
 
 #include "constraints/constraint_bodies.h"
 #include "constraints/length_part.h"
+#include "constraints/rows.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "core/slot_pool.h"
@@ -36,13 +37,14 @@ struct DistanceConstraint {
     float upperImpulse = 0.0f;
     float rodBias = 0.0f;  // the rod's velocity bias (Baumgarte, the pseudo-velocity pass)
     // Velocity targets added to the limits' Cdot: the speculative C / h while a limit is not
-    // reached, and, for Baumgarte joints, the correction of an overshot one.
-    float lowerTerm = 0.0f;
-    float upperTerm = 0.0f;
+    // reached, a strategy's bias for an overshot one (rows.h).
+    BoundTerm lowerTerm;
+    BoundTerm upperTerm;
     float springBias = 0.0f;
     float gamma = 0.0f;
     float softMass = 0.0f;  // 1 / (K + gamma)
     float biasFactor = 0.0f;
+    SoftFactors soft;  // SoftStep's (rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
@@ -107,7 +109,7 @@ struct DistanceConstraint {
     }
 
     /// The spring or the rod, then the limits.
-    template <bool withBias>
+    template <Rows rows>
     void solveVelocity(SolverVelocity* velocities) {
         if (spring) {
             const float cdot =
@@ -116,9 +118,9 @@ struct DistanceConstraint {
             impulse += lambda;
             applyLengthImpulse(bodies, part, velocities, lambda);
         } else if (rod) {
-            impulse += solveRod(velocities, withBias ? rodBias : 0.0f);
+            impulse += solveRod<rows>(velocities, rows != Rows::Rigid ? rodBias : 0.0f);
         }
-        if (limited) solveLimits(velocities);
+        if (limited) solveLimits<rows>(velocities);
     }
 
     void setBias(const SolverPose* poses, float k) {
@@ -126,8 +128,8 @@ struct DistanceConstraint {
         rodBias = k * (L - rodLength);
         if (limited) {
             const float error = lengthLimitError(L, minLength, maxLength);
-            if (L - minLength <= 0.0f) lowerTerm = k * std::min(error, 0.0f);
-            if (maxLength - L <= 0.0f) upperTerm = -k * std::max(error, 0.0f);
+            if (L - minLength <= 0.0f) lowerTerm = {k * std::min(error, 0.0f), true};
+            if (maxLength - L <= 0.0f) upperTerm = {-k * std::max(error, 0.0f), true};
         }
     }
 
@@ -170,8 +172,8 @@ private:
     }
 
     void setLimitTerms(float invH) {
-        lowerTerm = std::max(part.length - minLength, 0.0f) * invH;
-        upperTerm = std::max(maxLength - part.length, 0.0f) * invH;
+        lowerTerm = BoundTerm::speculative(part.length - minLength, invH);
+        upperTerm = BoundTerm::speculative(maxLength - part.length, invH);
     }
 
     void prepareSpring(float hertz, float dampingRatio, float restLength, float h) {
@@ -186,18 +188,21 @@ private:
         }
     }
 
+    template <Rows rows = Rows::Biased>
     float solveRod(SolverVelocity* velocities, float bias) {
         const float cdot = lengthSpeed(part, velocities[bodies.indexA], velocities[bodies.indexB]);
-        const float lambda = -part.axialMass * (cdot + bias);
+        const float lambda = soften<rows>(-part.axialMass * (cdot + bias), impulse, soft);
         applyLengthImpulse(bodies, part, velocities, lambda);
         return lambda;
     }
 
+    template <Rows rows = Rows::Biased>
     void solveLimits(SolverVelocity* velocities) {
         {
             const float cdot =
                 lengthSpeed(part, velocities[bodies.indexA], velocities[bodies.indexB]);
-            float lambda = -part.axialMass * (cdot + lowerTerm);
+            float lambda = lowerTerm.soften<rows>(
+                -part.axialMass * (cdot + lowerTerm.target<rows>()), lowerImpulse, soft);
             const float old = lowerImpulse;
             lowerImpulse = std::max(old + lambda, 0.0f);
             applyLengthImpulse(bodies, part, velocities, lowerImpulse - old);
@@ -205,7 +210,8 @@ private:
         {
             const float cdot =
                 lengthSpeed(part, velocities[bodies.indexA], velocities[bodies.indexB]);
-            float lambda = -part.axialMass * (-cdot + upperTerm);
+            float lambda = upperTerm.soften<rows>(
+                -part.axialMass * (-cdot + upperTerm.target<rows>()), upperImpulse, soft);
             const float old = upperImpulse;
             upperImpulse = std::max(old + lambda, 0.0f);
             applyLengthImpulse(bodies, part, velocities, -(upperImpulse - old));

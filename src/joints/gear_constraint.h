@@ -56,7 +56,7 @@ struct GearConstraint {
         Vec2 localRBase;
     };
     /// The Jacobian and K at some poses.
-    struct Rows {
+    struct Jacobian {
         Vec2 jv[2];  // k u of each side
         float jwMover[2] = {};
         float jwBase[2] = {};
@@ -64,7 +64,7 @@ struct GearConstraint {
         float mass() const { return k > 0.0f ? 1.0f / k : 0.0f; }
     };
     Side side[2];
-    Rows rows;  // when last measured
+    Jacobian jacobian;  // when last measured
     float ratio = 1.0f;
     float constant = 0.0f;
     float mass = 0.0f;  // 1 / K when last measured (0 when K is)
@@ -72,6 +72,7 @@ struct GearConstraint {
     float bias = 0.0f;
     float biasFactor = 0.0f;
     float slop = kLinearSlop;
+    SoftFactors soft;  // SoftStep's (constraints/rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the stored impulse.
@@ -113,23 +114,23 @@ struct GearConstraint {
     void makeInert() {
         for (int n = 0; n < 4; ++n) m[n] = i[n] = 0.0f;
         impulse = bias = 0.0f;
-        rows = Rows{};
+        jacobian = Jacobian{};
         mass = 0.0f;
     }
 
     void storeImpulses(Joint& joint, float invDt) const {
         GearJoint& gear = std::get<GearJoint>(joint.data);
         gear.impulse = impulse;
-        gear.linearB = rows.jv[1];
-        gear.angularB = rows.jwMover[1];
+        gear.linearB = jacobian.jv[1];
+        gear.angularB = jacobian.jwMover[1];
         joint.impulseInvDt = invDt;
     }
 
     void warmStart(SolverVelocity* velocities) const { apply(velocities, impulse); }
 
-    template <bool withBias>
+    template <Rows rows>
     void solveVelocity(SolverVelocity* velocities) {
-        impulse += solveRow(velocities, withBias ? bias : 0.0f);
+        impulse += solveRow<rows>(velocities, rows != Rows::Rigid ? bias : 0.0f);
     }
 
     /// factor C at these poses (C depends on the coordinates only, not on the rows).
@@ -145,9 +146,9 @@ struct GearConstraint {
     /// -beta C / K, with K of these poses (rebuildMass) or as frozen.
     template <bool rebuildMass>
     bool solvePosition(SolverPose* poses) const {
-        Rows now;
+        Jacobian now;
         const float C = measure(poses, now);
-        const float K = rebuildMass ? now.k : rows.k;
+        const float K = rebuildMass ? now.k : jacobian.k;
         const float lambda = K > 0.0f ? -(biasFactor * C) / K : 0.0f;
         applyToPoses(now, poses, lambda);
         return std::fabs(C) <= slop;
@@ -169,7 +170,7 @@ private:
     }
 
     /// The rows and K at these poses, into `out`; returns C.
-    float measure(const SolverPose* poses, Rows& out) const {
+    float measure(const SolverPose* poses, Jacobian& out) const {
         float K = 0.0f;
         for (int s = 0; s < 2; ++s) {
             const Side& sd = side[s];
@@ -197,13 +198,13 @@ private:
 
     /// Measures and keeps the rows; returns C.
     float measure(const SolverPose* poses) {
-        const float C = measure(poses, rows);
-        mass = rows.mass();
+        const float C = measure(poses, jacobian);
+        mass = jacobian.mass();
         return C;
     }
 
     /// The cross terms of K for a body on both sides (see the top of the file); 0 when none.
-    float sharedBodyTerms(const Rows& r) const {
+    float sharedBodyTerms(const Jacobian& r) const {
         float terms = 0.0f;
         const auto moves = [&](int n) { return m[n] != 0.0f || i[n] != 0.0f; };
         if (index[0] == index[3] && moves(0)) {  // joint2 hangs from joint1's moving body
@@ -223,23 +224,23 @@ private:
         const SolverVelocity& B = v[index[1]];
         const SolverVelocity& C = v[index[2]];
         const SolverVelocity& D = v[index[3]];
-        const float linear = dot(rows.jv[0], A.v - C.v) + dot(rows.jv[1], B.v - D.v);
-        return linear + ((rows.jwMover[0] * A.w - rows.jwBase[0] * C.w) +
-                         (rows.jwMover[1] * B.w - rows.jwBase[1] * D.w));
+        const float linear = dot(jacobian.jv[0], A.v - C.v) + dot(jacobian.jv[1], B.v - D.v);
+        return linear + ((jacobian.jwMover[0] * A.w - jacobian.jwBase[0] * C.w) +
+                         (jacobian.jwMover[1] * B.w - jacobian.jwBase[1] * D.w));
     }
 
     void apply(SolverVelocity* v, float lambda) const {
-        v[index[0]].v += (m[0] * lambda) * rows.jv[0];
-        v[index[0]].w += i[0] * lambda * rows.jwMover[0];
-        v[index[1]].v += (m[1] * lambda) * rows.jv[1];
-        v[index[1]].w += i[1] * lambda * rows.jwMover[1];
-        v[index[2]].v -= (m[2] * lambda) * rows.jv[0];
-        v[index[2]].w -= i[2] * lambda * rows.jwBase[0];
-        v[index[3]].v -= (m[3] * lambda) * rows.jv[1];
-        v[index[3]].w -= i[3] * lambda * rows.jwBase[1];
+        v[index[0]].v += (m[0] * lambda) * jacobian.jv[0];
+        v[index[0]].w += i[0] * lambda * jacobian.jwMover[0];
+        v[index[1]].v += (m[1] * lambda) * jacobian.jv[1];
+        v[index[1]].w += i[1] * lambda * jacobian.jwMover[1];
+        v[index[2]].v -= (m[2] * lambda) * jacobian.jv[0];
+        v[index[2]].w -= i[2] * lambda * jacobian.jwBase[0];
+        v[index[3]].v -= (m[3] * lambda) * jacobian.jv[1];
+        v[index[3]].w -= i[3] * lambda * jacobian.jwBase[1];
     }
 
-    void applyToPoses(const Rows& r, SolverPose* p, float lambda) const {
+    void applyToPoses(const Jacobian& r, SolverPose* p, float lambda) const {
         p[index[0]].c += m[0] * lambda * r.jv[0];
         p[index[0]].a += i[0] * lambda * r.jwMover[0];
         p[index[1]].c += m[1] * lambda * r.jv[1];
@@ -250,8 +251,9 @@ private:
         p[index[3]].a -= i[3] * lambda * r.jwBase[1];
     }
 
+    template <Rows rows = Rows::Biased>
     float solveRow(SolverVelocity* velocities, float b) {
-        const float lambda = -mass * (speed(velocities) + b);
+        const float lambda = soften<rows>(-mass * (speed(velocities) + b), impulse, soft);
         apply(velocities, lambda);
         return lambda;
     }

@@ -41,6 +41,7 @@ struct Joint {
     PositionSolver solver = PositionSolver::FullNGS;
     bool hasBiasOverride = false;
     float biasOverride = 0.0f;
+    JointSoftness softness;  // SoftStep's
     bool collideConnected = false;
     std::uint64_t userData = 0;
     JointData data;

@@ -88,6 +88,7 @@ struct PrismaticConstraint {
     Vec2 localPerp;
     float referenceAngle = 0.0f;
     float biasFactor = 0.0f;
+    SoftFactors soft;  // SoftStep's (constraints/rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
@@ -169,7 +170,7 @@ struct PrismaticConstraint {
     }
 
     /// Spring, motor, limits, then the block: holding the slide straight gets the last word.
-    template <bool withBias>
+    template <Rows rows>
     void solveVelocity(SolverVelocity* velocities) {
         if (spring) {
             const float cdot =
@@ -179,8 +180,8 @@ struct PrismaticConstraint {
             applyAxisImpulse(bodies, axis, velocities, lambda);
         }
         if (motorEnabled) solveMotor(velocities);
-        if (limits.enabled) limits.solve(bodies, axis, axialMass, velocities);
-        impulse += solveBlock(velocities, withBias ? bias : Vec2{});
+        if (limits.enabled) limits.solve<rows>(bodies, axis, axialMass, velocities, soft);
+        impulse += solveBlock<rows>(velocities, rows != Rows::Rigid ? bias : Vec2{});
     }
 
     void setBias(const SolverPose*, float k) {
@@ -280,12 +281,14 @@ private:
         applyAxisImpulse(bodies, axis, velocities, lambda);
     }
 
-    /// One solve of K2 (p, L) = -(Cdot + bias); returns the impulse applied.
+    /// One solve of K2 (p, L) = -(Cdot + bias), softened under Rows::Soft; returns the impulse
+    /// applied.
+    template <Rows rows = Rows::Biased>
     Vec2 solveBlock(SolverVelocity* velocities, Vec2 blockBias) {
         SolverVelocity& A = velocities[bodies.indexA];
         SolverVelocity& B = velocities[bodies.indexB];
         const Vec2 cdot{axisSpeed(perp, A, B), B.w - A.w};
-        const Vec2 df = solveCached(-(cdot + blockBias));
+        const Vec2 df = soften<rows>(solveCached(-(cdot + blockBias)), impulse, soft);
         const Vec2 P = df.x * perp.u;
         const float LA = df.x * perp.a1 + df.y;
         const float LB = df.x * perp.a2 + df.y;

@@ -24,6 +24,7 @@ struct PulleyConstraint {
     float impulse = 0.0f;  // accumulated
     float bias = 0.0f;     // velocity bias (Baumgarte, the pseudo-velocity pass)
     float biasFactor = 0.0f;
+    SoftFactors soft;  // SoftStep's (constraints/rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the stored impulse.
@@ -70,9 +71,9 @@ struct PulleyConstraint {
         applyPulleyImpulse(bodies, part, velocities, impulse);
     }
 
-    template <bool withBias>
+    template <Rows rows>
     void solveVelocity(SolverVelocity* velocities) {
-        impulse += solveRow(velocities, withBias ? bias : 0.0f);
+        impulse += solveRow<rows>(velocities, rows != Rows::Rigid ? bias : 0.0f);
     }
 
     void setBias(const SolverPose* poses, float k) {
@@ -96,9 +97,10 @@ struct PulleyConstraint {
     }
 
 private:
+    template <Rows rows = Rows::Biased>
     float solveRow(SolverVelocity* velocities, float b) {
         const float cdot = pulleySpeed(part, velocities[bodies.indexA], velocities[bodies.indexB]);
-        const float lambda = -part.mass * (cdot + b);
+        const float lambda = soften<rows>(-part.mass * (cdot + b), impulse, soft);
         applyPulleyImpulse(bodies, part, velocities, lambda);
         return lambda;
     }

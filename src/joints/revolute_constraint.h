@@ -5,7 +5,8 @@
 // (src/strategies/position_strategies.h); a strategy decides which of them run in which phase
 // and with what factor, the joint only how each maps onto its parts:
 //   warmStart                apply the accumulated impulses
-//   solveVelocity<withBias>  motor, limits, then the pin; with the velocity bias set by setBias
+//   solveVelocity<rows>      motor, limits, then the pin; the position rows Rigid, Biased by
+//                            setBias, or Soft with the factors in `soft` (constraints/rows.h)
 //   setBias(k)               velocity bias k C from the error at the current radius vectors
 //   restartAt(h)             re-measure radius vectors, effective mass and angle at the given
 //                            poses as at the start of a step of length h, limits unloaded
@@ -36,6 +37,7 @@ struct RevoluteConstraint {
     PointPart point;
     AnglePart angle;
     float biasFactor = 0.0f;
+    SoftFactors soft;             // SoftStep's (rows.h)
     std::int32_t jointIndex = 0;  // where the impulses are stored back
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
@@ -83,7 +85,8 @@ struct RevoluteConstraint {
     /// A let-go joint's constraint: its bodies' masses are taken as zero, so every solve of it
     /// applies a zero impulse.
     void makeInert() {
-        *this = RevoluteConstraint{bodies, PointPart{}, AnglePart{}, 0.0f, jointIndex};
+        *this =
+            RevoluteConstraint{bodies, PointPart{}, AnglePart{}, 0.0f, SoftFactors{}, jointIndex};
         bodies.mA = bodies.mB = bodies.iA = bodies.iB = 0.0f;
     }
 
@@ -110,11 +113,11 @@ struct RevoluteConstraint {
 
     /// Motor, limits, then the pin: it gets the last word, because a joint that comes apart is
     /// worse than one that turns a little too far.
-    template <bool withBias>
+    template <Rows rows>
     void solveVelocity(SolverVelocity* velocities) {
-        const Vec2 bias = withBias ? point.bias : Vec2{};
-        solveAngleVelocity(bodies, angle, velocities);
-        point.impulse += solvePointVelocity(bodies, point, velocities, bias);
+        const Vec2 bias = rows != Rows::Rigid ? point.bias : Vec2{};
+        solveAngleVelocity<true, rows>(bodies, angle, velocities, soft);
+        point.impulse += solvePointVelocity<rows>(bodies, point, velocities, bias, soft);
     }
 
     void setBias(const SolverPose* poses, float k) {
@@ -130,8 +133,7 @@ struct RevoluteConstraint {
         angle.angle = jointAngle(angle, poses, bodies);
         angle.lowerImpulse = 0.0f;
         angle.upperImpulse = 0.0f;
-        angle.lowerTerm = std::max(angle.angle - angle.lower, 0.0f) * invH;
-        angle.upperTerm = std::max(angle.upper - angle.angle, 0.0f) * invH;
+        setLimitTerms(angle, invH);
     }
 
     void solvePseudoVelocity(SolverVelocity* pseudo) {

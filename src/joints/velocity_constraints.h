@@ -18,6 +18,7 @@
 
 #include "constraints/constraint_bodies.h"
 #include "constraints/point_part.h"
+#include "constraints/rows.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "core/slot_pool.h"
@@ -43,6 +44,7 @@ struct ClampedVelocityRows {
     Vec2 linearBias;          // the motor's correction velocity
     float angularBias = 0.0f;
     float biasFactor = 0.0f;
+    SoftFactors soft;  // unused: no position rows
     std::int32_t jointIndex = 0;
 
     void setMasses() {
@@ -79,7 +81,7 @@ struct ClampedVelocityRows {
     }
 
     /// The angle row, then the point rows, each clamped.
-    template <bool>
+    template <Rows>
     void solveVelocity(SolverVelocity* velocities) {
         const ConstraintBodies& b = bodies;
         SolverVelocity& A = velocities[b.indexA];

@@ -64,6 +64,7 @@ struct WeldConstraint {
     Vec2 localRB;
     float referenceAngle = 0.0f;
     float biasFactor = 0.0f;
+    SoftFactors soft;  // SoftStep's (constraints/rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulse as
@@ -109,7 +110,7 @@ struct WeldConstraint {
     void warmStart(SolverVelocity* velocities) const { apply(velocities, impulse); }
 
     /// The soft halves, then the rigid ones: what must hold gets the last word.
-    template <bool withBias>
+    template <Rows rows>
     void solveVelocity(SolverVelocity* velocities) {
         if (softAngle) {
             const float cdot = velocities[bodies.indexB].w - velocities[bodies.indexA].w;
@@ -129,7 +130,7 @@ struct WeldConstraint {
             impulse.y += lambda.y;
             apply(velocities, {lambda.x, lambda.y, 0.0f});
         }
-        const Vec3 applied = solveRigid(velocities, withBias ? bias : Vec3{});
+        const Vec3 applied = solveRigid<rows>(velocities, rows != Rows::Rigid ? bias : Vec3{});
         impulse.x += applied.x;
         impulse.y += applied.y;
         impulse.z += applied.z;
@@ -206,7 +207,9 @@ private:
         B.w += bodies.iB * (cross(rB, P) + l.z);
     }
 
-    /// One solve of the rigid rows with the given bias; returns the impulse applied.
+    /// One solve of the rigid rows with the given bias, softened under Rows::Soft (the halves
+    /// that are springs keep their own softness); returns the impulse applied.
+    template <Rows rows = Rows::Biased>
     Vec3 solveRigid(SolverVelocity* velocities, Vec3 rowBias) {
         if (softPoint && softAngle) return {};
         const Vec2 cdot1 = pointSpeed(velocities);
@@ -219,6 +222,12 @@ private:
             lambda = {l.x, l.y, 0.0f};
         } else {
             lambda = {0.0f, 0.0f, -angularMass * (cdot2 + rowBias.z)};
+        }
+        if constexpr (rows == Rows::Soft) {
+            // Only the rigid rows' own accumulated impulse is relaxed.
+            const Vec3 rigidImpulse{softPoint ? 0.0f : impulse.x, softPoint ? 0.0f : impulse.y,
+                                    softAngle ? 0.0f : impulse.z};
+            lambda = soften<rows>(lambda, rigidImpulse, soft);
         }
         apply(velocities, lambda);
         return lambda;

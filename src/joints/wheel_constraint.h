@@ -56,6 +56,7 @@ struct WheelConstraint {
     Vec2 localAxis;
     Vec2 localPerp;
     float biasFactor = 0.0f;
+    SoftFactors soft;  // SoftStep's (constraints/rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
@@ -134,7 +135,7 @@ struct WheelConstraint {
         B.w += b.iB * LB;
     }
 
-    template <bool withBias>
+    template <Rows rows>
     void solveVelocity(SolverVelocity* velocities) {
         if (spring) {
             const float cdot =
@@ -146,8 +147,8 @@ struct WheelConstraint {
             applyAxisImpulse(bodies, axis, velocities, lambda);
         }
         if (motorEnabled) solveMotor(velocities);
-        if (limits.enabled) limits.solve(bodies, axis, axialMass, velocities);
-        impulse += solveLine(velocities, withBias ? lineBias : 0.0f);
+        if (limits.enabled) limits.solve<rows>(bodies, axis, axialMass, velocities, soft);
+        impulse += solveLine<rows>(velocities, rows != Rows::Rigid ? lineBias : 0.0f);
     }
 
     void setBias(const SolverPose*, float k) {
@@ -236,9 +237,10 @@ private:
     }
 
     /// One solve of the line row with the given bias; returns the impulse applied.
+    template <Rows rows = Rows::Biased>
     float solveLine(SolverVelocity* velocities, float bias) {
         const float cdot = axisSpeed(perp, velocities[bodies.indexA], velocities[bodies.indexB]);
-        const float lambda = -perpMass * (cdot + bias);
+        const float lambda = soften<rows>(-perpMass * (cdot + bias), impulse, soft);
         applyAxisImpulse(bodies, perp, velocities, lambda);
         return lambda;
     }

@@ -68,7 +68,8 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                    SlotPool<Joint>& joints, const StepContext& step, bool firstSubstep,
                    IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
-    work.groups.forEachGroup([&](auto, auto& group, int g) {
+    work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
+        using S = decltype(strategy);
         const IndexRange mine = team.share(static_cast<int>(group.size()));
         for (int k = mine.begin; k < mine.end; ++k) {
             const std::size_t at = static_cast<std::size_t>(schedule.groupStart[g] + k);
@@ -78,6 +79,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
             c = {};
             const float separationSquared = c.prepare(
                 joint, jointIndex, bodies, schedule.jointPairs[at], work.positions.data(), step);
+            S::prepareSoftness(c, joint, step);
             if (!firstSubstep && joint.letGo) {
                 c.makeInert();
             } else if (firstSubstep && beyondLetGoSeparation(joint, separationSquared, step)) {
@@ -93,10 +95,15 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
 }
 
 // A joint whose impulses (or the force and torque they stand for) went non-finite during the
-// step is let go: it keeps nothing.
+// step is let go: it keeps nothing. Strategies that relax store after the position phase
+// (`afterPositionPhase`), so that the relax sweeps count; the others before it, as the velocity
+// phase left them (the pseudo-velocity pass reuses their accumulators, and ModifiedNGS's frozen
+// mass re-measures the directions the reactions are reported along).
 void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
-                        const SlotPool<Body>& bodies, float invDt, IslandReport& report) {
-    work.groups.forEachGroup([&](auto, auto& group, int) {
+                        const SlotPool<Body>& bodies, float invDt, bool afterPositionPhase,
+                        IslandReport& report) {
+    work.groups.forEachGroup([&](auto strategy, auto& group, int) {
+        if (decltype(strategy)::kRelax != afterPositionPhase) return;
         const IndexRange mine = team.share(static_cast<int>(group.size()));
         for (int k = mine.begin; k < mine.end; ++k) {
             const auto& c = group[k];
@@ -218,8 +225,23 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
         }
         b.center = flushDenormal(p.c);
         b.angle = flushDenormal(angleWithinLimits(p.a));
-        b.linearVelocity = flushDenormal(v.v);
-        b.angularVelocity = flushDenormal(v.w);
+        // Relax sweeps (soft step) act after integration's limit: what they leave is held
+        // within the speeds the API takes, and counted with the clamps.
+        Vec2 linear = v.v;
+        float angular = v.w;
+        if (lengthSquared(linear) > kMaxSpeed * kMaxSpeed) {
+            linear *= kMaxSpeed / length(linear);
+            // The scaling may round a component just past the limit.
+            linear = {std::clamp(linear.x, -kMaxSpeed, kMaxSpeed),
+                      std::clamp(linear.y, -kMaxSpeed, kMaxSpeed)};
+            ++report.translationClamps;
+        }
+        if (std::fabs(angular) > kMaxAngularSpeed) {
+            angular = std::copysign(kMaxAngularSpeed, angular);
+            ++report.rotationClamps;
+        }
+        b.linearVelocity = flushDenormal(linear);
+        b.angularVelocity = flushDenormal(angular);
         synchronizeTransform(b);
         b.xf.p = flushDenormal(b.xf.p);
         const bool inside =
@@ -270,8 +292,7 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
         });
     }
 
-    storeJointImpulses(team, work, storage.joints, bodies, step.invDt, mine);
-    work.contactSolver.storeImpulses(team.share(island.contactCount), storage.contacts);
+    storeJointImpulses(team, work, storage.joints, bodies, step.invDt, false, mine);
     if (team.leader()) {
         for (const MouseConstraint& c : work.mouseConstraints) {
             storage.mouseJoints[c.jointIndex].impulse = isFinite(c.impulse) ? c.impulse : Vec2{};
@@ -282,7 +303,10 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
 
     PositionPhaseResult phase =
         solvePositionPhase(team, work.groups, schedule, work.contactSolver, work.positions.data(),
-                           work.positionScratch, step.positionIterations, step.dt);
+                           velocities, work.positionScratch, step.positionIterations, step.dt);
+    // After the relax sweeps, which add to the impulses (the contacts' NGS solves do not).
+    storeJointImpulses(team, work, storage.joints, bodies, step.invDt, true, mine);
+    work.contactSolver.storeImpulses(team.share(island.contactCount), storage.contacts);
     // The next substep's set-up reads the poses and stored impulses this one wrote.
     if (step.substepCount > 1) team.sync();
     return phase;

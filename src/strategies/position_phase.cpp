@@ -46,12 +46,36 @@ void solvePseudoVelocityPass(const Team& team, JointGroups& groups, const Island
     team.sync();
 }
 
+void solveRelaxSweeps(const Team& team, JointGroups& groups, const IslandSchedule& schedule,
+                      ContactSolver& contacts, SolverVelocity* velocities, int iterations) {
+    bool any = contacts.relaxes();
+    groups.forEachGroup([&](auto strategy, auto& group, int) {
+        any = any || (decltype(strategy)::kRelax && !group.empty());
+    });
+    if (!any) return;
+    for (int it = 0; it < iterations; ++it) {
+        groups.forEachGroup([&](auto strategy, auto& group, int g) {
+            using S = decltype(strategy);
+            if constexpr (S::kRelax) {
+                forEachBatch(team, schedule.jointBatches[g], [&](IndexRange range) {
+                    for (int k = range.begin; k < range.end; ++k) S::relax(group[k], velocities);
+                });
+            }
+        });
+        if (contacts.relaxes()) {
+            forEachBatch(team, schedule.contactBatches,
+                         [&](IndexRange range) { contacts.relax(range, velocities); });
+        }
+    }
+}
+
 }  // namespace
 
 PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
-                                       const IslandSchedule& schedule,
-                                       const ContactSolver& contacts, SolverPose* poses,
+                                       const IslandSchedule& schedule, ContactSolver& contacts,
+                                       SolverPose* poses, SolverVelocity* velocities,
                                        PositionPhaseScratch& scratch, int iterations, float h) {
+    solveRelaxSweeps(team, groups, schedule, contacts, velocities, iterations);
     solvePseudoVelocityPass(team, groups, schedule, poses, scratch.pseudo, iterations, h);
 
     PositionPhaseResult result;

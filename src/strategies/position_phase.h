@@ -1,8 +1,10 @@
-// The position phase, after position integration and after the velocity phase's impulses were
-// stored, for every strategy and joint type:
-//   1. the strategies with a pseudo-velocity pass (PseudoVelocity): `iterations` sweeps on
+// The position phase, after position integration, for every strategy and joint type:
+//   1. the relax sweeps of the strategies that relax (SoftStep) and of soft contacts:
+//      `iterations` velocity sweeps of their rows, rigid and without bias (joints, then
+//      contacts, as in the velocity iterations);
+//   2. the strategies with a pseudo-velocity pass (PseudoVelocity): `iterations` sweeps on
 //      pseudo velocities that start at zero, then poses += h * pseudo velocity;
-//   2. the NGS sweeps: up to `iterations`, each over the NGS contacts, then the joints of the
+//   3. the NGS sweeps: up to `iterations`, each over the NGS contacts, then the joints of the
 //      strategies that take part (ModifiedNGS, then FullNGS), stopping once every joint is
 //      within slop (linear and angular) and no contact is deeper than
 //      ContactSolver::withinTolerance allows.
@@ -42,8 +44,8 @@ struct PositionPhaseScratch {
 /// Runs the phase. An island with nothing for NGS to check counts as solved. `scratch` is
 /// sized by the caller (pseudo: the island's solver slots; tallies: the team's members).
 PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
-                                       const IslandSchedule& schedule,
-                                       const ContactSolver& contacts, SolverPose* poses,
+                                       const IslandSchedule& schedule, ContactSolver& contacts,
+                                       SolverPose* poses, SolverVelocity* velocities,
                                        PositionPhaseScratch& scratch, int iterations, float h);
 
 }  // namespace pivot

@@ -6,8 +6,12 @@
 //
 // Every strategy has (StrategyDefaults gives what a strategy does not say otherwise):
 //   kSolver, kName, kDefaultBias           its PositionSolver value, testbed name and bias
+//   prepareSoftness(c, joint, step)        as the joint is built (its own settings)
 //   prepareBias(c, poses, invDt)           at the start of the step, after the joint is built
 //   solveVelocity(c, velocities)           one velocity iteration
+//   kRelax                                 runs relax sweeps after integration, with
+//     relax(c, velocities)                   one rigid velocity solve without bias; its impulses
+//                                            are stored after them
 //   kPseudoVelocityPass                    runs the pseudo-velocity pass after integration, with
 //     beginPass(c, poses, invH), solvePass(c, pseudo)
 //   kNgsSweeps                             joins the NGS sweeps of the position phase, with
@@ -16,7 +20,13 @@
 // The maths of each is in docs/position-correction.md.
 #pragma once
 
+#include <algorithm>
+
+#include "constraints/rows.h"
+#include "constraints/soft_factors.h"
 #include "constraints/solver_body.h"
+#include "constraints/step_context.h"
+#include "joints/joint.h"
 #include "pivot/constants.h"
 #include "pivot/solvers.h"
 
@@ -26,12 +36,15 @@ namespace pivot {
 struct StrategyDefaults {
     static constexpr bool kPseudoVelocityPass = false;
     static constexpr bool kNgsSweeps = false;
+    static constexpr bool kRelax = false;
 
+    template <typename C>
+    static void prepareSoftness(C&, const Joint&, const StepContext&) {}
     template <typename C>
     static void prepareBias(C&, const SolverPose*, float) {}
     template <typename C>
     static void solveVelocity(C& c, SolverVelocity* velocities) {
-        c.template solveVelocity<false>(velocities);
+        c.template solveVelocity<Rows::Rigid>(velocities);
     }
     template <typename C>
     static void beginSweeps(C&, const SolverPose*) {}
@@ -54,7 +67,7 @@ struct BaumgarteStrategy : StrategyDefaults {
     }
     template <typename C>
     static void solveVelocity(C& c, SolverVelocity* velocities) {
-        c.template solveVelocity<true>(velocities);
+        c.template solveVelocity<Rows::Biased>(velocities);
     }
 };
 
@@ -110,6 +123,35 @@ struct FullNgsStrategy : StrategyDefaults {
     }
 };
 
+/// Box2D v3's soft step, per joint: the position rows are springs of the joint's hertz and
+/// damping ratio (rows.h), biased in the velocity iterations by the error at the (sub)step's
+/// start; after integration, relax sweeps solve the rows rigidly without bias, removing the
+/// velocity the bias added so it does not carry into the next (sub)step as momentum.
+struct SoftStepStrategy : StrategyDefaults {
+    static constexpr PositionSolver kSolver = PositionSolver::SoftStep;
+    static constexpr const char* kName = "soft_step";
+    static constexpr float kDefaultBias = 0.0f;  // none: hertz and damping ratio take its place
+    static constexpr bool kRelax = true;
+
+    template <typename C>
+    static void prepareSoftness(C& c, const Joint& joint, const StepContext& step) {
+        const float hertz = std::min(joint.softness.hertz, kMaxSoftHertzShare * step.invDt);
+        c.soft = SoftFactors::of(hertz, joint.softness.dampingRatio, step.dt);
+    }
+    template <typename C>
+    static void prepareBias(C& c, const SolverPose* poses, float) {
+        c.setBias(poses, c.soft.biasRate);
+    }
+    template <typename C>
+    static void solveVelocity(C& c, SolverVelocity* velocities) {
+        c.template solveVelocity<Rows::Soft>(velocities);
+    }
+    template <typename C>
+    static void relax(C& c, SolverVelocity* velocities) {
+        c.template solveVelocity<Rows::Rigid>(velocities);
+    }
+};
+
 template <typename... Strategies>
 struct StrategyList {
     static constexpr int kCount = sizeof...(Strategies);
@@ -124,8 +166,8 @@ struct StrategyList {
     }
 };
 
-using PositionStrategies =
-    StrategyList<BaumgarteStrategy, PseudoVelocityStrategy, ModifiedNgsStrategy, FullNgsStrategy>;
+using PositionStrategies = StrategyList<BaumgarteStrategy, PseudoVelocityStrategy,
+                                        ModifiedNgsStrategy, FullNgsStrategy, SoftStepStrategy>;
 
 static_assert(PositionStrategies::inSolverOrder() &&
                   PositionStrategies::kCount == kPositionSolverCount,

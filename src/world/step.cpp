@@ -52,6 +52,9 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     context.enableSleep = enableSleep;
     context.contactCorrection = contactCorrection;
     context.contactBiasFactor = contactBiasFactor;
+    context.contactHertz = contactHertz;
+    context.contactDampingRatio = contactDampingRatio;
+    context.contactPushSpeed = contactPushSpeed;
     context.restitutionThreshold = restitutionThreshold;
     context.jointLetGoSeparation = jointLetGoSeparation;
 

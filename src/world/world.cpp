@@ -30,6 +30,9 @@ World::Impl::Impl(const WorldDef& def)
       warmStarting(def.warmStarting),
       contactCorrection(def.contactCorrection),
       contactBiasFactor(def.contactBiasFactor),
+      contactHertz(def.contactHertz),
+      contactDampingRatio(def.contactDampingRatio),
+      contactPushSpeed(def.contactPushSpeed),
       restitutionThreshold(def.restitutionThreshold),
       enableSleep(def.enableSleep),
       jointLetGoSeparation(def.jointLetGoSeparation),
@@ -61,6 +64,9 @@ World::World(const WorldDef& def) {
     checkSolver(call, "def.defaultPositionSolver", def.defaultPositionSolver);
     checkContactCorrection(call, "def.contactCorrection", def.contactCorrection);
     requireInRange(call, "def.contactBiasFactor", def.contactBiasFactor, 0.0f, 1.0f);
+    requirePositive(call, "def.contactHertz", def.contactHertz);
+    requireNonNegative(call, "def.contactDampingRatio", def.contactDampingRatio);
+    requirePositive(call, "def.contactPushSpeed", def.contactPushSpeed);
     requireNonNegative(call, "def.restitutionThreshold", def.restitutionThreshold);
     requireNonNegative(call, "def.jointLetGoSeparation", def.jointLetGoSeparation);
     checkSubstepCount(call, "def.substepCount", def.substepCount);

@@ -36,7 +36,7 @@ inline void checkSubstepCount(const char* call, const char* field, int count) {
 inline void checkContactCorrection(const char* call, const char* field,
                                    ContactCorrection correction) {
     int value = static_cast<int>(correction);
-    if (value < 0 || value > static_cast<int>(ContactCorrection::NGS)) {
+    if (value < 0 || value > static_cast<int>(ContactCorrection::Soft)) {
         fail(call, std::string(field) + " is not a ContactCorrection (got " +
                        std::to_string(value) + ")");
     }
@@ -151,6 +151,12 @@ inline Vec2 checkedUnitAxis(const char* call, const char* field, Vec2 axis) {
 
 inline void checkBiasFactor(const char* call, const char* field, float bias) {
     requireInRange(call, field, bias, 0.0f, 1.0f);
+}
+
+inline void checkSoftness(const char* call, const char* field, const JointSoftness& softness) {
+    const std::string name(field);
+    requirePositive(call, (name + ".hertz").c_str(), softness.hertz);
+    requireNonNegative(call, (name + ".dampingRatio").c_str(), softness.dampingRatio);
 }
 
 }  // namespace pivot

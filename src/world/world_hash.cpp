@@ -147,8 +147,16 @@ std::uint64_t World::stateHash() const {
     h.add(w.restitutionThreshold);
     h.add(w.enableSleep);
     h.add(w.jointLetGoSeparation);
-    // Hashed only when it is not 1, so that hashes recorded before substeps existed still hold.
+    // These, and the soft-step settings, are hashed only when they differ from their defaults,
+    // so that hashes recorded before they existed still hold.
     if (w.substepCount != 1) h.add(w.substepCount);
+    if (w.contactHertz != kDefaultContactHertz ||
+        w.contactDampingRatio != kDefaultContactDampingRatio ||
+        w.contactPushSpeed != kDefaultContactPushSpeed) {
+        h.add(w.contactHertz);
+        h.add(w.contactDampingRatio);
+        h.add(w.contactPushSpeed);
+    }
     h.add(w.previousInvDt);
     h.add(w.contactManager.hasNewShapes());
 
@@ -223,6 +231,10 @@ std::uint64_t World::stateHash() const {
         h.add(static_cast<std::int32_t>(j.solver));
         h.add(j.hasBiasOverride);
         h.add(j.biasOverride);
+        if (j.softness != JointSoftness{}) {
+            h.add(j.softness.hertz);
+            h.add(j.softness.dampingRatio);
+        }
         h.add(j.collideConnected);
         h.add(j.userData);
         std::visit([&](const auto& data) { hashJointData(h, data); }, j.data);

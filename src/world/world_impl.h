@@ -35,6 +35,9 @@ struct World::Impl {
     bool warmStarting;
     ContactCorrection contactCorrection;
     float contactBiasFactor;
+    float contactHertz;  // ContactCorrection::Soft's spring
+    float contactDampingRatio;
+    float contactPushSpeed;
     float restitutionThreshold;
     bool enableSleep;
     float jointLetGoSeparation;  // m; 0: never

@@ -29,8 +29,8 @@ Joint jointFromDef(const Def& def, std::int32_t a, std::int32_t b) {
     return joint;
 }
 
-// And those of the joints with a position error: the strategy, its bias and the let-go
-// separation.
+// And those of the joints with a position error: the strategy, its bias or softness and the
+// let-go separation.
 template <typename Def>
 PositionSolver checkSolverOf(const char* call, const Def& def, const World::Impl& w) {
     const PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
@@ -40,6 +40,7 @@ PositionSolver checkSolverOf(const char* call, const Def& def, const World::Impl
 template <typename Def>
 void checkBiasAndLetGo(const char* call, const Def& def) {
     if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
+    checkSoftness(call, "def.softness", def.softness);
     if (def.letGoSeparation) {
         requireNonNegative(call, "def.letGoSeparation", *def.letGoSeparation);
     }
@@ -49,6 +50,7 @@ void setStrategyFields(Joint& joint, const Def& def, PositionSolver solver) {
     joint.solver = solver;
     joint.hasBiasOverride = def.biasFactor.has_value();
     joint.biasOverride = def.biasFactor.value_or(0.0f);
+    joint.softness = def.softness;
     joint.hasLetGoOverride = def.letGoSeparation.has_value();
     joint.letGoOverride = def.letGoSeparation.value_or(0.0f);
 }

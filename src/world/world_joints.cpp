@@ -260,6 +260,20 @@ void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     wakeUp(impl_->bodies[j.bodyB()]);
 }
 
+JointSoftness World::jointSoftness(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointSoftness", id)].softness;
+}
+
+void World::setJointSoftness(JointId id, const JointSoftness& softness) {
+    const char* call = "World::setJointSoftness";
+    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
+    requirePositionError(call, id.index, j);
+    checkSoftness(call, "softness", softness);
+    j.softness = softness;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+
 std::uint64_t World::jointUserData(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointUserData", id)].userData;
 }

@@ -30,7 +30,7 @@ std::string solverNames() {
 }
 
 std::string contactNames() {
-    return "baumgarte, ngs";
+    return "baumgarte, ngs, soft";
 }
 
 long parseInteger(const std::string& option, const std::string& text, long lo, long hi) {
@@ -57,7 +57,12 @@ float parseNumber(const std::string& option, const std::string& text) {
 }  // namespace
 
 const char* contactCorrectionName(ContactCorrection correction) {
-    return correction == ContactCorrection::Baumgarte ? "baumgarte" : "ngs";
+    switch (correction) {
+        case ContactCorrection::Baumgarte: return "baumgarte";
+        case ContactCorrection::NGS: return "ngs";
+        case ContactCorrection::Soft: return "soft";
+    }
+    return "invalid";
 }
 
 std::string usage() {
@@ -155,6 +160,8 @@ CliOptions parseCli(const std::vector<std::string>& args) {
                 options.contact = ContactCorrection::Baumgarte;
             } else if (name == "ngs") {
                 options.contact = ContactCorrection::NGS;
+            } else if (name == "soft") {
+                options.contact = ContactCorrection::Soft;
             } else {
                 throw CliError("unknown contact correction '" + name +
                                "'; valid: " + contactNames());

@@ -23,10 +23,15 @@ std::vector<testbed::TableRow> runAll(const testbed::CliOptions& options) {
         if (options.scene && *options.scene != info.name) continue;
         for (int s = 0; s < kPositionSolverCount; ++s) {
             for (ContactCorrection contact :
-                 {ContactCorrection::NGS, ContactCorrection::Baumgarte}) {
+                 {ContactCorrection::NGS, ContactCorrection::Baumgarte, ContactCorrection::Soft}) {
                 auto solver = static_cast<PositionSolver>(s);
                 if (options.solver && *options.solver != solver) continue;
                 if (options.contact && *options.contact != contact) continue;
+                // Soft contacts go with soft-step joints (Box2D v3's world) unless asked for.
+                if (!options.contact && contact == ContactCorrection::Soft &&
+                    solver != PositionSolver::SoftStep) {
+                    continue;
+                }
                 scenes::SceneOptions sceneOptions;
                 sceneOptions.solver = solver;
                 sceneOptions.contactCorrection = contact;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "all_solvers.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -45,8 +46,7 @@ struct Pendulum {
     }
 };
 
-const PositionSolver kSolvers[] = {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
-                                   PositionSolver::ModifiedNGS, PositionSolver::FullNGS};
+constexpr const auto& kSolvers = test_support::kAllSolvers;
 }  // namespace
 
 TEST(DistanceJoint, TheRestLengthDefaultsToTheAnchorsDistance) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "all_solvers.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -13,8 +14,7 @@ using namespace pivot;
 namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
-const PositionSolver kSolvers[] = {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
-                                   PositionSolver::ModifiedNGS, PositionSolver::FullNGS};
+constexpr const auto& kSolvers = test_support::kAllSolvers;
 
 BodyId disc(World& world, Vec2 at, float radius) {
     BodyDef def;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "all_solvers.h"
 #include "pivot/pivot.h"
 #include "scenes/scene.h"
 
@@ -19,8 +20,7 @@ using namespace pivot;
 
 namespace {
 constexpr float kDt = 1.0f / 60.0f;
-constexpr PositionSolver kSolvers[] = {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
-                                       PositionSolver::ModifiedNGS, PositionSolver::FullNGS};
+constexpr const auto& kSolvers = test_support::kAllSolvers;
 constexpr ContactCorrection kCorrections[] = {ContactCorrection::NGS, ContactCorrection::Baumgarte};
 
 bool finite(Vec2 v) {

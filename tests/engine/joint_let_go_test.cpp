@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "all_solvers.h"
 #include "joints/joint.h"
 #include "pivot/pivot.h"
 
@@ -14,8 +15,7 @@ using namespace pivot;
 
 namespace {
 constexpr float kDt = 1.0f / 60.0f;
-constexpr PositionSolver kSolvers[] = {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
-                                       PositionSolver::ModifiedNGS, PositionSolver::FullNGS};
+constexpr const auto& kSolvers = test_support::kAllSolvers;
 
 // A chain of three boxes hanging from the ground at (0, 10); the last box is then teleported
 // 50 m away, tearing its joint open.

@@ -221,7 +221,7 @@ TEST(MixedSolvers, EachJointInOneWorldRunsItsOwnAlgorithm) {
 }
 
 TEST(MixedSolvers, OneIslandWithEveryStrategyStaysTogether) {
-    // A hanging chain of 8 links whose joints cycle through the four solvers. Changing one
+    // A hanging chain of 8 links whose joints cycle through the solvers. Changing one
     // joint's solver changes the result, so each joint's choice is honoured inside an island.
     auto run = [](PositionSolver firstJoint) {
         World world;
@@ -235,7 +235,8 @@ TEST(MixedSolvers, OneIslandWithEveryStrategyStaysTogether) {
             world.createShape(link, ShapeDef{}, Polygon::box(0.6f, 0.125f));
             RevoluteJointDef jd =
                 RevoluteJointDef::atWorldAnchor(previous, link, {float(i), 10.0f});
-            jd.positionSolver = i == 0 ? firstJoint : static_cast<PositionSolver>(i % 4);
+            jd.positionSolver =
+                i == 0 ? firstJoint : static_cast<PositionSolver>(i % kPositionSolverCount);
             joints.push_back(world.createJoint(jd));
             previous = link;
         }

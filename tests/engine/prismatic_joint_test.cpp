@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "all_solvers.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -12,8 +13,7 @@ using namespace pivot;
 namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
-const PositionSolver kSolvers[] = {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
-                                   PositionSolver::ModifiedNGS, PositionSolver::FullNGS};
+constexpr const auto& kSolvers = test_support::kAllSolvers;
 
 // A 2 x 0.5 m box sliding on a rail tilted 30 degrees from the ground, at the ground point
 // (0, 5); the box's centre is the anchor, and a second box of 4x the density hangs 1 m to the

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "all_solvers.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -44,8 +45,7 @@ struct Pulley {
     }
 };
 
-const PositionSolver kSolvers[] = {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
-                                   PositionSolver::ModifiedNGS, PositionSolver::FullNGS};
+constexpr const auto& kSolvers = test_support::kAllSolvers;
 }  // namespace
 
 TEST(PulleyJoint, TheLengthsDefaultToTheAnchorsDistances) {

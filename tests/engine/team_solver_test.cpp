@@ -122,7 +122,8 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false
     shape.filter.categoryBits = 0x0002;
     shape.filter.maskBits = 0x0001;
     const PositionSolver solvers[] = {PositionSolver::FullNGS, PositionSolver::Baumgarte,
-                                      PositionSolver::PseudoVelocity, PositionSolver::ModifiedNGS};
+                                      PositionSolver::PseudoVelocity, PositionSolver::ModifiedNGS,
+                                      PositionSolver::SoftStep};
     for (int row = 0; row < n; ++row) {
         for (int col = 0; col < n; ++col) {
             BodyDef def;
@@ -133,10 +134,11 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false
             world.createShape(body, shape, Circle{{0.0f, 0.0f}, 0.4f});
             bodies.push_back(body);
             const std::size_t k = grid.joints.size();
-            const PositionSolver solver = solvers[k % 4];
+            const PositionSolver solver = solvers[k % std::size(solvers)];
             const auto link = [&](BodyId other, Vec2 anchor) {
                 RevoluteJointDef joint = RevoluteJointDef::atWorldAnchor(other, body, anchor);
-                if (mixedSolvers) joint.positionSolver = solvers[grid.joints.size() % 4];
+                if (mixedSolvers)
+                    joint.positionSolver = solvers[grid.joints.size() % std::size(solvers)];
                 grid.joints.push_back(world.createJoint(joint));
             };
             if (row > 0) {
@@ -148,7 +150,8 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false
                 joint.joint1 = joint1;
                 joint.joint2 = joint2;
                 joint.ratio = ratio;
-                if (mixedSolvers) joint.positionSolver = solvers[grid.joints.size() % 4];
+                if (mixedSolvers)
+                    joint.positionSolver = solvers[grid.joints.size() % std::size(solvers)];
                 grid.joints.push_back(world.createJoint(joint));
             };
             if (everyType && row > 1 && (col + row) % 8 == 7) {

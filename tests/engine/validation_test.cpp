@@ -500,9 +500,28 @@ TEST(Validation, JointDefFields) {
     bad = def;
     bad.positionSolver = static_cast<PositionSolver>(17);
     expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.positionSolver", "17"});
+    const auto firstInvalid = static_cast<PositionSolver>(kPositionSolverCount);
+    expectRejected(f.world, [&] { f.world.setJointPositionSolver(f.joint, firstInvalid); },
+                   {"solver", std::to_string(kPositionSolverCount)});
+    bad = def;
+    bad.softness.hertz = 0.0f;
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.softness.hertz", "> 0"});
+    bad = def;
+    bad.softness.hertz = kNaN;
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.softness.hertz", "nan"});
+    bad = def;
+    bad.softness.dampingRatio = -1.0f;
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.softness.dampingRatio"});
     expectRejected(f.world,
-                   [&] { f.world.setJointPositionSolver(f.joint, static_cast<PositionSolver>(4)); },
-                   {"solver", "4"});
+                   [&] {
+                       f.world.setJointSoftness(f.joint, {kInf, 1.0f});
+                   },
+                   {"softness.hertz", "inf"});
+    expectRejected(f.world,
+                   [&] {
+                       f.world.setJointSoftness(f.joint, {10.0f, 2e10f});
+                   },
+                   {"softness.dampingRatio"});
     expectRejected(f.world, [&] { f.world.setJointBiasFactor(f.joint, -0.1f); }, {"biasFactor"});
     bad = def;
     bad.limit = {true, 0.5f, -0.5f};
@@ -745,10 +764,21 @@ TEST(Validation, WorldDef) {
     def.gravity.y = kNaN;
     EXPECT_THROW(World{def}, Error);
     def = WorldDef{};
-    def.defaultPositionSolver = static_cast<PositionSolver>(5);
+    def.defaultPositionSolver = static_cast<PositionSolver>(kPositionSolverCount);
     EXPECT_THROW(World{def}, Error);
     def = WorldDef{};
-    def.contactCorrection = static_cast<ContactCorrection>(2);
+    def.contactCorrection = static_cast<ContactCorrection>(3);
+    EXPECT_THROW(World{def}, Error);
+    for (float bad : {0.0f, -1.0f, kNaN, kInf}) {
+        def = WorldDef{};
+        def.contactHertz = bad;
+        EXPECT_THROW(World{def}, Error) << bad;
+        def = WorldDef{};
+        def.contactPushSpeed = bad;
+        EXPECT_THROW(World{def}, Error) << bad;
+    }
+    def = WorldDef{};
+    def.contactDampingRatio = -1.0f;
     EXPECT_THROW(World{def}, Error);
     def = WorldDef{};
     def.contactBiasFactor = 1.5f;

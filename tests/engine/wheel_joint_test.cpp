@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "all_solvers.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -12,8 +13,7 @@ using namespace pivot;
 namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
-const PositionSolver kSolvers[] = {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity,
-                                   PositionSolver::ModifiedNGS, PositionSolver::FullNGS};
+constexpr const auto& kSolvers = test_support::kAllSolvers;
 
 // A 2.5 x 0.5 m chassis on two 0.4 m wheels 1.8 m apart, sprung vertically, on flat ground.
 struct Car {

@@ -195,16 +195,18 @@ private:
         def.gravity = gravity.value;
         bool bad = gravity.bad;
         if (random_.chance(0.05f)) {
-            def.defaultPositionSolver = static_cast<PositionSolver>(random_.between(4, 255));
+            def.defaultPositionSolver =
+                static_cast<PositionSolver>(random_.between(kPositionSolverCount, 255));
             bad = true;
         } else {
-            def.defaultPositionSolver = static_cast<PositionSolver>(random_.below(4));
+            def.defaultPositionSolver =
+                static_cast<PositionSolver>(random_.below(kPositionSolverCount));
         }
         if (random_.chance(0.05f)) {
-            def.contactCorrection = static_cast<ContactCorrection>(random_.between(2, 255));
+            def.contactCorrection = static_cast<ContactCorrection>(random_.between(3, 255));
             bad = true;
         } else {
-            def.contactCorrection = static_cast<ContactCorrection>(random_.below(2));
+            def.contactCorrection = static_cast<ContactCorrection>(random_.below(3));
         }
         Arg<float> bias =
             random_.chance(0.7f) ? Arg<float>{kDefaultContactBias} : values.fraction();
@@ -1680,6 +1682,17 @@ private:
                 break;
             }
             case 3: {
+                if (random_.chance(0.3f)) {
+                    Arg<float> hertz = values_->positive(30.0f);
+                    Arg<float> ratio = values_->nonNegative(2.0f);
+                    const JointSoftness softness{hertz.value, ratio.value};
+                    trace("setJointSoftness " + idText(joint.value) + " " + text(hertz.value) +
+                          " " + text(ratio.value));
+                    attempt("World::setJointSoftness",
+                            verdict(joint.bad || velocityOnly(joint) || hertz.bad || ratio.bad),
+                            [&] { journal_.setJointSoftness(joint.value, softness); });
+                    break;
+                }
                 std::optional<float> bias;
                 bool bad = joint.bad || velocityOnly(joint);
                 if (random_.chance(0.7f)) {
@@ -1770,8 +1783,8 @@ private:
             }
             case 1: {
                 bool bad = hostile_ > 0.0f && random_.chance(0.3f);
-                auto c = static_cast<ContactCorrection>(bad ? random_.between(2, 255)
-                                                            : random_.below(2));
+                auto c = static_cast<ContactCorrection>(bad ? random_.between(3, 255)
+                                                            : random_.below(3));
                 trace("setContactCorrection " + std::to_string(int(c)));
                 attempt("World::setContactCorrection", verdict(bad),
                         [&] { journal_.setContactCorrection(c); });

@@ -377,6 +377,11 @@ void Journal::setJointBiasFactor(JointId id, std::optional<float> bias) {
     world_->setJointBiasFactor(id, bias);
     lines_.push_back("bias " + nameOf('j', id) + " " + num(bias.value_or(-1.0f)));
 }
+void Journal::setJointSoftness(JointId id, const JointSoftness& softness) {
+    world_->setJointSoftness(id, softness);
+    lines_.push_back("softness " + nameOf('j', id) + " " + num(softness.hertz) + " " +
+                     num(softness.dampingRatio));
+}
 void Journal::setJointLetGoSeparation(JointId id, std::optional<float> separation) {
     world_->setJointLetGoSeparation(id, separation);
     lines_.push_back("letgo " + nameOf('j', id) + " " + num(separation.value_or(-1.0f)));
@@ -967,6 +972,11 @@ ReplayResult replay(std::istream& in) {
             std::optional<float> bias;
             if (b >= 0.0f) bias = b;
             call = [&w, j, bias] { w.setJointBiasFactor(j, bias); };
+        } else if (command == "softness") {
+            JointId j = joint(f.word());
+            const float hertz = f.f();
+            const float ratio = f.f();
+            call = [&w, j, hertz, ratio] { w.setJointSoftness(j, {hertz, ratio}); };
         } else if (command == "letgo") {
             JointId j = joint(f.word());
             const float value = f.f();

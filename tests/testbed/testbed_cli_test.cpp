@@ -76,14 +76,18 @@ TEST(TestbedCli, BadValuesAreErrors) {
     EXPECT_NE(errorOf({"--vel-iters", "-1"}), "");
     EXPECT_NE(errorOf({"--scene"}), "");
     EXPECT_NE(errorOf({"--frobnicate"}), "");
-    EXPECT_NE(errorOf({"--contact", "soft"}).find("baumgarte, ngs"), std::string::npos);
+    EXPECT_NE(errorOf({"--contact", "spongy"}).find("baumgarte, ngs, soft"), std::string::npos);
+    EXPECT_NE(errorOf({"--substeps", "0"}), "");
+    EXPECT_NE(errorOf({"--substeps", "65"}), "");
+    EXPECT_EQ(parseCli({"--substeps", "4"}).substeps, 4);
+    EXPECT_EQ(parseCli({"--contact", "soft"}).contact, ContactCorrection::Soft);
 }
 
 TEST(TestbedCli, HelpExplainsEachOption) {
     std::string text = usage();
-    for (const char* option :
-         {"--scene", "--solver", "--contact", "--list", "--bias", "--steps", "--hz", "--vel-iters",
-          "--pos-iters", "--csv", "--html", "--docs", "--help", "reference", "report"}) {
+    for (const char* option : {"--scene", "--solver", "--contact", "--list", "--bias", "--steps",
+                               "--hz", "--vel-iters", "--substeps", "--pos-iters", "--csv",
+                               "--html", "--docs", "--help", "reference", "report"}) {
         EXPECT_NE(text.find(option), std::string::npos) << option;
     }
 }
