@@ -11,9 +11,10 @@ namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 
-Stepper stepperOf(std::unique_ptr<World> world) {
+Stepper stepperOf(std::unique_ptr<World> world, const PivotSetup& setup) {
     std::shared_ptr<World> owned = std::move(world);
-    return [owned](int) { owned->step(kDt, 8, 3); };
+    const int velocity = setup.velocityIterations, position = setup.positionIterations;
+    return [owned, velocity, position](int) { owned->step(kDt, velocity, position); };
 }
 
 Stepper stepperOf(std::unique_ptr<b2World> world) {
@@ -21,10 +22,12 @@ Stepper stepperOf(std::unique_ptr<b2World> world) {
     return [owned](int) { owned->Step(kDt, 8, 3); };
 }
 
-WorldDef noSleep(PositionSolver solver, int workers) {
+WorldDef noSleep(const PivotSetup& setup, int workers) {
     WorldDef def;
     def.enableSleep = false;
-    def.defaultPositionSolver = solver;
+    def.defaultPositionSolver = setup.solver;
+    def.contactCorrection = setup.contacts;
+    def.substepCount = setup.substeps;
     def.workerCount = workers;
     return def;
 }
@@ -66,10 +69,10 @@ BenchScene pyramidScene(const std::string& name, const std::string& description,
     scene.name = name;
     scene.description = description;
     scene.steps = steps;
-    scene.buildPivot = [=](PositionSolver solver, int workers) {
-        auto world = std::make_unique<World>(noSleep(solver, workers));
+    scene.buildPivot = [=](const PivotSetup& setup, int workers) {
+        auto world = std::make_unique<World>(noSleep(setup, workers));
         manyPyramids(*world, across, up, base);
-        return stepperOf(std::move(world));
+        return stepperOf(std::move(world), setup);
     };
     scene.buildBox2d = [=]() {
         auto world = box2dWorld();
@@ -85,10 +88,10 @@ BenchScene chainScene(const std::string& name, int steps, int count) {
     scene.description = std::to_string(count) + (count == 1 ? " chain" : " chains") +
                         " of 30 links, released horizontally";
     scene.steps = steps;
-    scene.buildPivot = [=](PositionSolver solver, int workers) {
-        auto world = std::make_unique<World>(noSleep(solver, workers));
+    scene.buildPivot = [=](const PivotSetup& setup, int workers) {
+        auto world = std::make_unique<World>(noSleep(setup, workers));
         scenes::addChains(*world, count);
-        return stepperOf(std::move(world));
+        return stepperOf(std::move(world), setup);
     };
     scene.buildBox2d = [=]() {
         auto world = box2dWorld();
@@ -100,16 +103,25 @@ BenchScene chainScene(const std::string& name, int steps, int count) {
 
 }  // namespace
 
+const std::vector<PivotSetup>& pivotSetups() {
+    static const std::vector<PivotSetup> setups = {
+        {"full_ngs", PositionSolver::FullNGS, ContactCorrection::NGS, 1, 8, 3},
+        {"baumgarte", PositionSolver::Baumgarte, ContactCorrection::NGS, 1, 8, 3},
+        {"soft_step", PositionSolver::SoftStep, ContactCorrection::Soft, 4, 1, 1},
+    };
+    return setups;
+}
+
 std::vector<BenchScene> benchScenes() {
     std::vector<BenchScene> scenes;
     BenchScene grid;
     grid.name = "joint_grid";
     grid.description = "100 x 100 circles, each jointed to its neighbours above and to the left";
     grid.steps = 500;
-    grid.buildPivot = [](PositionSolver solver, int workers) {
-        auto world = std::make_unique<World>(noSleep(solver, workers));
+    grid.buildPivot = [](const PivotSetup& setup, int workers) {
+        auto world = std::make_unique<World>(noSleep(setup, workers));
         scenes::addJointGrid(*world, scenes::JointGridSpec{});
-        return stepperOf(std::move(world));
+        return stepperOf(std::move(world), setup);
     };
     grid.buildBox2d = [] {
         auto world = box2dWorld();
@@ -127,16 +139,19 @@ std::vector<BenchScene> benchScenes() {
     heavy.name = "bridge_heavy";
     heavy.description = "the testbed scene: the bridge, and at 2 s a 600 kg box falls on it";
     heavy.steps = 600;
-    heavy.buildPivot = [](PositionSolver solver, int workers) {
+    heavy.buildPivot = [](const PivotSetup& setup, int workers) {
         scenes::SceneOptions options;
-        options.solver = solver;
+        options.solver = setup.solver;
+        options.contactCorrection = setup.contacts;
+        options.substepCount = setup.substeps;
         options.workerCount = workers;
         auto scene = std::make_shared<scenes::Scene>(
             scenes::buildScene(*scenes::findScene("bridge_heavy"), options));
         scene->world->setSleepEnabled(false);
-        return Stepper([scene](int i) {
+        const int velocity = setup.velocityIterations, position = setup.positionIterations;
+        return Stepper([scene, velocity, position](int i) {
             scene->beforeStep(*scene, i);
-            scene->world->step(kDt, 8, 3);
+            scene->world->step(kDt, velocity, position);
         });
     };
     heavy.buildBox2d = [] {

@@ -17,12 +17,28 @@ namespace pivot::bench {
 /// Takes step i (running the scene's script for it first, if it has one). Owns its world.
 using Stepper = std::function<void(int)>;
 
+/// How pivot2d steps a bench scene: its joints' solver, the world's contact correction and
+/// substeps, and the iterations of each (sub)step.
+struct PivotSetup {
+    const char* name;  ///< as the bench prints it
+    PositionSolver solver;
+    ContactCorrection contacts;
+    int substeps;
+    int velocityIterations;
+    int positionIterations;
+};
+
+/// full_ngs (the default: 8/3, NGS contacts), baumgarte (8/3, Baumgarte joints, NGS contacts)
+/// and soft_step (Box2D v3's world: soft-step joints, soft contacts, 4 substeps of 1 velocity
+/// and 1 relax iteration).
+const std::vector<PivotSetup>& pivotSetups();
+
 struct BenchScene {
     std::string name;
     std::string description;
     int steps = 0;  ///< steps per timed run
-    /// pivot2d with the given joint solver and WorldDef::workerCount.
-    std::function<Stepper(PositionSolver, int workers)> buildPivot;
+    /// pivot2d set up as given, with WorldDef::workerCount `workers`.
+    std::function<Stepper(const PivotSetup&, int workers)> buildPivot;
     std::function<Stepper()> buildBox2d;
 };
 

@@ -32,6 +32,14 @@ struct Options {
     int profileSteps = 0;
 };
 
+std::string setupNames() {
+    std::string names;
+    for (const bench::PivotSetup& setup : bench::pivotSetups()) {
+        names += (names.empty() ? "" : ", ") + std::string(setup.name);
+    }
+    return names;
+}
+
 // --profile ENGINE STEPS: build the --scene in one engine and step it STEPS times on one thread
 // (or --workers threads, if given), nothing else, so that a profiler (perf, callgrind) sees only
 // the engine. Instructions per step are the difference of two such runs over their difference in
@@ -41,14 +49,12 @@ int profileRun(const Options& options) {
     for (const bench::BenchScene& scene : bench::benchScenes()) {
         if (scene.name != options.only) continue;
         bench::Stepper step;
-        if (options.profileEngine == "box2d") {
-            step = scene.buildBox2d();
-        } else if (options.profileEngine == "full_ngs") {
-            step = scene.buildPivot(PositionSolver::FullNGS, workers);
-        } else if (options.profileEngine == "baumgarte") {
-            step = scene.buildPivot(PositionSolver::Baumgarte, workers);
-        } else {
-            std::cerr << "pivot-bench: --profile takes full_ngs, baumgarte or box2d (got '"
+        if (options.profileEngine == "box2d") step = scene.buildBox2d();
+        for (const bench::PivotSetup& setup : bench::pivotSetups()) {
+            if (options.profileEngine == setup.name) step = scene.buildPivot(setup, workers);
+        }
+        if (!step) {
+            std::cerr << "pivot-bench: --profile takes " << setupNames() << " or box2d (got '"
                       << options.profileEngine << "')\n";
             return 2;
         }
@@ -71,42 +77,50 @@ double median(std::vector<double> values) {
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-struct Result {
+// One timed configuration of a scene: pivot2d set up one way on `threads` threads.
+struct Row {
     std::string scene;
-    double fullNgs = 0.0, baumgarte = 0.0;        // with Options::workers
-    double fullNgsOne = 0.0, baumgarteOne = 0.0;  // on one thread
-    double box2d = 0.0;
+    std::string engine;
+    int threads = 1;
+    double pivot = 0.0;  // median ms per step
+    double box2d = 0.0;  // Box2D 2.4.1's, single-threaded, timed in the same rounds
 };
 
-Result runScene(const bench::BenchScene& scene, const Options& options) {
+// Every setup on one thread and, when --workers is above one, on that many; each round times
+// every configuration once and Box2D once, so drift touches all alike.
+std::vector<Row> runScene(const bench::BenchScene& scene, const Options& options) {
     const int steps = options.quick ? std::max(10, scene.steps / 20) : scene.steps;
     auto timeIt = [&](auto build) {
         auto stepper = build();  // built outside the timed region
         return millisecondsPerStep(stepper, steps);
     };
-    auto pivot = [&](PositionSolver solver, int workers) {
-        return [&scene, solver, workers] { return scene.buildPivot(solver, workers); };
-    };
+    std::vector<int> threads{1};
+    if (options.workers > 1) threads.push_back(options.workers);
+    const std::vector<bench::PivotSetup>& setups = bench::pivotSetups();
     auto box2d = [&] { return scene.buildBox2d(); };
     if (!options.quick) {  // warm-up: caches, page faults, frequency scaling
-        timeIt(pivot(PositionSolver::FullNGS, options.workers));
+        timeIt([&] { return scene.buildPivot(setups.front(), threads.back()); });
         timeIt(box2d);
     }
-    const bool alsoOne = options.workers > 1;
-    std::vector<double> full, baum, fullOne, baumOne, box;
+    std::vector<std::vector<double>> times(threads.size() * setups.size());
+    std::vector<double> box;
     for (int r = 0; r < options.repeats; ++r) {
-        full.push_back(timeIt(pivot(PositionSolver::FullNGS, options.workers)));
-        baum.push_back(timeIt(pivot(PositionSolver::Baumgarte, options.workers)));
-        if (alsoOne) {
-            fullOne.push_back(timeIt(pivot(PositionSolver::FullNGS, 1)));
-            baumOne.push_back(timeIt(pivot(PositionSolver::Baumgarte, 1)));
+        for (std::size_t t = 0; t < threads.size(); ++t) {
+            for (std::size_t s = 0; s < setups.size(); ++s) {
+                times[t * setups.size() + s].push_back(
+                    timeIt([&] { return scene.buildPivot(setups[s], threads[t]); }));
+            }
         }
         box.push_back(timeIt(box2d));
     }
-    Result result{scene.name, median(full), median(baum), 0.0, 0.0, median(box)};
-    result.fullNgsOne = alsoOne ? median(fullOne) : result.fullNgs;
-    result.baumgarteOne = alsoOne ? median(baumOne) : result.baumgarte;
-    return result;
+    std::vector<Row> rows;
+    for (std::size_t t = 0; t < threads.size(); ++t) {
+        for (std::size_t s = 0; s < setups.size(); ++s) {
+            rows.push_back({scene.name, setups[s].name, threads[t],
+                            median(times[t * setups.size() + s]), median(box)});
+        }
+    }
+    return rows;
 }
 
 // Heap bytes per body (with one circle), per joint and per contact, from worlds built to size.
@@ -197,19 +211,19 @@ int main(int argc, char** argv) {
         } else {
             std::cerr << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] "
                          "[--scene NAME] [--list] [--profile ENGINE STEPS]\n"
-                         "  Times each scene in pivot2d (FullNGS and Baumgarte joints) and in\n"
-                         "  Box2D 2.4.1, sleeping and continuous collision off, 1/60 s steps\n"
-                         "  with 8 velocity and 3 position iterations, and prints the median\n"
-                         "  milliseconds per step and the ratio box2d / pivot. pivot2d runs with\n"
-                         "  --workers threads (default: the machine's hardware threads) and, for\n"
-                         "  comparison, on one thread; Box2D 2.4.1 is single-threaded.\n"
+                         "  Times each scene in pivot2d and in Box2D 2.4.1, sleeping and\n"
+                         "  continuous collision off, 1/60 s steps, and prints the median\n"
+                         "  milliseconds per step and the ratio box2d / pivot. pivot2d runs as\n"
+                         "  full_ngs (8/3), baumgarte (8/3) and soft_step (4 substeps of 1/1,\n"
+                         "  soft contacts), on one thread and on --workers threads (default: the\n"
+                         "  machine's hardware threads); Box2D 2.4.1 is single-threaded, 8/3.\n"
                          "  --quick    a smoke run: a twentieth of the steps, one repeat\n"
-                         "  --csv      print scene,solver,pivot_ms,box2d_ms,speedup lines only\n"
+                         "  --csv      print scene,engine,threads,pivot_ms,box2d_ms,speedup lines\n"
                          "  --list     name and describe the scenes\n"
                          "  --profile ENGINE STEPS  step --scene STEPS times in one engine\n"
-                         "             (full_ngs, baumgarte or box2d) on one thread (pivot2d:\n"
-                         "             --workers threads if given), untimed, for perf or\n"
-                         "             callgrind\n";
+                         "             (full_ngs, baumgarte, soft_step or box2d) on one thread\n"
+                         "             (pivot2d: --workers threads if given), untimed, for perf\n"
+                         "             or callgrind\n";
             return arg == "--help" ? 0 : 2;
         }
     }
@@ -226,36 +240,36 @@ int main(int argc, char** argv) {
 
     if (!options.profileEngine.empty()) return profileRun(options);
 
-    std::vector<Result> results;
+    std::vector<Row> rows;
     for (const bench::BenchScene& scene : bench::benchScenes()) {
         if (!options.only.empty() && scene.name != options.only) continue;
         if (!options.csv) std::cerr << "timing " << scene.name << "...\n";
-        results.push_back(runScene(scene, options));
+        for (Row& row : runScene(scene, options)) rows.push_back(row);
     }
+    // One-thread rows first: like against like (Box2D 2.4.1 has one thread).
+    std::stable_sort(rows.begin(), rows.end(),
+                     [](const Row& a, const Row& b) { return a.threads < b.threads; });
 
     if (options.csv) {
-        // pivot_ms is with --workers threads; see the table for one thread.
-        std::cout << "scene,solver,pivot_ms,box2d_ms,speedup\n";
-        for (const Result& r : results) {
-            std::printf("%s,full_ngs,%.4f,%.4f,%.3f\n", r.scene.c_str(), r.fullNgs, r.box2d,
-                        r.box2d / r.fullNgs);
-            std::printf("%s,baumgarte,%.4f,%.4f,%.3f\n", r.scene.c_str(), r.baumgarte, r.box2d,
-                        r.box2d / r.baumgarte);
+        std::cout << "scene,engine,threads,pivot_ms,box2d_ms,speedup\n";
+        for (const Row& r : rows) {
+            std::printf("%s,%s,%d,%.4f,%.4f,%.3f\n", r.scene.c_str(), r.engine.c_str(), r.threads,
+                        r.pivot, r.box2d, r.box2d / r.pivot);
         }
         return 0;
     }
     std::printf(
-        "%s: median ms per step over %d run%s; sleeping and continuous collision off;\n"
-        "pivot2d with %d worker thread%s (and on 1 thread); Box2D 2.4.1 single-threaded\n",
+        "%s: median ms per step over %d run%s; sleeping and continuous collision off.\n"
+        "Engines: full_ngs and baumgarte (8 velocity / 3 position iterations, NGS contacts),\n"
+        "soft_step (soft-step joints and contacts, 4 substeps of 1 velocity / 1 relax\n"
+        "iteration); Box2D 2.4.1 at 8/3, single-threaded, beside each. x box2d = box2d / pivot.\n",
         options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
-        options.repeats == 1 ? "" : "s", options.workers, options.workers == 1 ? "" : "s");
-    std::printf("%-15s %9s %9s %9s %9s %9s | %8s %8s %8s %8s\n", "scene", "full", "baumg.",
-                "full 1t", "baumg.1t", "box2d", "x full", "x baumg.", "x full1t", "x baum1t");
-    for (const Result& r : results) {
-        std::printf("%-15s %9.3f %9.3f %9.3f %9.3f %9.3f | %7.2fx %7.2fx %7.2fx %7.2fx\n",
-                    r.scene.c_str(), r.fullNgs, r.baumgarte, r.fullNgsOne, r.baumgarteOne, r.box2d,
-                    r.box2d / r.fullNgs, r.box2d / r.baumgarte, r.box2d / r.fullNgsOne,
-                    r.box2d / r.baumgarteOne);
+        options.repeats == 1 ? "" : "s");
+    std::printf("%-15s %-10s %7s %9s %9s %8s\n", "scene", "engine", "threads", "pivot", "box2d",
+                "x box2d");
+    for (const Row& r : rows) {
+        std::printf("%-15s %-10s %7d %9.3f %9.3f %7.2fx\n", r.scene.c_str(), r.engine.c_str(),
+                    r.threads, r.pivot, r.box2d, r.box2d / r.pivot);
     }
     if (options.only.empty()) reportMemory(std::cout);
     return 0;

@@ -10,6 +10,7 @@
 
 #include "report/observations.h"
 #include "report/run_matrix.h"
+#include "report/substep_study.h"
 #include "report/svg.h"
 
 namespace pivot::report {
@@ -257,9 +258,16 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
         md << "\n";
     }
 
+    const SubstepStudy study = runSubstepStudy(
+        settings.steps, [&](const std::string& what) { log << "running " << what << "\n"; });
+    md << study.markdown;
+    for (const auto& [file, svg] : study.figures) {
+        if (!writeFile(figures / file, svg, problem)) return problem;
+    }
+
     double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    md << "This page took " << num("%.0f", seconds) << " s to generate (" << matrix.runs.size()
-       << " runs).\n";
+    md << "This page took " << num("%.0f", seconds) << " s to generate ("
+       << matrix.runs.size() + study.runs.size() << " runs).\n";
     if (!writeFile(docs / "results.md", md.str(), problem)) return problem;
 
     if (settings.updatePositionCorrection) {
