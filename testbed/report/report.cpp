@@ -90,7 +90,7 @@ std::string separationPlot(const RunMatrix& matrix, const std::string& scene) {
 }
 
 // A view of the moving parts: the static ground is 80 m wide and would shrink everything.
-std::pair<Vec2, Vec2> dynamicView(const std::vector<SnapshotFrame>& frames) {
+std::pair<Vec2, Vec2> dynamicView(const std::vector<SnapshotFrame>& frames, Vec2 origin) {
     Vec2 lower{1e9f, 1e9f}, upper{-1e9f, -1e9f};
     auto grow = [&](Vec2 p, float r) {
         lower = {std::min(lower.x, p.x - r), std::min(lower.y, p.y - r)};
@@ -107,7 +107,8 @@ std::pair<Vec2, Vec2> dynamicView(const std::vector<SnapshotFrame>& frames) {
         for (const auto& j : f.joints) grow(j.first, 0.0f);
     }
     if (lower.x > upper.x) return {};
-    lower = {std::min(lower.x, -1.0f), std::min(lower.y, -1.0f)};  // keep the ground line in view
+    // Keep the scene's origin, on its ground line, in view.
+    lower = {std::min(lower.x, origin.x - 1.0f), std::min(lower.y, origin.y - 1.0f)};
     return {lower - Vec2{1.0f, 1.0f}, upper + Vec2{1.0f, 1.0f}};
 }
 
@@ -228,7 +229,7 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
         const RunRecord* full = matrix.find(name, PositionSolver::FullNGS);
         if (full && !full->snapshots.empty()) {
             std::string strip = renderSnapshotStrip(name + " with FullNGS", full->snapshots,
-                                                    dynamicView(full->snapshots));
+                                                    dynamicView(full->snapshots, full->origin));
             if (!writeFile(figures / stripFile, strip, problem)) return problem;
         }
         md << "\n![" << name << ": separation against time](results/" << plotFile << ")\n\n"

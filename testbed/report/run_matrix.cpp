@@ -78,6 +78,7 @@ RunRecord runOne(const scenes::SceneInfo& info, PositionSolver solver, float bia
     record.bias = bias;
     record.positionIterations = positionIterations;
     record.jointMaxSeparation.assign(scene.joints.size(), 0.0f);
+    record.origin = scene.origin;
 
     scenes::RunSettings settings;
     settings.steps = steps;

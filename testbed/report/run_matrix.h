@@ -22,6 +22,7 @@ struct RunRecord {
     std::vector<float> maxSeparation;       ///< per step, m
     std::vector<float> jointMaxSeparation;  ///< per joint (in scene order), over the run, m
     std::vector<SnapshotFrame> snapshots;   ///< only for the FullNGS main runs
+    Vec2 origin;                            ///< the scene's (Scene::origin)
 };
 
 struct RunMatrix {

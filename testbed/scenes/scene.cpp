@@ -99,6 +99,8 @@ const std::vector<SceneInfo>& allScenes() {
         {"overlap_recovery",
          "a pyramid of ten boxes created a quarter of a box deep into each other and the ground",
          buildOverlapRecovery},
+        {"far_chain", "the chain 30 km from the origin, where floats are 2 mm apart",
+         buildFarChain},
     };
     return scenes;
 }

@@ -47,6 +47,9 @@ struct Scene {
     /// The step from which the scene should be at rest: body speeds after it count as jitter.
     /// -1: the scene is never meant to be at rest.
     int restFromStep = -1;
+    /// Where the scene is built: its bodies stay within a few tens of metres of it (the soak's
+    /// bound and the figures' views are measured from here).
+    Vec2 origin;
 };
 
 /// A Scene::beforeStep that reverses a revolute or wheel joint's motor every `steps` steps.
@@ -76,6 +79,7 @@ void buildDoublePendulum(Scene& scene, const SceneOptions& options);
 void buildMotorWheel(Scene& scene, const SceneOptions& options);
 void buildBridge(Scene& scene, const SceneOptions& options);
 void buildChain(Scene& scene, const SceneOptions& options);
+void buildFarChain(Scene& scene, const SceneOptions& options);
 void buildBridgeHeavy(Scene& scene, const SceneOptions& options);
 void buildPyramid(Scene& scene, const SceneOptions& options);
 void buildTumbler(Scene& scene, const SceneOptions& options);
@@ -98,7 +102,7 @@ void buildWeldBeam(Scene& scene, const SceneOptions& options);
 void buildCar(Scene& scene, const SceneOptions& options);
 void buildTopDown(Scene& scene, const SceneOptions& options);
 void buildMotorDrive(Scene& scene, const SceneOptions& options);
-/// 20 light links holding a ball 3,000 times heavier (not in the testbed table yet).
+/// 20 light links holding a ball 3,000 times heavier.
 void buildMassRatio(Scene& scene, const SceneOptions& options);
 
 /// The step index of time t (s) at the scene's rate.

@@ -89,6 +89,7 @@ const RecordedHashes kRecorded[] = {
     {"mass_ratio",        {0x27b0b8bbdfece63aull, 0x1efd442b3530d9dfull, 0x94449ea87cafd829ull, 0x77b4877c61a58670ull, 0x936c59e0c2642ae7ull}},
     {"heavy_stack",       {0x08c475b272262242ull, 0xcf8992d1c7ce371full, 0x6034900afcc6d710ull, 0x692b26b863ecc1adull, 0xaeafd31e373eab0eull}},
     {"overlap_recovery",  {0xb1f33b4b74b3d82bull, 0xf3e51cf809fa54beull, 0x7014479612dcbd91ull, 0x61c2fc806591620cull, 0xb331f301df8d8f97ull}},
+    {"far_chain",         {0x81fb2025224fdea3ull, 0x71cbe8c9908acb6eull, 0xb35adbaea103c602ull, 0x2729620802baade1ull, 0xd1dc607b2ac3ed93ull}},
 };
 // clang-format on
 
