@@ -72,17 +72,22 @@ struct JointLetGoEvent {
     float separation = 0.0f;  ///< m, |anchorB - anchorA| when the step let it go
 };
 
-/// How stiff a SoftStep joint holds together (PositionSolver::SoftStep; other strategies keep
-/// it but do not read it): its position error is pulled back by a spring of `hertz` with
-/// `dampingRatio` on the joint's own effective mass, so the stiffness does not depend on the
-/// masses it joins. Each substep uses at most kMaxSoftHertzShare of the substep rate (30 Hz at
-/// 60 Hz with one substep, 60 Hz from two substeps on).
+/// How soft a joint holds together under the strategies that make it soft (the others keep it
+/// but do not read it).
+///  - SoftStep: the position error is pulled back by a spring of `hertz` with `dampingRatio` on
+///    the joint's own effective mass, so the stiffness does not depend on the masses it joins.
+///    Each substep uses at most kMaxSoftHertzShare of the substep rate (30 Hz at 60 Hz with one
+///    substep, 60 Hz from two substeps on).
+///  - XPBD: `compliance`, the inverse stiffness of every row of the joint (m/N along lengths,
+///    rad/(N m) about angles); 0, the default, is rigid.
 struct JointSoftness {
     float hertz = kDefaultJointHertz;                ///< > 0, at most kMaxMagnitude
     float dampingRatio = kDefaultJointDampingRatio;  ///< >= 0, at most kMaxMagnitude; 1: critical
+    float compliance = 0.0f;                         ///< >= 0, at most kMaxMagnitude
 
     friend bool operator==(const JointSoftness& a, const JointSoftness& b) {
-        return a.hertz == b.hertz && a.dampingRatio == b.dampingRatio;
+        return a.hertz == b.hertz && a.dampingRatio == b.dampingRatio &&
+               a.compliance == b.compliance;
     }
     friend bool operator!=(const JointSoftness& a, const JointSoftness& b) { return !(a == b); }
 };
@@ -104,7 +109,7 @@ struct RevoluteJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
-    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
+    JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     JointLimit limit;
     JointMotor motor;
     /// m, in [0, kMaxMagnitude]: let the joint go when its anchors are further apart than this
@@ -162,7 +167,7 @@ struct DistanceJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
-    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
+    JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far its
     /// length is outside what the joint allows (World::jointSeparation).
     std::optional<float> letGoSeparation;
@@ -193,7 +198,7 @@ struct PulleyJointDef {
     std::optional<float> lengthB;
     std::optional<PositionSolver> positionSolver;
     std::optional<float> biasFactor;
-    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
+    JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation).
     std::optional<float> letGoSeparation;
     bool collideConnected = true;  ///< as Box2D's pulley: the two loads may touch
@@ -247,7 +252,7 @@ struct PrismaticJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
-    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
+    JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far anchor B
     /// is off the axis line, and beyond a reached limit (World::jointSeparation).
     std::optional<float> letGoSeparation;
@@ -287,7 +292,7 @@ struct WeldJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
-    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
+    JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as |anchorB - anchorA| (0 while the point
     /// is soft: World::jointSeparation).
     std::optional<float> letGoSeparation;
@@ -329,7 +334,7 @@ struct WheelJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
-    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
+    JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far the
     /// anchor is off the axis line, and beyond a reached limit (World::jointSeparation).
     std::optional<float> letGoSeparation;
@@ -372,7 +377,7 @@ struct GearJointDef {
     float ratio = 1.0f;
     std::optional<PositionSolver> positionSolver;
     std::optional<float> biasFactor;
-    JointSoftness softness;  ///< SoftStep's stiffness (unused by other strategies)
+    JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation), in
     /// joint1's units: rad for a revolute joint, m for a prismatic one.
     std::optional<float> letGoSeparation;

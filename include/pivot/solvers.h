@@ -31,17 +31,23 @@ enum class PositionSolver : std::uint8_t {
     /// correction leaves no momentum behind. Meant for substeps (WorldDef::substepCount; Box2D
     /// v3 uses 4). No bias factor.
     SoftStep,
+    /// XPBD (Mueller et al. 2020), as Avian solves joints: no position rows in the velocity
+    /// iterations; after integration, positionIterations XPBD sweeps move the poses with the
+    /// joint's compliance (JointSoftness::compliance, 0 = rigid) and the velocities take the
+    /// moves. Its multipliers start at zero every substep (no warm start). Meant for substeps.
+    /// No bias factor.
+    XPBD,
 };
 
-constexpr int kPositionSolverCount = 5;
+constexpr int kPositionSolverCount = 6;
 
 /// The solver's name as the testbed spells it: baumgarte, pseudo_velocity, modified_ngs,
-/// full_ngs, soft_step. An out-of-range value gives "invalid".
+/// full_ngs, soft_step, xpbd. An out-of-range value gives "invalid".
 const char* positionSolverName(PositionSolver solver);
 /// Parses a name made by positionSolverName; nullopt for anything else.
 std::optional<PositionSolver> parsePositionSolver(std::string_view name);
 /// The bias factor a joint uses when its def does not set one: 0.2 for Baumgarte and
-/// PseudoVelocity, 1.0 for the NGS pair, 0 for SoftStep (which has none).
+/// PseudoVelocity, 1.0 for the NGS pair, 0 for SoftStep and XPBD (which have none).
 float defaultBiasFactor(PositionSolver solver);
 
 /// How contacts remove penetration (all contacts of a world use the same).

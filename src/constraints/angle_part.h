@@ -24,6 +24,7 @@
 #include "constraints/constraint_bodies.h"
 #include "constraints/rows.h"
 #include "constraints/solver_body.h"
+#include "constraints/xpbd_rows.h"
 #include "pivot/constants.h"
 
 namespace pivot {
@@ -108,7 +109,7 @@ inline void solveAngleVelocity(const ConstraintBodies& b, AnglePart& a, SolverVe
         wA -= b.iA * impulse;
         wB += b.iB * impulse;
     }
-    if (a.limitEnabled) {
+    if (a.limitEnabled && rows != Rows::None) {
         {
             float cdot = wB - wA;
             float impulse = a.lowerTerm.soften<rows>(
@@ -139,6 +140,25 @@ inline void setLimitBias(AnglePart& a, float k) {
     float error = limitPositionError(a, a.angle);
     if (a.angle - a.lower <= 0.0f) a.lowerTerm = {k * std::min(error, 0.0f), true};
     if (a.upper - a.angle <= 0.0f) a.upperTerm = {-k * std::max(error, 0.0f), true};
+}
+
+/// XPBD on the limits (xpbd_rows.h): the lower bound, then the upper one, each re-measured;
+/// limits closer than 2 slop as one equality. lambda[0], lambda[1] are their accumulators.
+inline void xpbdLimits(const ConstraintBodies& b, const AnglePart& a, SolverPose* poses,
+                       float alphaTilde, float* lambda) {
+    if (!a.limitEnabled || b.fixedRotation()) return;
+    const float w = b.iA + b.iB;
+    if (a.limitsAreEqual()) {
+        xpbdAngle(b, poses, jointAngle(a, poses, b) - a.lower, alphaTilde, lambda[0]);
+        return;
+    }
+    const float lower = xpbdLowerBound(jointAngle(a, poses, b) - a.lower, w, alphaTilde, lambda[0]);
+    poses[b.indexA].a -= b.iA * lower;
+    poses[b.indexB].a += b.iB * lower;
+    // C = upper - angle >= 0: the row turns the bodies the other way.
+    const float upper = xpbdLowerBound(a.upper - jointAngle(a, poses, b), w, alphaTilde, lambda[1]);
+    poses[b.indexA].a += b.iA * upper;
+    poses[b.indexB].a -= b.iB * upper;
 }
 
 /// One NGS solve of the limit on positions: re-measure the angle, rotate the bodies by

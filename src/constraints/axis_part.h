@@ -17,6 +17,7 @@
 #include "constraints/constraint_bodies.h"
 #include "constraints/rows.h"
 #include "constraints/solver_body.h"
+#include "constraints/xpbd_rows.h"
 #include "pivot/constants.h"
 #include "pivot/math.h"
 
@@ -105,6 +106,18 @@ inline void applyAxisImpulseFlipped(const ConstraintBodies& b, const AxisRow& r,
     B.w -= b.iB * (lambda * r.a2);
 }
 
+/// Moves the poses by lambda along the row (B by +lambda u, A the opposite), at once.
+inline void moveAlongAxis(const ConstraintBodies& b, const AxisRow& r, SolverPose* poses,
+                          float lambda) {
+    SolverPose& A = poses[b.indexA];
+    SolverPose& B = poses[b.indexB];
+    const Vec2 P = lambda * r.u;
+    A.c -= b.mA * P;
+    A.a -= b.iA * (lambda * r.a1);
+    B.c += b.mB * P;
+    B.a += b.iB * (lambda * r.a2);
+}
+
 /// Lower and upper bounds on the coordinate along an axis row: lower  C = x - lower >= 0 and
 /// upper  C = upper - x >= 0, each impulse >= 0 (the upper's signs flipped so that both push
 /// when positive). As for the angle limits, a bound not yet reached lets the anchors approach it
@@ -165,6 +178,7 @@ struct AxisLimits {
     template <Rows rows = Rows::Biased>
     void solve(const ConstraintBodies& b, const AxisRow& r, float mass, SolverVelocity* velocities,
                const SoftFactors& soft = SoftFactors{}) {
+        if constexpr (rows == Rows::None) return;
         {
             const float cdot = axisSpeed(r, velocities[b.indexA], velocities[b.indexB]);
             const float lambda = lowerTerm.soften<rows>(-mass * (cdot + lowerTerm.target<rows>()),
@@ -183,5 +197,31 @@ struct AxisLimits {
         }
     }
 };
+
+/// XPBD on both bounds along the axis `direction` (in body A's frame), re-measured before each;
+/// lambda[0] and lambda[1] are their accumulators.
+inline void xpbdAxisLimits(const ConstraintBodies& b, const AxisLimits& limits, Vec2 localRA,
+                           Vec2 localRB, Vec2 direction, SolverPose* poses, float alphaTilde,
+                           float* lambda) {
+    const auto row = [&](float& x) {
+        const AxisFrame f =
+            axisFrameForPositions(poses[b.indexA], poses[b.indexB], localRA, localRB);
+        const AxisRow u = axisRow(f, rotate(Rot(poses[b.indexA].a), direction));
+        x = dot(u.u, f.d);
+        return u;
+    };
+    float x = 0.0f;
+    AxisRow u = row(x);
+    if (limits.equal()) {
+        moveAlongAxis(b, u, poses, xpbdDelta(x - limits.lower, axisK(b, u), alphaTilde, lambda[0]));
+        return;
+    }
+    moveAlongAxis(b, u, poses,
+                  xpbdLowerBound(x - limits.lower, axisK(b, u), alphaTilde, lambda[0]));
+    u = row(x);
+    // The upper bound's row points the other way: C = upper - x >= 0.
+    moveAlongAxis(b, u, poses,
+                  -xpbdLowerBound(limits.upper - x, axisK(b, u), alphaTilde, lambda[1]));
+}
 
 }  // namespace pivot

@@ -24,7 +24,9 @@
 
 namespace pivot {
 
-enum class Rows : std::uint8_t { Rigid, Biased, Soft };
+/// None (XPBD): the position rows are not solved in the velocity phase at all (motors and the
+/// joints' own springs still are); the joint corrects its poses after integration instead.
+enum class Rows : std::uint8_t { Rigid, Biased, Soft, None };
 
 /// The impulse a row applies in this mode, from its rigid solve and its accumulated impulse.
 template <Rows rows, typename T>

@@ -14,6 +14,7 @@
 #include "constraints/rows.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "constraints/xpbd_rows.h"
 #include "core/slot_pool.h"
 #include "joints/distance_joint.h"
 #include "joints/joint.h"
@@ -45,6 +46,7 @@ struct DistanceConstraint {
     float softMass = 0.0f;  // 1 / (K + gamma)
     float biasFactor = 0.0f;
     SoftFactors soft;  // SoftStep's (rows.h)
+    XpbdRows xpbd;     // XPBD's (xpbd_rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
@@ -118,9 +120,36 @@ struct DistanceConstraint {
             impulse += lambda;
             applyLengthImpulse(bodies, part, velocities, lambda);
         } else if (rod) {
-            impulse += solveRod<rows>(velocities, rows != Rows::Rigid ? rodBias : 0.0f);
+            if constexpr (rows != Rows::None) {
+                impulse += solveRod<rows>(velocities, rows != Rows::Rigid ? rodBias : 0.0f);
+            }
         }
-        if (limited) solveLimits<rows>(velocities);
+        if constexpr (rows != Rows::None) {
+            if (limited) solveLimits<rows>(velocities);
+        }
+    }
+
+    /// XPBD: the rod, or the rope's bounds, re-measured (xpbd_rows.h). The spring is its own.
+    void solveCompliant(SolverPose* poses) {
+        if (rod) {
+            moveAlong(
+                poses, [&](float L) { return L - rodLength; }, false, xpbd.lambda[0]);
+        } else if (limited) {
+            moveAlong(
+                poses, [&](float L) { return L - minLength; }, true, xpbd.lambda[0]);
+            // C = max - L >= 0: the bound pulls along -u.
+            moveAlong(
+                poses, [&](float L) { return maxLength - L; }, true, xpbd.lambda[1], -1.0f);
+        }
+    }
+    /// After the XPBD sweeps: the impulses they applied, as the reactions to store (the
+    /// spring's are its own).
+    void takeXpbdReactions(float invH) {
+        if (rod) impulse = invH * xpbd.lambda[0];
+        if (limited) {
+            lowerImpulse = invH * xpbd.lambda[0];
+            upperImpulse = invH * xpbd.lambda[1];
+        }
     }
 
     void setBias(const SolverPose* poses, float k) {
@@ -169,6 +198,28 @@ private:
         const SolverPose& A = poses[bodies.indexA];
         const SolverPose& B = poses[bodies.indexB];
         return length(B.c + part.rB - A.c - part.rA);
+    }
+
+    /// One XPBD row on the length: C = error(L), acting along sign * u (only while C < 0 when
+    /// `bound`).
+    template <typename Error>
+    void moveAlong(SolverPose* poses, Error error, bool bound, float& lambda, float sign = 1.0f) {
+        const LengthMeasure m = measureLength(bodies, part, poses);
+        if (m.u == Vec2{}) return;
+        const float C = error(m.length);
+        const Vec2 u = sign * m.u;
+        const float crA = cross(m.rA, u);
+        const float crB = cross(m.rB, u);
+        const float w = bodies.mA + bodies.iA * crA * crA + bodies.mB + bodies.iB * crB * crB;
+        const float delta = bound ? xpbdLowerBound(C, w, xpbd.alphaTilde, lambda)
+                                  : xpbdDelta(C, w, xpbd.alphaTilde, lambda);
+        const Vec2 P = delta * u;
+        SolverPose& A = poses[bodies.indexA];
+        SolverPose& B = poses[bodies.indexB];
+        A.c -= bodies.mA * P;
+        A.a -= bodies.iA * cross(m.rA, P);
+        B.c += bodies.mB * P;
+        B.a += bodies.iB * cross(m.rB, P);
     }
 
     void setLimitTerms(float invH) {

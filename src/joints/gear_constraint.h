@@ -31,6 +31,7 @@
 
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "constraints/xpbd_rows.h"
 #include "core/slot_pool.h"
 #include "joints/gear_joint.h"
 #include "joints/joint.h"
@@ -73,6 +74,7 @@ struct GearConstraint {
     float biasFactor = 0.0f;
     float slop = kLinearSlop;
     SoftFactors soft;  // SoftStep's (constraints/rows.h)
+    XpbdRows xpbd;     // XPBD's (constraints/xpbd_rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the stored impulse.
@@ -130,8 +132,19 @@ struct GearConstraint {
 
     template <Rows rows>
     void solveVelocity(SolverVelocity* velocities) {
-        impulse += solveRow<rows>(velocities, rows != Rows::Rigid ? bias : 0.0f);
+        if constexpr (rows != Rows::None) {
+            impulse += solveRow<rows>(velocities, rows != Rows::Rigid ? bias : 0.0f);
+        }
     }
+
+    /// XPBD on the coupling, re-measured (xpbd_rows.h).
+    void solveCompliant(SolverPose* poses) {
+        Jacobian now;
+        const float C = measure(poses, now);
+        applyToPoses(now, poses, xpbdDelta(C, now.k, xpbd.alphaTilde, xpbd.lambda[0]));
+    }
+    /// After the XPBD sweeps: the impulse they applied, as the reaction to store.
+    void takeXpbdReactions(float invH) { impulse = invH * xpbd.lambda[0]; }
 
     /// factor C at these poses (C depends on the coordinates only, not on the rows).
     void setBias(const SolverPose* poses, float factor) { bias = factor * error(poses); }

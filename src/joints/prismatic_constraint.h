@@ -34,6 +34,7 @@
 #include "constraints/constraint_bodies.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "constraints/xpbd_rows.h"
 #include "core/mat33.h"
 #include "core/slot_pool.h"
 #include "joints/joint.h"
@@ -89,6 +90,7 @@ struct PrismaticConstraint {
     float referenceAngle = 0.0f;
     float biasFactor = 0.0f;
     SoftFactors soft;  // SoftStep's (constraints/rows.h)
+    XpbdRows xpbd;     // XPBD's (constraints/xpbd_rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
@@ -181,7 +183,31 @@ struct PrismaticConstraint {
         }
         if (motorEnabled) solveMotor(velocities);
         if (limits.enabled) limits.solve<rows>(bodies, axis, axialMass, velocities, soft);
-        impulse += solveBlock<rows>(velocities, rows != Rows::Rigid ? bias : Vec2{});
+        if constexpr (rows != Rows::None) {
+            impulse += solveBlock<rows>(velocities, rows != Rows::Rigid ? bias : Vec2{});
+        }
+    }
+
+    /// XPBD: the limits, the angle, then the line across the axis, each re-measured
+    /// (xpbd_rows.h).
+    void solveCompliant(SolverPose* poses) {
+        if (limits.enabled) {
+            xpbdAxisLimits(bodies, limits, localRA, localRB, localAxis, poses, xpbd.alphaTilde,
+                           &xpbd.lambda[2]);
+        }
+        const float angle = poses[bodies.indexB].a - poses[bodies.indexA].a - referenceAngle;
+        xpbdAngle(bodies, poses, angle, xpbd.alphaTilde, xpbd.lambda[1]);
+        const AxisFrame f =
+            axisFrameForPositions(poses[bodies.indexA], poses[bodies.indexB], localRA, localRB);
+        const AxisRow n = axisRow(f, rotate(Rot(poses[bodies.indexA].a), localPerp));
+        moveAlongAxis(bodies, n, poses,
+                      xpbdDelta(dot(n.u, f.d), axisK(bodies, n), xpbd.alphaTilde, xpbd.lambda[0]));
+    }
+    /// After the XPBD sweeps: the impulses they applied, as the reactions to store.
+    void takeXpbdReactions(float invH) {
+        impulse = {invH * xpbd.lambda[0], invH * xpbd.lambda[1]};
+        limits.lowerImpulse = invH * xpbd.lambda[2];
+        limits.upperImpulse = invH * xpbd.lambda[3];
     }
 
     void setBias(const SolverPose*, float k) {

@@ -9,6 +9,7 @@
 #include "constraints/pulley_part.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "constraints/xpbd_rows.h"
 #include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/pulley_joint.h"
@@ -25,6 +26,7 @@ struct PulleyConstraint {
     float bias = 0.0f;     // velocity bias (Baumgarte, the pseudo-velocity pass)
     float biasFactor = 0.0f;
     SoftFactors soft;  // SoftStep's (constraints/rows.h)
+    XpbdRows xpbd;     // XPBD's (constraints/xpbd_rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the stored impulse.
@@ -73,8 +75,29 @@ struct PulleyConstraint {
 
     template <Rows rows>
     void solveVelocity(SolverVelocity* velocities) {
-        impulse += solveRow<rows>(velocities, rows != Rows::Rigid ? bias : 0.0f);
+        if constexpr (rows != Rows::None) {
+            impulse += solveRow<rows>(velocities, rows != Rows::Rigid ? bias : 0.0f);
+        }
     }
+
+    /// XPBD on the rope's length, re-measured (xpbd_rows.h).
+    void solveCompliant(SolverPose* poses) {
+        const PulleyMeasure m = measurePulley(bodies, part, poses);
+        const float mass = pulleyMass(bodies, part, m);
+        const float C = part.constant - m.lengthA - part.ratio * m.lengthB;
+        const float lambda =
+            mass > 0.0f ? xpbdDelta(C, 1.0f / mass, xpbd.alphaTilde, xpbd.lambda[0]) : 0.0f;
+        const Vec2 PA = -lambda * m.uA;
+        const Vec2 PB = (-part.ratio * lambda) * m.uB;
+        SolverPose& A = poses[bodies.indexA];
+        SolverPose& B = poses[bodies.indexB];
+        A.c += bodies.mA * PA;
+        A.a += bodies.iA * cross(m.rA, PA);
+        B.c += bodies.mB * PB;
+        B.a += bodies.iB * cross(m.rB, PB);
+    }
+    /// After the XPBD sweeps: the impulse they applied, as the reaction to store.
+    void takeXpbdReactions(float invH) { impulse = invH * xpbd.lambda[0]; }
 
     void setBias(const SolverPose* poses, float k) {
         // At the radius vectors and directions last measured, as the other joints' biases.

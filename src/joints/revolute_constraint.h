@@ -23,6 +23,7 @@
 #include "constraints/point_part.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "constraints/xpbd_rows.h"
 #include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/revolute_joint.h"
@@ -38,6 +39,7 @@ struct RevoluteConstraint {
     AnglePart angle;
     float biasFactor = 0.0f;
     SoftFactors soft;             // SoftStep's (rows.h)
+    XpbdRows xpbd;                // XPBD's (xpbd_rows.h)
     std::int32_t jointIndex = 0;  // where the impulses are stored back
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
@@ -85,8 +87,8 @@ struct RevoluteConstraint {
     /// A let-go joint's constraint: its bodies' masses are taken as zero, so every solve of it
     /// applies a zero impulse.
     void makeInert() {
-        *this =
-            RevoluteConstraint{bodies, PointPart{}, AnglePart{}, 0.0f, SoftFactors{}, jointIndex};
+        *this = RevoluteConstraint{bodies,        PointPart{}, AnglePart{}, 0.0f,
+                                   SoftFactors{}, XpbdRows{},  jointIndex};
         bodies.mA = bodies.mB = bodies.iA = bodies.iB = 0.0f;
     }
 
@@ -117,7 +119,9 @@ struct RevoluteConstraint {
     void solveVelocity(SolverVelocity* velocities) {
         const Vec2 bias = rows != Rows::Rigid ? point.bias : Vec2{};
         solveAngleVelocity<true, rows>(bodies, angle, velocities, soft);
-        point.impulse += solvePointVelocity<rows>(bodies, point, velocities, bias, soft);
+        if constexpr (rows != Rows::None) {
+            point.impulse += solvePointVelocity<rows>(bodies, point, velocities, bias, soft);
+        }
     }
 
     void setBias(const SolverPose* poses, float k) {
@@ -142,6 +146,19 @@ struct RevoluteConstraint {
     }
 
     void freezeMass(const SolverPose* poses) { preparePoint(bodies, point, poses); }
+
+    /// XPBD: the limits, then the pin, each re-measured (xpbd_rows.h).
+    void solveCompliant(SolverPose* poses) {
+        xpbdLimits(bodies, angle, poses, xpbd.alphaTilde, &xpbd.lambda[1]);
+        xpbdPoint(bodies, point.localRA, point.localRB, poses, xpbd.alphaTilde, xpbd.lambda[0],
+                  xpbd.point);
+    }
+    /// After the XPBD sweeps: the impulses they applied, as the reactions to store.
+    void takeXpbdReactions(float invH) {
+        point.impulse = invH * xpbd.point;
+        angle.lowerImpulse = invH * xpbd.lambda[1];
+        angle.upperImpulse = invH * xpbd.lambda[2];
+    }
 
     /// The limit, then the pin. Within slop means both were, as measured before their
     /// corrections (|C| <= kLinearSlop, limit error <= kAngularSlop).

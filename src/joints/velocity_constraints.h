@@ -21,6 +21,7 @@
 #include "constraints/rows.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "constraints/xpbd_rows.h"
 #include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/velocity_joints.h"
@@ -45,6 +46,7 @@ struct ClampedVelocityRows {
     float angularBias = 0.0f;
     float biasFactor = 0.0f;
     SoftFactors soft;  // unused: no position rows
+    XpbdRows xpbd;     // unused likewise
     std::int32_t jointIndex = 0;
 
     void setMasses() {
@@ -128,6 +130,8 @@ struct ClampedVelocityRows {
     void restartAt(const SolverPose*, float) {}
     void solvePseudoVelocity(SolverVelocity*) {}
     void freezeMass(const SolverPose*) {}
+    void solveCompliant(SolverPose*) {}
+    void takeXpbdReactions(float) {}
     template <bool>
     bool solvePosition(SolverPose*) const {
         return true;

@@ -27,6 +27,7 @@
 #include "constraints/soft_factors.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "constraints/xpbd_rows.h"
 #include "core/mat33.h"
 #include "core/slot_pool.h"
 #include "joints/joint.h"
@@ -65,6 +66,7 @@ struct WeldConstraint {
     float referenceAngle = 0.0f;
     float biasFactor = 0.0f;
     SoftFactors soft;  // SoftStep's (constraints/rows.h)
+    XpbdRows xpbd;     // XPBD's (constraints/xpbd_rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulse as
@@ -130,6 +132,7 @@ struct WeldConstraint {
             impulse.y += lambda.y;
             apply(velocities, {lambda.x, lambda.y, 0.0f});
         }
+        if constexpr (rows == Rows::None) return;
         const Vec3 applied = solveRigid<rows>(velocities, rows != Rows::Rigid ? bias : Vec3{});
         impulse.x += applied.x;
         impulse.y += applied.y;
@@ -145,6 +148,25 @@ struct WeldConstraint {
     void solvePseudoVelocity(SolverVelocity* pseudo) { solveRigid(pseudo, bias); }
 
     void freezeMass(const SolverPose* poses) { measure(poses); }
+
+    /// XPBD on the rigid halves: the angle, then the point (xpbd_rows.h).
+    void solveCompliant(SolverPose* poses) {
+        if (!softAngle) {
+            const float C = poses[bodies.indexB].a - poses[bodies.indexA].a - referenceAngle;
+            xpbdAngle(bodies, poses, C, xpbd.alphaTilde, xpbd.lambda[1]);
+        }
+        if (!softPoint) {
+            xpbdPoint(bodies, localRA, localRB, poses, xpbd.alphaTilde, xpbd.lambda[0], xpbd.point);
+        }
+    }
+    /// After the XPBD sweeps: the rigid rows' impulses, beside the soft halves' own.
+    void takeXpbdReactions(float invH) {
+        if (!softPoint) {
+            impulse.x = invH * xpbd.point.x;
+            impulse.y = invH * xpbd.point.y;
+        }
+        if (!softAngle) impulse.z = invH * xpbd.lambda[1];
+    }
 
     /// One NGS solve of the rigid rows: the block when both halves are rigid.
     template <bool rebuildMass>

@@ -24,6 +24,7 @@
 #include "constraints/soft_factors.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "constraints/xpbd_rows.h"
 #include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/wheel_joint.h"
@@ -57,6 +58,7 @@ struct WheelConstraint {
     Vec2 localPerp;
     float biasFactor = 0.0f;
     SoftFactors soft;  // SoftStep's (constraints/rows.h)
+    XpbdRows xpbd;     // XPBD's (constraints/xpbd_rows.h)
     std::int32_t jointIndex = 0;
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
@@ -148,7 +150,27 @@ struct WheelConstraint {
         }
         if (motorEnabled) solveMotor(velocities);
         if (limits.enabled) limits.solve<rows>(bodies, axis, axialMass, velocities, soft);
-        impulse += solveLine<rows>(velocities, rows != Rows::Rigid ? lineBias : 0.0f);
+        if constexpr (rows != Rows::None) {
+            impulse += solveLine<rows>(velocities, rows != Rows::Rigid ? lineBias : 0.0f);
+        }
+    }
+
+    /// XPBD: the limits, then the line across the axis, each re-measured (xpbd_rows.h).
+    void solveCompliant(SolverPose* poses) {
+        if (limits.enabled) {
+            xpbdAxisLimits(bodies, limits, localRA, localRB, localAxis, poses, xpbd.alphaTilde,
+                           &xpbd.lambda[1]);
+        }
+        const AxisFrame f = frameAt(poses);
+        const AxisRow n = axisRow(f, rotate(Rot(poses[bodies.indexA].a), localPerp));
+        moveAlongAxis(bodies, n, poses,
+                      xpbdDelta(dot(n.u, f.d), axisK(bodies, n), xpbd.alphaTilde, xpbd.lambda[0]));
+    }
+    /// After the XPBD sweeps: the impulses they applied, as the reactions to store.
+    void takeXpbdReactions(float invH) {
+        impulse = invH * xpbd.lambda[0];
+        limits.lowerImpulse = invH * xpbd.lambda[1];
+        limits.upperImpulse = invH * xpbd.lambda[2];
     }
 
     void setBias(const SolverPose*, float k) {

@@ -87,7 +87,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                 ++report.letGoJoints;
                 c.makeInert();
             } else {
-                c.startImpulses(joint, step.warmStarting, step.dtRatio);
+                c.startImpulses(joint, step.warmStarting && S::kWarmStart, step.dtRatio);
             }
         }
     });
@@ -95,15 +95,15 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
 }
 
 // A joint whose impulses (or the force and torque they stand for) went non-finite during the
-// step is let go: it keeps nothing. Strategies that relax store after the position phase
-// (`afterPositionPhase`), so that the relax sweeps count; the others before it, as the velocity
+// step is let go: it keeps nothing. Strategies that relax or solve XPBD store after the position
+// phase (`afterPositionPhase`), so that what it adds counts; the others before it, as the velocity
 // phase left them (the pseudo-velocity pass reuses their accumulators, and ModifiedNGS's frozen
 // mass re-measures the directions the reactions are reported along).
 void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
                         const SlotPool<Body>& bodies, float invDt, bool afterPositionPhase,
                         IslandReport& report) {
     work.groups.forEachGroup([&](auto strategy, auto& group, int) {
-        if (decltype(strategy)::kRelax != afterPositionPhase) return;
+        if (decltype(strategy)::kStoreAfterPositionPhase != afterPositionPhase) return;
         const IndexRange mine = team.share(static_cast<int>(group.size()));
         for (int k = mine.begin; k < mine.end; ++k) {
             const auto& c = group[k];
@@ -320,6 +320,7 @@ void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
     work.velocities.reserve(bound.bodies);
     work.positions.reserve(bound.bodies);
     work.positionScratch.pseudo.reserve(bound.bodies);
+    work.positionScratch.xpbdStart.reserve(bound.bodies);
     work.mouseConstraints.reserve(bound.mouseJoints);
     work.contactSolver.reserve(bound.contacts);
 }
@@ -336,6 +337,7 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     work.contactSolver.reset(island.contactCount, step);
     resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
     resizeBuffer(work.positionScratch.pseudo, slots);
+    resizeBuffer(work.positionScratch.xpbdStart, slots);
     for (std::vector<SweepTally>& round : work.positionScratch.tallies) {
         resizeBuffer(round, static_cast<std::size_t>(teamSize));
     }

@@ -69,6 +69,46 @@ void solveRelaxSweeps(const Team& team, JointGroups& groups, const IslandSchedul
     }
 }
 
+void solveXpbdSweeps(const Team& team, JointGroups& groups, const IslandSchedule& schedule,
+                     SolverPose* poses, SolverVelocity* velocities, std::vector<SolverPose>& start,
+                     int iterations, float h) {
+    bool any = false;
+    groups.forEachGroup([&](auto strategy, auto& group, int) {
+        any = any || (decltype(strategy)::kXpbdSweeps && !group.empty());
+    });
+    if (!any || iterations == 0) return;
+    const IndexRange slots = team.share(static_cast<int>(start.size()));
+    std::copy(poses + slots.begin, poses + slots.end, start.begin() + slots.begin);
+    team.sync();
+    for (int it = 0; it < iterations; ++it) {
+        groups.forEachGroup([&](auto strategy, auto& group, int g) {
+            using S = decltype(strategy);
+            if constexpr (S::kXpbdSweeps) {
+                forEachBatch(team, schedule.jointBatches[g], [&](IndexRange range) {
+                    for (int k = range.begin; k < range.end; ++k) {
+                        S::solveCompliant(group[k], poses);
+                    }
+                });
+            }
+        });
+    }
+    const float invH = 1.0f / h;
+    groups.forEachGroup([&](auto strategy, auto& group, int) {
+        using S = decltype(strategy);
+        if constexpr (S::kXpbdSweeps) {
+            const IndexRange mine = team.share(static_cast<int>(group.size()));
+            for (int k = mine.begin; k < mine.end; ++k) group[k].takeXpbdReactions(invH);
+        }
+    });
+    // The moves become motion (position-based dynamics derives velocities from positions).
+    // Bodies no XPBD joint moved get zero.
+    for (int i = slots.begin; i < slots.end; ++i) {
+        velocities[i].v += invH * (poses[i].c - start[i].c);
+        velocities[i].w += invH * (poses[i].a - start[i].a);
+    }
+    team.sync();
+}
+
 }  // namespace
 
 PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
@@ -77,6 +117,7 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
                                        PositionPhaseScratch& scratch, int iterations, float h) {
     solveRelaxSweeps(team, groups, schedule, contacts, velocities, iterations);
     solvePseudoVelocityPass(team, groups, schedule, poses, scratch.pseudo, iterations, h);
+    solveXpbdSweeps(team, groups, schedule, poses, velocities, scratch.xpbdStart, iterations, h);
 
     PositionPhaseResult result;
     bool anyJoint = false;

@@ -4,7 +4,9 @@
 //      contacts, as in the velocity iterations);
 //   2. the strategies with a pseudo-velocity pass (PseudoVelocity): `iterations` sweeps on
 //      pseudo velocities that start at zero, then poses += h * pseudo velocity;
-//   3. the NGS sweeps: up to `iterations`, each over the NGS contacts, then the joints of the
+//   3. the XPBD sweeps (XPBD): `iterations` sweeps of XPBD solves on the poses, then each
+//      body's velocity += its move over them / h;
+//   4. the NGS sweeps: up to `iterations`, each over the NGS contacts, then the joints of the
 //      strategies that take part (ModifiedNGS, then FullNGS), stopping once every joint is
 //      within slop (linear and angular) and no contact is deeper than
 //      ContactSolver::withinTolerance allows.
@@ -38,6 +40,7 @@ struct SweepTally {
 /// publish one sweep's tally while another still reads the previous sweep's.
 struct PositionPhaseScratch {
     std::vector<SolverVelocity> pseudo;              // one per solver slot
+    std::vector<SolverPose> xpbdStart;               // one per solver slot
     std::array<std::vector<SweepTally>, 2> tallies;  // one per member
 };
 

@@ -9,9 +9,14 @@
 //   prepareSoftness(c, joint, step)        as the joint is built (its own settings)
 //   prepareBias(c, poses, invDt)           at the start of the step, after the joint is built
 //   solveVelocity(c, velocities)           one velocity iteration
+//   kWarmStart                             starts from the impulses the last (sub)step stored
+//   kXpbdSweeps                            runs XPBD sweeps after integration, with
+//     solveCompliant(c, poses)               one XPBD solve on the poses (velocities derived)
+//                                            and takeXpbdReactions(invH) after them
 //   kRelax                                 runs relax sweeps after integration, with
-//     relax(c, velocities)                   one rigid velocity solve without bias; its impulses
-//                                            are stored after them
+//     relax(c, velocities)                   one rigid velocity solve without bias
+//   kStoreAfterPositionPhase               its impulses are stored after the position phase
+//                                            (relax or XPBD adds to them), not before
 //   kPseudoVelocityPass                    runs the pseudo-velocity pass after integration, with
 //     beginPass(c, poses, invH), solvePass(c, pseudo)
 //   kNgsSweeps                             joins the NGS sweeps of the position phase, with
@@ -26,6 +31,7 @@
 #include "constraints/soft_factors.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
+#include "constraints/xpbd_rows.h"
 #include "joints/joint.h"
 #include "pivot/constants.h"
 #include "pivot/solvers.h"
@@ -37,6 +43,9 @@ struct StrategyDefaults {
     static constexpr bool kPseudoVelocityPass = false;
     static constexpr bool kNgsSweeps = false;
     static constexpr bool kRelax = false;
+    static constexpr bool kStoreAfterPositionPhase = false;
+    static constexpr bool kWarmStart = true;
+    static constexpr bool kXpbdSweeps = false;
 
     template <typename C>
     static void prepareSoftness(C&, const Joint&, const StepContext&) {}
@@ -132,6 +141,7 @@ struct SoftStepStrategy : StrategyDefaults {
     static constexpr const char* kName = "soft_step";
     static constexpr float kDefaultBias = 0.0f;  // none: hertz and damping ratio take its place
     static constexpr bool kRelax = true;
+    static constexpr bool kStoreAfterPositionPhase = true;
 
     template <typename C>
     static void prepareSoftness(C& c, const Joint& joint, const StepContext& step) {
@@ -152,6 +162,34 @@ struct SoftStepStrategy : StrategyDefaults {
     }
 };
 
+/// XPBD (Mueller et al. 2020), per joint: the position rows are left out of the velocity
+/// iterations (motors and springs stay); after integration, each substep's XPBD sweeps move the
+/// poses with the joint's compliance, and the velocities take the moves (v += dx / h), so the
+/// correction is real motion, as in position-based dynamics. No warm start: each substep's
+/// multipliers start at zero.
+struct XpbdStrategy : StrategyDefaults {
+    static constexpr PositionSolver kSolver = PositionSolver::XPBD;
+    static constexpr const char* kName = "xpbd";
+    static constexpr float kDefaultBias = 0.0f;  // none: the compliance takes its place
+    static constexpr bool kWarmStart = false;
+    static constexpr bool kXpbdSweeps = true;
+    static constexpr bool kStoreAfterPositionPhase = true;
+
+    template <typename C>
+    static void prepareSoftness(C& c, const Joint& joint, const StepContext& step) {
+        c.xpbd = XpbdRows{};
+        c.xpbd.alphaTilde = joint.softness.compliance * step.invDt * step.invDt;
+    }
+    template <typename C>
+    static void solveVelocity(C& c, SolverVelocity* velocities) {
+        c.template solveVelocity<Rows::None>(velocities);
+    }
+    template <typename C>
+    static void solveCompliant(C& c, SolverPose* poses) {
+        c.solveCompliant(poses);
+    }
+};
+
 template <typename... Strategies>
 struct StrategyList {
     static constexpr int kCount = sizeof...(Strategies);
@@ -166,8 +204,9 @@ struct StrategyList {
     }
 };
 
-using PositionStrategies = StrategyList<BaumgarteStrategy, PseudoVelocityStrategy,
-                                        ModifiedNgsStrategy, FullNgsStrategy, SoftStepStrategy>;
+using PositionStrategies =
+    StrategyList<BaumgarteStrategy, PseudoVelocityStrategy, ModifiedNgsStrategy, FullNgsStrategy,
+                 SoftStepStrategy, XpbdStrategy>;
 
 static_assert(PositionStrategies::inSolverOrder() &&
                   PositionStrategies::kCount == kPositionSolverCount,

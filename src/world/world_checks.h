@@ -157,6 +157,7 @@ inline void checkSoftness(const char* call, const char* field, const JointSoftne
     const std::string name(field);
     requirePositive(call, (name + ".hertz").c_str(), softness.hertz);
     requireNonNegative(call, (name + ".dampingRatio").c_str(), softness.dampingRatio);
+    requireNonNegative(call, (name + ".compliance").c_str(), softness.compliance);
 }
 
 }  // namespace pivot

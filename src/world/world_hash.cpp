@@ -234,6 +234,7 @@ std::uint64_t World::stateHash() const {
         if (j.softness != JointSoftness{}) {
             h.add(j.softness.hertz);
             h.add(j.softness.dampingRatio);
+            h.add(j.softness.compliance);
         }
         h.add(j.collideConnected);
         h.add(j.userData);

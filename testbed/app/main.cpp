@@ -27,9 +27,10 @@ std::vector<testbed::TableRow> runAll(const testbed::CliOptions& options) {
                 auto solver = static_cast<PositionSolver>(s);
                 if (options.solver && *options.solver != solver) continue;
                 if (options.contact && *options.contact != contact) continue;
-                // Soft contacts go with soft-step joints (Box2D v3's world) unless asked for.
+                // Soft contacts go with soft-step and XPBD joints (Box2D v3's world, Avian's
+                // pairing) unless asked for.
                 if (!options.contact && contact == ContactCorrection::Soft &&
-                    solver != PositionSolver::SoftStep) {
+                    solver != PositionSolver::SoftStep && solver != PositionSolver::XPBD) {
                     continue;
                 }
                 scenes::SceneOptions sceneOptions;

@@ -10,7 +10,7 @@ namespace pivot::test_support {
 
 inline constexpr PositionSolver kAllSolvers[] = {
     PositionSolver::Baumgarte, PositionSolver::PseudoVelocity, PositionSolver::ModifiedNGS,
-    PositionSolver::FullNGS, PositionSolver::SoftStep};
+    PositionSolver::FullNGS,   PositionSolver::SoftStep,       PositionSolver::XPBD};
 
 static_assert(std::size(kAllSolvers) == kPositionSolverCount, "a position solver is missing");
 

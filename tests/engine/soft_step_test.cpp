@@ -1,9 +1,11 @@
-// Soft step (PositionSolver::SoftStep, ContactCorrection::Soft): Box2D v3's solver, per joint
-// and per world.
+// The solvers the field uses now: soft step (PositionSolver::SoftStep, ContactCorrection::Soft),
+// Box2D v3's, per joint and per world; and XPBD (PositionSolver::XPBD), per joint.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include "pivot/pivot.h"
 
@@ -129,4 +131,86 @@ TEST(SoftContacts, ADeepOverlapIsPushedOutNoFasterThanThePushSpeed) {
     EXPECT_GT(fastest, 0.5f * def.contactPushSpeed);  // it does push
     EXPECT_LE(fastest, def.contactPushSpeed * 1.001f);
     EXPECT_GT(world.bodyPosition(b).y - world.bodyPosition(a).y, 0.99f);
+}
+
+namespace {
+
+// A 2 kg box hung 1 m below a static anchor by a distance rod of compliance `compliance`:
+// how far the rod is stretched once it hangs still.
+float hangingStretch(float compliance, int substeps, int iterations) {
+    WorldDef def;
+    def.substepCount = substeps;
+    World world(def);
+    const BodyId ceiling = world.createBody(BodyDef{});
+    BodyDef boxDef;
+    boxDef.type = BodyType::Dynamic;
+    // Hung at the stretch the physics gives (20 N x compliance): a compliant rod is an undamped
+    // spring, so one released elsewhere would bounce about that length.
+    boxDef.position = {0.0f, -1.0f - 20.0f * compliance};
+    boxDef.fixedRotation = true;
+    const BodyId b = world.createBody(boxDef);
+    ShapeDef shape;
+    shape.density = 2.0f;  // 1 x 1 m: 2 kg
+    world.createShape(b, shape, Polygon::box(0.5f, 0.5f));
+    DistanceJointDef rod;
+    rod.bodyA = ceiling;
+    rod.bodyB = b;
+    rod.length = 1.0f;
+    rod.positionSolver = PositionSolver::XPBD;
+    rod.softness.compliance = compliance;
+    const JointId joint = world.createJoint(rod);
+    for (int i = 0; i < 600; ++i) world.step(kDt, 1, iterations);
+    EXPECT_LT(length(world.bodyLinearVelocity(b)), 1e-3f);
+    // The rod's reaction is the weight it carries.
+    EXPECT_NEAR(world.jointReactionForce(joint).y, 20.0f, 0.05f);
+    return world.jointSeparation(joint);
+}
+
+}  // namespace
+
+TEST(Xpbd, ACompliantRodStretchesAsItsComplianceSaysWhateverTheSubstepsAndIterations) {
+    // XPBD's point: the rod holds the stretch physics gives it, weight x compliance (20 N x
+    // 1e-3 m/N = 2 cm), however many iterations or substeps solve it (plain PBD's stiffness
+    // depended on both), and reports the weight as its force.
+    for (int substeps : {1, 4}) {
+        for (int iterations : {1, 4}) {
+            SCOPED_TRACE(std::to_string(substeps) + " substeps, " + std::to_string(iterations) +
+                         " iterations");
+            EXPECT_NEAR(hangingStretch(1e-3f, substeps, iterations), 0.02f, 2e-4f);
+        }
+    }
+    // Compliance 0 is rigid.
+    EXPECT_LT(hangingStretch(0.0f, 4, 1), 1e-4f);
+}
+
+TEST(Xpbd, TheCorrectionIsMotionThatTheNextSubstepStops) {
+    // As position-based dynamics does, the velocities are derived from the moves: the box that
+    // starts half a metre from its pin is pulled in, and leaves the step moving at the speed
+    // of that move (30 m/s: 0.5 m in 1/60 s). In the next step the pin stops it (its pull
+    // would carry the box past the pin, and the projection back takes that speed away): a
+    // rigid XPBD joint absorbs the correction where a Baumgarte one would bounce.
+    StretchedPin p(PositionSolver::XPBD, 1, 0.5f);
+    p.world.step(kDt, 1, 3);
+    EXPECT_LT(p.world.jointSeparation(p.pin), 0.01f);
+    EXPECT_GT(length(p.world.bodyLinearVelocity(p.body)), 10.0f);
+    p.world.step(kDt, 1, 3);
+    EXPECT_LT(p.world.jointSeparation(p.pin), 0.01f);
+    EXPECT_LT(length(p.world.bodyLinearVelocity(p.body)), 1.0f);
+}
+
+TEST(Xpbd, ComplianceIsValidated) {
+    StretchedPin p(PositionSolver::XPBD, 1, 0.0f);
+    const std::uint64_t before = p.world.stateHash();
+    for (float bad : {-1e-3f, std::numeric_limits<float>::quiet_NaN(),
+                      std::numeric_limits<float>::infinity(), 2e10f}) {
+        JointSoftness softness;
+        softness.compliance = bad;
+        EXPECT_THROW(p.world.setJointSoftness(p.pin, softness), Error) << bad;
+    }
+    EXPECT_EQ(p.world.stateHash(), before);
+    JointSoftness soft;
+    soft.compliance = 1e-4f;
+    p.world.setJointSoftness(p.pin, soft);
+    EXPECT_EQ(p.world.jointSoftness(p.pin).compliance, 1e-4f);
+    EXPECT_NE(p.world.stateHash(), before);
 }

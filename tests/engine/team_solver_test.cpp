@@ -121,9 +121,9 @@ void buildGrid(JointGrid& grid, int n, bool mixedSolvers, bool everyType = false
     ShapeDef shape;
     shape.filter.categoryBits = 0x0002;
     shape.filter.maskBits = 0x0001;
-    const PositionSolver solvers[] = {PositionSolver::FullNGS, PositionSolver::Baumgarte,
+    const PositionSolver solvers[] = {PositionSolver::FullNGS,        PositionSolver::Baumgarte,
                                       PositionSolver::PseudoVelocity, PositionSolver::ModifiedNGS,
-                                      PositionSolver::SoftStep};
+                                      PositionSolver::SoftStep,       PositionSolver::XPBD};
     for (int row = 0; row < n; ++row) {
         for (int col = 0; col < n; ++col) {
             BodyDef def;

@@ -512,6 +512,9 @@ TEST(Validation, JointDefFields) {
     bad = def;
     bad.softness.dampingRatio = -1.0f;
     expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.softness.dampingRatio"});
+    bad = def;
+    bad.softness.compliance = -1e-3f;
+    expectRejected(f.world, [&] { f.world.createJoint(bad); }, {"def.softness.compliance"});
     expectRejected(f.world,
                    [&] {
                        f.world.setJointSoftness(f.joint, {kInf, 1.0f});

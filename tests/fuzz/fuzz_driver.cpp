@@ -1685,11 +1685,13 @@ private:
                 if (random_.chance(0.3f)) {
                     Arg<float> hertz = values_->positive(30.0f);
                     Arg<float> ratio = values_->nonNegative(2.0f);
-                    const JointSoftness softness{hertz.value, ratio.value};
+                    Arg<float> compliance = values_->nonNegative(1e-3f);
+                    const JointSoftness softness{hertz.value, ratio.value, compliance.value};
                     trace("setJointSoftness " + idText(joint.value) + " " + text(hertz.value) +
                           " " + text(ratio.value));
                     attempt("World::setJointSoftness",
-                            verdict(joint.bad || velocityOnly(joint) || hertz.bad || ratio.bad),
+                            verdict(joint.bad || velocityOnly(joint) || hertz.bad || ratio.bad ||
+                                    compliance.bad),
                             [&] { journal_.setJointSoftness(joint.value, softness); });
                     break;
                 }

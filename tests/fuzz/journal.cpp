@@ -380,7 +380,7 @@ void Journal::setJointBiasFactor(JointId id, std::optional<float> bias) {
 void Journal::setJointSoftness(JointId id, const JointSoftness& softness) {
     world_->setJointSoftness(id, softness);
     lines_.push_back("softness " + nameOf('j', id) + " " + num(softness.hertz) + " " +
-                     num(softness.dampingRatio));
+                     num(softness.dampingRatio) + " " + num(softness.compliance));
 }
 void Journal::setJointLetGoSeparation(JointId id, std::optional<float> separation) {
     world_->setJointLetGoSeparation(id, separation);
@@ -976,7 +976,10 @@ ReplayResult replay(std::istream& in) {
             JointId j = joint(f.word());
             const float hertz = f.f();
             const float ratio = f.f();
-            call = [&w, j, hertz, ratio] { w.setJointSoftness(j, {hertz, ratio}); };
+            const float compliance = f.f();
+            call = [&w, j, hertz, ratio, compliance] {
+                w.setJointSoftness(j, {hertz, ratio, compliance});
+            };
         } else if (command == "letgo") {
             JointId j = joint(f.word());
             const float value = f.f();

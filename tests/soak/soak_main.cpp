@@ -94,6 +94,11 @@ RunResult soak(const SceneInfo& info, PositionSolver solver, long steps, long wa
     RunResult result;
     SceneOptions sceneOptions;
     sceneOptions.solver = solver;
+    // Soft step and XPBD are soaked with the contacts they are built to go with: soft ones
+    // (velocity-level, as Box2D v3's and Avian's). NGS contacts move bodies without velocity,
+    // which XPBD, deriving velocity from what moves, reads as motion (docs/position-correction.md).
+    const bool fieldSolver = solver == PositionSolver::SoftStep || solver == PositionSolver::XPBD;
+    sceneOptions.contactCorrection = fieldSolver ? ContactCorrection::Soft : ContactCorrection::NGS;
     Scene scene = buildScene(info, sceneOptions);
     World& world = *scene.world;
     const float dt = 1.0f / sceneOptions.hz;
