@@ -34,8 +34,9 @@ enum class PositionSolver : std::uint8_t {
     /// XPBD (Mueller et al. 2020), as Avian solves joints: no position rows in the velocity
     /// iterations; after integration, positionIterations XPBD sweeps move the poses with the
     /// joint's compliance (JointSoftness::compliance, 0 = rigid) and the velocities take the
-    /// moves. Its multipliers start at zero every substep (no warm start). Meant for substeps.
-    /// No bias factor.
+    /// moves. Its multipliers start at zero every substep (no warm start). Meant for substeps
+    /// and velocity-level contacts (Soft or Baumgarte). With no position iterations an XPBD
+    /// joint holds nothing but its motor and spring. No bias factor.
     XPBD,
 };
 

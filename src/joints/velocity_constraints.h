@@ -32,6 +32,10 @@ namespace pivot {
 /// What the friction and motor constraints share: the bodies, the radius vectors, the masses,
 /// the clamped impulses and every no-op strategy hook.
 struct ClampedVelocityRows {
+    /// No position rows: what a strategy does to those (relax them, leave them out of the warm
+    /// start) does not apply, so these joints solve the same under every strategy.
+    static constexpr bool kVelocityOnly = true;
+
     ConstraintBodies bodies;
     Vec2 rA;
     Vec2 rB;

@@ -87,7 +87,9 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                 ++report.letGoJoints;
                 c.makeInert();
             } else {
-                c.startImpulses(joint, step.warmStarting && S::kWarmStart, step.dtRatio);
+                using C = std::decay_t<decltype(c)>;
+                const bool warm = S::kWarmStart || isVelocityOnly<C>();
+                c.startImpulses(joint, step.warmStarting && warm, step.dtRatio);
             }
         }
     });

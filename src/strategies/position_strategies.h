@@ -26,6 +26,7 @@
 #pragma once
 
 #include <algorithm>
+#include <type_traits>
 
 #include "constraints/rows.h"
 #include "constraints/soft_factors.h"
@@ -37,6 +38,21 @@
 #include "pivot/solvers.h"
 
 namespace pivot {
+
+/// Friction and motor joints (ClampedVelocityRows::kVelocityOnly): no position rows, so every
+/// strategy solves them alike.
+template <typename C, typename = void>
+struct HasVelocityOnly : std::false_type {};
+template <typename C>
+struct HasVelocityOnly<C, std::void_t<decltype(C::kVelocityOnly)>> : std::true_type {};
+template <typename C>
+constexpr bool isVelocityOnly() {
+    if constexpr (HasVelocityOnly<C>::value) {
+        return C::kVelocityOnly;
+    } else {
+        return false;
+    }
+}
 
 /// What a strategy does unless it says otherwise: rigid velocities, no bias, no position phase.
 struct StrategyDefaults {
@@ -158,7 +174,7 @@ struct SoftStepStrategy : StrategyDefaults {
     }
     template <typename C>
     static void relax(C& c, SolverVelocity* velocities) {
-        c.template solveVelocity<Rows::Rigid>(velocities);
+        if constexpr (!isVelocityOnly<C>()) c.template solveVelocity<Rows::Rigid>(velocities);
     }
 };
 

@@ -107,7 +107,8 @@ TEST(VelocityJoints, BehaveTheSameUnderTheWorldsEveryDefaultSolver) {
     };
     const auto reference = run(PositionSolver::FullNGS);
     for (PositionSolver solver :
-         {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity, PositionSolver::ModifiedNGS}) {
+         {PositionSolver::Baumgarte, PositionSolver::PseudoVelocity, PositionSolver::ModifiedNGS,
+          PositionSolver::SoftStep, PositionSolver::XPBD}) {
         const auto other = run(solver);
         EXPECT_EQ(other.first, reference.first) << positionSolverName(solver);
         EXPECT_EQ(other.second, reference.second) << positionSolverName(solver);
