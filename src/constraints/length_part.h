@@ -111,6 +111,17 @@ inline float lengthLimitError(float length, float min, float max) {
     return 0.0f;
 }
 
+/// Moves the poses by the impulse P at the anchors measured as `m` (B by +P, A by -P).
+inline void moveAlongLength(const ConstraintBodies& b, const LengthMeasure& m, SolverPose* poses,
+                            Vec2 P) {
+    SolverPose& A = poses[b.indexA];
+    SolverPose& B = poses[b.indexB];
+    A.c -= b.mA * P;
+    A.a -= b.iA * cross(m.rA, P);
+    B.c += b.mB * P;
+    B.a += b.iB * cross(m.rB, P);
+}
+
 /// One nonlinear Gauss-Seidel solve on positions for the error `error(L)` of the part: re-measure
 /// at the current poses, move both bodies by -beta C / K along u. With rebuildMass K is that of
 /// the current poses (FullNGS), otherwise p.axialMass as frozen (ModifiedNGS). Returns |C|
@@ -121,13 +132,7 @@ inline float solveLengthPosition(const ConstraintBodies& b, const LengthPart& p,
     const LengthMeasure m = measureLength(b, p, poses);
     const float C = error(m.length);
     const float mass = rebuildMass ? lengthAxialMass(b, m.rA, m.rB, m.u) : p.axialMass;
-    const Vec2 P = (-beta * mass * C) * m.u;
-    SolverPose& A = poses[b.indexA];
-    SolverPose& B = poses[b.indexB];
-    A.c -= b.mA * P;
-    A.a -= b.iA * cross(m.rA, P);
-    B.c += b.mB * P;
-    B.a += b.iB * cross(m.rB, P);
+    moveAlongLength(b, m, poses, (-beta * mass * C) * m.u);
     return std::fabs(C);
 }
 

@@ -98,6 +98,20 @@ inline void applyPulleyImpulse(const ConstraintBodies& b, const PulleyPart& p,
     B.w += b.iB * cross(p.rB, PB);
 }
 
+/// Moves the poses by lambda along the rope, measured as `m` (as applyPulleyImpulse moves the
+/// velocities).
+inline void movePulley(const ConstraintBodies& b, const PulleyPart& p, const PulleyMeasure& m,
+                       SolverPose* poses, float lambda) {
+    const Vec2 PA = -lambda * m.uA;
+    const Vec2 PB = (-p.ratio * lambda) * m.uB;
+    SolverPose& A = poses[b.indexA];
+    SolverPose& B = poses[b.indexB];
+    A.c += b.mA * PA;
+    A.a += b.iA * cross(m.rA, PA);
+    B.c += b.mB * PB;
+    B.a += b.iB * cross(m.rB, PB);
+}
+
 /// One nonlinear Gauss-Seidel solve on positions: re-measure, move the bodies by -beta C / K.
 /// With rebuildMass K is that of the current poses (FullNGS), otherwise p.mass as frozen
 /// (ModifiedNGS). Returns |C| before the correction.
@@ -107,15 +121,7 @@ inline float solvePulleyPosition(const ConstraintBodies& b, const PulleyPart& p,
     const PulleyMeasure m = measurePulley(b, p, poses);
     const float mass = rebuildMass ? pulleyMass(b, p, m) : p.mass;
     const float C = p.constant - m.lengthA - p.ratio * m.lengthB;
-    const float lambda = -beta * mass * C;
-    const Vec2 PA = -lambda * m.uA;
-    const Vec2 PB = (-p.ratio * lambda) * m.uB;
-    SolverPose& A = poses[b.indexA];
-    SolverPose& B = poses[b.indexB];
-    A.c += b.mA * PA;
-    A.a += b.iA * cross(m.rA, PA);
-    B.c += b.mB * PB;
-    B.a += b.iB * cross(m.rB, PB);
+    movePulley(b, p, m, poses, -beta * mass * C);
     return std::fabs(C);
 }
 

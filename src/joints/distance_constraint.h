@@ -213,13 +213,7 @@ private:
         const float w = bodies.mA + bodies.iA * crA * crA + bodies.mB + bodies.iB * crB * crB;
         const float delta = bound ? xpbdLowerBound(C, w, xpbd.alphaTilde, lambda)
                                   : xpbdDelta(C, w, xpbd.alphaTilde, lambda);
-        const Vec2 P = delta * u;
-        SolverPose& A = poses[bodies.indexA];
-        SolverPose& B = poses[bodies.indexB];
-        A.c -= bodies.mA * P;
-        A.a -= bodies.iA * cross(m.rA, P);
-        B.c += bodies.mB * P;
-        B.a += bodies.iB * cross(m.rB, P);
+        moveAlongLength(bodies, m, poses, delta * u);
     }
 
     void setLimitTerms(float invH) {

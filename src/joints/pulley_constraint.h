@@ -87,14 +87,7 @@ struct PulleyConstraint {
         const float C = part.constant - m.lengthA - part.ratio * m.lengthB;
         const float lambda =
             mass > 0.0f ? xpbdDelta(C, 1.0f / mass, xpbd.alphaTilde, xpbd.lambda[0]) : 0.0f;
-        const Vec2 PA = -lambda * m.uA;
-        const Vec2 PB = (-part.ratio * lambda) * m.uB;
-        SolverPose& A = poses[bodies.indexA];
-        SolverPose& B = poses[bodies.indexB];
-        A.c += bodies.mA * PA;
-        A.a += bodies.iA * cross(m.rA, PA);
-        B.c += bodies.mB * PB;
-        B.a += bodies.iB * cross(m.rB, PB);
+        movePulley(bodies, part, m, poses, lambda);
     }
     /// After the XPBD sweeps: the impulse they applied, as the reaction to store.
     void takeXpbdReactions(float invH) { impulse = invH * xpbd.lambda[0]; }

@@ -236,14 +236,7 @@ private:
     /// Moves the poses by the impulse -beta mass C along the row, C capped.
     void move(SolverPose* poses, const AxisRow& r, float mass, float C) const {
         const float capped = std::clamp(C, -kMaxLinearCorrection, kMaxLinearCorrection);
-        const float lambda = -biasFactor * mass * capped;
-        SolverPose& A = poses[bodies.indexA];
-        SolverPose& B = poses[bodies.indexB];
-        const Vec2 P = lambda * r.u;
-        A.c -= bodies.mA * P;
-        A.a -= bodies.iA * (lambda * r.a1);
-        B.c += bodies.mB * P;
-        B.a += bodies.iB * (lambda * r.a2);
+        moveAlongAxis(bodies, r, poses, -biasFactor * mass * capped);
     }
 
     void solveMotor(SolverVelocity* velocities) {
