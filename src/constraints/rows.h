@@ -1,11 +1,12 @@
 // How one velocity solve treats a constraint's position rows: the strategy's choice, made at
 // compile time so each strategy's loop holds only its own arithmetic.
 //
-//   Rigid   lambda = -K^-1 Cdot                        (the rows hold the velocity only)
+//   Rigid   lambda = -K^-1 Cdot                        (the rows hold the velocity only;
+//                                                       SoftStep's relax, rigid XPBD)
 //   Biased  lambda = -K^-1 (Cdot + bias)               (Baumgarte: bias = beta / h C)
 //   Soft    lambda = massScale (-K^-1 (Cdot + bias)) - impulseScale lambda_acc
 //                                                      (soft step: bias = biasRate C)
-//   None    the rows are not solved at all             (XPBD corrects the poses instead)
+//   None    the rows are not solved at all             (compliant XPBD: the poses instead)
 // with the soft factors of soft_factors.h: the row is a spring of the joint's hertz and damping
 // ratio on its own effective mass, solved implicitly; at the default damping ratio (2, well
 // above critical) it closes an error without the overshoot a Baumgarte bias of the same

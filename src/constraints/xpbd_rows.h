@@ -13,8 +13,10 @@
 //   x += M^-1 J^T dlambda                                   (the poses move at once)
 //
 // lambda starts at zero each substep (XPBD does not warm-start). After the sweeps, lambda / h is
-// the impulse each row applied over the substep: each joint stores it as its reaction, as the
-// other strategies store their accumulated impulses (takeXpbdReactions). With alpha = 0 a row is a
+// the impulse each row applied over the substep: each joint adds it to what its rows applied in
+// the velocity iterations (nothing for a compliant joint, whose rows sit those out) and stores
+// the sum as its reaction, as the other strategies store their accumulated impulses
+// (takeXpbdReactions). With alpha = 0 a row is a
 // full nonlinear Gauss-Seidel correction; with alpha > 0 the iterations converge to the pose where
 // the row's force lambda / h^2 balances C / alpha, the same for any number of iterations or
 // substeps, which is what XPBD adds to PBD. Velocities are derived from the moves afterwards

@@ -142,13 +142,13 @@ struct DistanceConstraint {
                 poses, [&](float L) { return maxLength - L; }, true, xpbd.lambda[1], -1.0f);
         }
     }
-    /// After the XPBD sweeps: the impulses they applied, as the reactions to store (the
-    /// spring's are its own).
+    /// After the XPBD sweeps: the impulses they applied, added to the velocity rows' as the
+    /// reactions (the spring's are its own).
     void takeXpbdReactions(float invH) {
-        if (rod) impulse = invH * xpbd.lambda[0];
+        if (rod) impulse += invH * xpbd.lambda[0];
         if (limited) {
-            lowerImpulse = invH * xpbd.lambda[0];
-            upperImpulse = invH * xpbd.lambda[1];
+            lowerImpulse += invH * xpbd.lambda[0];
+            upperImpulse += invH * xpbd.lambda[1];
         }
     }
 

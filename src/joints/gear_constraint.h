@@ -143,8 +143,9 @@ struct GearConstraint {
         const float C = measure(poses, now);
         applyToPoses(now, poses, xpbdDelta(C, now.k, xpbd.alphaTilde, xpbd.lambda[0]));
     }
-    /// After the XPBD sweeps: the impulse they applied, as the reaction to store.
-    void takeXpbdReactions(float invH) { impulse = invH * xpbd.lambda[0]; }
+    /// After the XPBD sweeps: the impulse they applied, added to the velocity row's as the
+    /// reaction.
+    void takeXpbdReactions(float invH) { impulse += invH * xpbd.lambda[0]; }
 
     /// factor C at these poses (C depends on the coordinates only, not on the rows).
     void setBias(const SolverPose* poses, float factor) { bias = factor * error(poses); }

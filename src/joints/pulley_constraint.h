@@ -89,8 +89,9 @@ struct PulleyConstraint {
             mass > 0.0f ? xpbdDelta(C, 1.0f / mass, xpbd.alphaTilde, xpbd.lambda[0]) : 0.0f;
         movePulley(bodies, part, m, poses, lambda);
     }
-    /// After the XPBD sweeps: the impulse they applied, as the reaction to store.
-    void takeXpbdReactions(float invH) { impulse = invH * xpbd.lambda[0]; }
+    /// After the XPBD sweeps: the impulse they applied, added to the velocity row's as the
+    /// reaction.
+    void takeXpbdReactions(float invH) { impulse += invH * xpbd.lambda[0]; }
 
     void setBias(const SolverPose* poses, float k) {
         // At the radius vectors and directions last measured, as the other joints' biases.

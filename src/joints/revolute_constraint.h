@@ -153,11 +153,12 @@ struct RevoluteConstraint {
         xpbdPoint(bodies, point.localRA, point.localRB, poses, xpbd.alphaTilde, xpbd.lambda[0],
                   xpbd.point);
     }
-    /// After the XPBD sweeps: the impulses they applied, as the reactions to store.
+    /// After the XPBD sweeps: the impulses they applied, added to the velocity rows' as the
+    /// reactions.
     void takeXpbdReactions(float invH) {
-        point.impulse = invH * xpbd.point;
-        angle.lowerImpulse = invH * xpbd.lambda[1];
-        angle.upperImpulse = invH * xpbd.lambda[2];
+        point.impulse += invH * xpbd.point;
+        angle.lowerImpulse += invH * xpbd.lambda[1];
+        angle.upperImpulse += invH * xpbd.lambda[2];
     }
 
     /// The limit, then the pin. Within slop means both were, as measured before their

@@ -159,13 +159,14 @@ struct WeldConstraint {
             xpbdPoint(bodies, localRA, localRB, poses, xpbd.alphaTilde, xpbd.lambda[0], xpbd.point);
         }
     }
-    /// After the XPBD sweeps: the rigid rows' impulses, beside the soft halves' own.
+    /// After the XPBD sweeps: the rigid rows' impulses (the velocity iterations' and the sweeps'),
+    /// beside the soft halves' own.
     void takeXpbdReactions(float invH) {
         if (!softPoint) {
-            impulse.x = invH * xpbd.point.x;
-            impulse.y = invH * xpbd.point.y;
+            impulse.x += invH * xpbd.point.x;
+            impulse.y += invH * xpbd.point.y;
         }
-        if (!softAngle) impulse.z = invH * xpbd.lambda[1];
+        if (!softAngle) impulse.z += invH * xpbd.lambda[1];
     }
 
     /// One NGS solve of the rigid rows: the block when both halves are rigid.

@@ -166,11 +166,12 @@ struct WheelConstraint {
         moveAlongAxis(bodies, n, poses,
                       xpbdDelta(dot(n.u, f.d), axisK(bodies, n), xpbd.alphaTilde, xpbd.lambda[0]));
     }
-    /// After the XPBD sweeps: the impulses they applied, as the reactions to store.
+    /// After the XPBD sweeps: the impulses they applied, added to the velocity rows' as the
+    /// reactions.
     void takeXpbdReactions(float invH) {
-        impulse = invH * xpbd.lambda[0];
-        limits.lowerImpulse = invH * xpbd.lambda[1];
-        limits.upperImpulse = invH * xpbd.lambda[2];
+        impulse += invH * xpbd.lambda[0];
+        limits.lowerImpulse += invH * xpbd.lambda[1];
+        limits.upperImpulse += invH * xpbd.lambda[2];
     }
 
     void setBias(const SolverPose*, float k) {

@@ -178,11 +178,14 @@ struct SoftStepStrategy : StrategyDefaults {
     }
 };
 
-/// XPBD (Mueller et al. 2020), per joint: the position rows are left out of the velocity
-/// iterations (motors and springs stay); after integration, each substep's XPBD sweeps move the
+/// XPBD (Mueller et al. 2020), per joint: after integration, each substep's XPBD sweeps move the
 /// poses with the joint's compliance, and the velocities take the moves (v += dx / h), so the
 /// correction is real motion, as in position-based dynamics. No warm start: each substep's
-/// multipliers start at zero.
+/// multipliers start at zero. A compliant joint's position rows stay out of the velocity
+/// iterations (motors and springs stay), as published. A rigid one (compliance 0) keeps them
+/// there unbiased (Rows::Rigid): C = 0 implies Cdot = 0, so the model is the same, and the
+/// joints and contacts around it then see it hold during the velocity solve instead of
+/// letting go until the sweeps pull its bodies back alone (docs/position-correction.md, XPBD).
 struct XpbdStrategy : StrategyDefaults {
     static constexpr PositionSolver kSolver = PositionSolver::XPBD;
     static constexpr const char* kName = "xpbd";
@@ -198,7 +201,11 @@ struct XpbdStrategy : StrategyDefaults {
     }
     template <typename C>
     static void solveVelocity(C& c, SolverVelocity* velocities) {
-        c.template solveVelocity<Rows::None>(velocities);
+        if (c.xpbd.alphaTilde == 0.0f) {
+            c.template solveVelocity<Rows::Rigid>(velocities);
+        } else {
+            c.template solveVelocity<Rows::None>(velocities);
+        }
     }
     template <typename C>
     static void solveCompliant(C& c, SolverPose* poses) {
