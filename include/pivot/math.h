@@ -1,4 +1,4 @@
-// 2D vector maths used by the public API and the solver: Vec2, Rot, Transform, Mat22.
+// 2D vector maths used by the public API and the solver: Vec2, Rot, Transform, AABB, Mat22.
 // Everything is inline and single precision, like the engines pivot2d is compared with,
 // so that the same sequence of float operations gives the same bits.
 #pragma once
@@ -118,6 +118,12 @@ constexpr Vec2 transformPoint(const Transform& t, Vec2 v) {
 constexpr Vec2 inverseTransformPoint(const Transform& t, Vec2 v) {
     return inverseRotate(t.q, v - t.p);
 }
+
+/// An axis-aligned box: every point p with lower <= p <= upper, component by component.
+struct AABB {
+    Vec2 lower;
+    Vec2 upper;
+};
 
 /// A 2x2 matrix stored by columns.
 struct Mat22 {

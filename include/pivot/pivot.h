@@ -8,6 +8,7 @@
 #include "pivot/id.h"
 #include "pivot/joint.h"
 #include "pivot/math.h"
+#include "pivot/query.h"
 #include "pivot/shape.h"
 #include "pivot/solvers.h"
 #include "pivot/world.h"

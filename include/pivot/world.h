@@ -19,6 +19,7 @@
 #include "pivot/id.h"
 #include "pivot/joint.h"
 #include "pivot/math.h"
+#include "pivot/query.h"
 #include "pivot/shape.h"
 #include "pivot/solvers.h"
 
@@ -260,6 +261,34 @@ public:
     /// The value of ShapeDef::userData, or the last one set; pivot2d never reads it.
     std::uint64_t shapeUserData(ShapeId id) const;
     void setShapeUserData(ShapeId id, std::uint64_t userData);
+
+    /// The shape's box at its body's current pose (its collision skin included), as the broad
+    /// phase and queryAABB see it.
+    AABB shapeAABB(ShapeId id) const;
+
+    // --- queries (pivot/query.h) -------------------------------------------------------------
+    // They read the shapes where the last step, or the last call that moved a body, left them.
+    // A callback may read the world but not change its shapes: a call that creates, destroys
+    // or moves a shape (createShape, destroyShape, destroyBody, setBodyTransform, step) made
+    // from inside one throws pivot::Error. Bad arguments (not finite, a box with lower > upper,
+    // points outside kMaxCoordinate) throw pivot::Error.
+    /// Every shape the filter sees that the ray from `origin` through origin + translation
+    /// enters, in the tree's order; the callback steers the cast (pivot::RayCallback). A zero
+    /// translation hits nothing.
+    void castRay(Vec2 origin, Vec2 translation, const QueryFilter& filter,
+                 RayCallback callback) const;
+    /// The first shape the ray enters, if any (of two at the same fraction, either).
+    std::optional<RayHit> castRayClosest(Vec2 origin, Vec2 translation,
+                                         const QueryFilter& filter = {}) const;
+    /// The same ray against one shape, whatever its filter.
+    std::optional<RayHit> castRayOnShape(ShapeId id, Vec2 origin, Vec2 translation) const;
+    /// Every shape the filter sees whose box (shapeAABB) overlaps `box`, in the tree's order;
+    /// the callback returns false to stop.
+    void queryAABB(const AABB& box, const QueryFilter& filter, ShapeCallback callback) const;
+    /// Every shape the filter sees that contains `point` (on its boundary counts; a polygon's
+    /// skin does not), in the tree's order; the callback returns false to stop. What the
+    /// testbed's drags use to pick the body under the pointer.
+    void queryPoint(Vec2 point, const QueryFilter& filter, ShapeCallback callback) const;
 
     // --- contacts ---------------------------------------------------------------------------
     // Every list the API returns (contacts, events, bodyIds, jointIds, bodyShapes) is a copy,

@@ -1,4 +1,4 @@
-// Axis-aligned bounding boxes.
+// Axis-aligned bounding boxes (AABB itself is public: pivot/math.h).
 #pragma once
 
 #include <algorithm>
@@ -6,11 +6,6 @@
 #include "pivot/math.h"
 
 namespace pivot {
-
-struct AABB {
-    Vec2 lower;
-    Vec2 upper;
-};
 
 inline bool overlaps(const AABB& a, const AABB& b) {
     return !(b.lower.x > a.upper.x || b.lower.y > a.upper.y || a.lower.x > b.upper.x ||

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "collision/aabb.h"
+#include "collision/ray_cast.h"
 
 namespace pivot {
 
@@ -69,6 +70,14 @@ public:
     /// false to stop the query early. `visit` must not create, move or destroy proxies.
     template <typename Visit>
     void query(const AABB& box, Visit&& visit) const;
+
+    /// Calls `visit(proxyId, maxFraction)` for every proxy whose fat box the segment from
+    /// `origin` to origin + maxFraction * translation touches; maxFraction starts at the given
+    /// value and `visit` returns the one to go on with: 0 (or NaN) stops, a smaller value
+    /// shortens the segment (and prunes the rest of the tree with it), a larger one is ignored.
+    /// `visit` must not create, move or destroy proxies.
+    template <typename Visit>
+    void rayCast(Vec2 origin, Vec2 translation, float maxFraction, Visit&& visit) const;
 
     int proxyCount() const;
     /// One more than the largest id a proxy can have now (ids index the node pool).
@@ -137,6 +146,26 @@ void DynamicTree::query(const AABB& box, Visit&& visit) const {
         if (!overlaps(node.box, box)) continue;
         if (node.isLeaf()) {
             if (!visit(nodeId)) return;
+        } else {
+            stack.push(node.child2);
+            stack.push(node.child1);
+        }
+    }
+}
+
+template <typename Visit>
+void DynamicTree::rayCast(Vec2 origin, Vec2 translation, float maxFraction, Visit&& visit) const {
+    if (root_ == kNullNode) return;
+    InlineStack<std::int32_t, kQueryStackSize> stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+        const std::int32_t nodeId = stack.pop();
+        const Node& node = nodes_[nodeId];
+        if (!segmentOverlaps(node.box, origin, translation, maxFraction)) continue;
+        if (node.isLeaf()) {
+            const float next = visit(nodeId, maxFraction);
+            if (!(next > 0.0f)) return;
+            if (next < maxFraction) maxFraction = next;
         } else {
             stack.push(node.child2);
             stack.push(node.child1);

@@ -82,6 +82,7 @@ World::~World() = default;
 
 void World::step(float dt, int velocityIterations, int positionIterations) {
     const char* call = "World::step";
+    impl_->requireNoQuery(call);
     // Not requireFinite: a denormal dt is one more step too short, and is told so.
     if (!std::isfinite(dt)) fail(call, "dt must be finite (got " + formatFloat(dt) + ")");
     if (dt < kMinTimeStep) {

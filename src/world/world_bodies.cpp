@@ -48,6 +48,7 @@ BodyId World::createBody(const BodyDef& def) {
 
 void World::destroyBody(BodyId id) {
     Impl& w = *impl_;
+    w.requireNoQuery("World::destroyBody");
     std::int32_t index = w.bodyIndex("World::destroyBody", id);
     Body& body = w.bodies[index];
     // Joints first (waking what they held), then contacts (waking what touched), then shapes.
@@ -190,6 +191,7 @@ void World::setBodyUserData(BodyId id, std::uint64_t userData) {
 void World::setBodyTransform(BodyId id, Vec2 position, float angle) {
     const char* call = "World::setBodyTransform";
     Impl& w = *impl_;
+    w.requireNoQuery(call);
     std::int32_t index = w.bodyIndex(call, id);
     requireCoordinate(call, "position", position);
     requireMagnitude(call, "angle", angle);

@@ -60,6 +60,11 @@ struct World::Impl {
     float previousInvDt = 0.0f;
     StepStats stats;
 
+    // Queries under way (World::castRay and the others): while one is, the broad phase's tree
+    // is being walked, so calls that would change it are refused (requireNoQuery).
+    mutable int queryDepth = 0;
+    void requireNoQuery(const char* call) const;
+
     void step(float dt, int velocityIterations, int positionIterations);
     void recordLetGoJoints(const IslandSet::Range& island);
     void recordBodyEvents(const IslandSet::Range& island);

@@ -68,6 +68,7 @@ void World::Impl::removeShape(std::int32_t index) {
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Circle& circle) {
     const char* call = "World::createShape";
+    impl_->requireNoQuery(call);
     std::int32_t bodyIndex = impl_->bodyIndex(call, bodyId);
     checkShapeDef(call, def, impl_->bodies[bodyIndex]);
     checkCircle(call, circle);
@@ -79,6 +80,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Circle& cir
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& polygon) {
     const char* call = "World::createShape";
+    impl_->requireNoQuery(call);
     std::int32_t bodyIndex = impl_->bodyIndex(call, bodyId);
     checkShapeDef(call, def, impl_->bodies[bodyIndex]);
     Shape shape;
@@ -91,6 +93,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& po
 void World::destroyShape(ShapeId id) {
     const char* call = "World::destroyShape";
     Impl& w = *impl_;
+    w.requireNoQuery(call);
     std::int32_t index = w.shapeIndex(call, id);
     std::int32_t bodyIndex = w.shapes[index].body;
     MassChange change{w.bodies[bodyIndex].type};

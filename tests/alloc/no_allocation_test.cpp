@@ -144,3 +144,33 @@ TEST(ChurningContacts, StepWithoutAllocatingOnceWarm) {
         EXPECT_GT(ends, 10000u);
     }
 }
+
+// Queries allocate nothing either: a game may cast hundreds of rays a frame. A settled pyramid,
+// queried with rays (closest and every hit), boxes and points over it.
+TEST(Queries, AllocateNothing) {
+    Scene scene = buildScene(*findScene("pyramid"), SceneOptions{});
+    World& world = *scene.world;
+    for (int i = 0; i < 120; ++i) world.step(1.0f / 60.0f);
+    heap::Counter counter;
+    int hits = 0, found = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const float x = -12.0f + 0.024f * float(i);
+        hits += world.castRayClosest({x, 30.0f}, {0.3f, -40.0f}).has_value();
+        world.castRay({-30.0f, 0.1f * float(i % 100)}, {60.0f, 1.0f}, QueryFilter{},
+                      [&](const RayHit&) {
+                          ++found;
+                          return 1.0f;
+                      });
+        world.queryAABB(AABB{{x, 0.0f}, {x + 2.0f, 3.0f}}, QueryFilter{}, [&](ShapeId) {
+            ++found;
+            return true;
+        });
+        world.queryPoint({x, 1.0f}, QueryFilter{}, [&](ShapeId) {
+            ++found;
+            return true;
+        });
+    }
+    EXPECT_EQ(counter.allocations(), 0);
+    EXPECT_GT(hits, 500);  // the queries did find things
+    EXPECT_GT(found, 1000);
+}

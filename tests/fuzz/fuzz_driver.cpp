@@ -488,6 +488,7 @@ private:
             {1, &Driver::worldSettings},
             {16, &Driver::step},
             {8, &Driver::query},
+            {4, &Driver::worldQueries},
             {2, &Driver::freeFunctions},
             {1, &Driver::destroyWhileIterating},
         };
@@ -2025,6 +2026,119 @@ private:
                 });
                 break;
         }
+    }
+
+    // Ray casts, box and point queries: arguments checked, every answer finite and where it
+    // should be, callbacks answering anything (ignore, clip, stop, NaN) and now and then trying
+    // to change the world, which must be refused without harm.
+    void worldQueries() {
+        World& w = *world_;
+        Arg<Vec2> origin = values_->coordinate(20.0f);
+        Arg<Vec2> translation = values_->magnitude2(30.0f);
+        Arg<ShapeId> shape = pickShape();
+        QueryFilter filter;
+        if (random_.chance(0.3f)) {
+            filter.categoryBits = static_cast<std::uint16_t>(random_.below(0x10000));
+            filter.maskBits = static_cast<std::uint16_t>(random_.below(0x10000));
+        }
+        auto checkHit = [&](const RayHit& hit) {
+            if (!isFinite(hit.point) || !isFinite(hit.normal) || !(hit.fraction >= 0.0f) ||
+                !(hit.fraction <= 1.0f) || std::fabs(length(hit.normal) - 1.0f) > 1e-3f) {
+                failure("a ray hit is not a point on the ray with a unit normal");
+            }
+        };
+        const float answers[] = {-1.0f, 0.0f, 0.5f, 1.0f, std::numeric_limits<float>::quiet_NaN()};
+        switch (random_.below(5)) {
+            case 0:
+                attempt("World::castRayClosest", verdict(origin.bad || translation.bad), [&] {
+                    if (auto hit = w.castRayClosest(origin.value, translation.value, filter)) {
+                        checkHit(*hit);
+                    }
+                });
+                break;
+            case 1: {
+                const float answer = answers[random_.below(5)];
+                const bool meddle = random_.chance(0.2f);
+                attempt("World::castRay", verdict(origin.bad || translation.bad), [&] {
+                    w.castRay(origin.value, translation.value, filter, [&](const RayHit& hit) {
+                        checkHit(hit);
+                        if (!w.isValid(hit.shape)) failure("castRay reported a dead shape");
+                        if (meddle)
+                            refused("World::step inside castRay", [&] { w.step(1.0f / 60.0f); });
+                        return answer;
+                    });
+                });
+                break;
+            }
+            case 2:
+                attempt("World::castRayOnShape",
+                        verdict(shape.bad || origin.bad || translation.bad), [&] {
+                            if (auto hit = w.castRayOnShape(shape.value, origin.value,
+                                                            translation.value)) {
+                                checkHit(*hit);
+                            }
+                        });
+                break;
+            case 3: {
+                Arg<Vec2> corner = values_->coordinate(20.0f);
+                Arg<Vec2> size = values_->coordinate(5.0f);
+                const AABB box{corner.value, corner.value + size.value};
+                // The call sees the box, not how it was made: a bad size (a denormal, say) may
+                // still give a good box.
+                const bool subnormal = std::fpclassify(box.upper.x) == FP_SUBNORMAL ||
+                                       std::fpclassify(box.upper.y) == FP_SUBNORMAL;
+                const bool bad = corner.bad || subnormal || !isFinite(box.upper) ||
+                                 std::fabs(box.upper.x) > kMaxCoordinate ||
+                                 std::fabs(box.upper.y) > kMaxCoordinate ||
+                                 box.lower.x > box.upper.x || box.lower.y > box.upper.y;
+                const bool meddle = random_.chance(0.2f);
+                attempt("World::queryAABB", verdict(bad), [&] {
+                    w.queryAABB(box, filter, [&](ShapeId found) {
+                        if (!w.isValid(found)) failure("queryAABB reported a dead shape");
+                        if (meddle) {
+                            refused("World::destroyShape inside queryAABB",
+                                    [&] { w.destroyShape(found); });
+                        }
+                        return random_.chance(0.9f);
+                    });
+                });
+                break;
+            }
+            default: {
+                const bool meddle = random_.chance(0.2f);
+                attempt("World::queryPoint", verdict(origin.bad), [&] {
+                    w.queryPoint(origin.value, filter, [&](ShapeId found) {
+                        if (!w.isValid(found)) failure("queryPoint reported a dead shape");
+                        if (meddle) {
+                            refused("World::destroyBody inside queryPoint",
+                                    [&] { w.destroyBody(w.shapeBody(found)); });
+                        }
+                        return true;
+                    });
+                });
+                if (!shape.bad) {
+                    attempt("World::shapeAABB", Verdict::Valid, [&] {
+                        const AABB box = w.shapeAABB(shape.value);
+                        if (!isFinite(box.lower) || !isFinite(box.upper) ||
+                            box.lower.x > box.upper.x || box.lower.y > box.upper.y) {
+                            failure("shapeAABB gave a box that is not one");
+                        }
+                    });
+                }
+                break;
+            }
+        }
+    }
+
+    /// A call that must throw pivot::Error (a change made from inside a query's callback).
+    template <typename F>
+    void refused(const char* what, F&& f) {
+        try {
+            f();
+        } catch (const Error&) {
+            return;
+        }
+        failure(std::string(what) + " was not refused");
     }
 
     void freeFunctions() {

@@ -1,0 +1,390 @@
+// Queries: ray casts on one shape, and the world's ray casts, box and point queries, checked
+// against brute force (every shape tested one by one) on randomised worlds that move, gain and
+// lose bodies.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "pivot/pivot.h"
+
+using namespace pivot;
+
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+
+Transform at(Vec2 p, float angle) {
+    return Transform{p, Rot(angle)};
+}
+
+}  // namespace
+
+TEST(RayCastShape, CircleEnteredFromOutside) {
+    const Circle circle{{0.0f, 0.0f}, 1.0f};
+    const auto hit = rayCast(circle, at({2.0f, 3.0f}, 0.7f), {-3.0f, 3.0f}, {10.0f, 0.0f});
+    ASSERT_TRUE(hit);
+    EXPECT_TRUE(hit->shape.isNull());
+    EXPECT_NEAR(hit->fraction, 0.4f, 1e-6f);
+    EXPECT_NEAR(hit->point.x, 1.0f, 1e-5f);
+    EXPECT_NEAR(hit->point.y, 3.0f, 1e-5f);
+    EXPECT_NEAR(hit->normal.x, -1.0f, 1e-5f);
+    EXPECT_NEAR(hit->normal.y, 0.0f, 1e-5f);
+}
+
+TEST(RayCastShape, CircleMissedFromInsideBehindAndShort) {
+    const Circle circle{{1.0f, 0.0f}, 0.5f};
+    const Transform xf = at({0.0f, 0.0f}, 0.0f);
+    EXPECT_FALSE(rayCast(circle, xf, {1.0f, 0.0f}, {5.0f, 0.0f}));   // starts inside
+    EXPECT_FALSE(rayCast(circle, xf, {3.0f, 0.0f}, {5.0f, 0.0f}));   // the circle is behind
+    EXPECT_FALSE(rayCast(circle, xf, {-3.0f, 0.0f}, {2.0f, 0.0f}));  // stops short
+    EXPECT_FALSE(rayCast(circle, xf, {-3.0f, 0.6f}, {9.0f, 0.0f}));  // passes by
+    EXPECT_FALSE(rayCast(circle, xf, {-3.0f, 0.0f}, {0.0f, 0.0f}));  // no translation
+    EXPECT_TRUE(rayCast(circle, xf, {-3.0f, 0.0f}, {3.5f, 0.0f}));   // just reaches it
+}
+
+TEST(RayCastShape, PolygonEnteredThroughTheRightEdge) {
+    // A 2 x 1 box turned a quarter turn: 1 wide, 2 tall in the world, centred at (5, 0).
+    const Polygon box = Polygon::box(1.0f, 0.5f);
+    const Transform xf = at({5.0f, 0.0f}, 0.5f * kPi);
+    const auto fromLeft = rayCast(box, xf, {0.0f, 0.5f}, {10.0f, 0.0f});
+    ASSERT_TRUE(fromLeft);
+    EXPECT_NEAR(fromLeft->fraction, 0.45f, 1e-6f);
+    EXPECT_NEAR(fromLeft->normal.x, -1.0f, 1e-5f);
+    EXPECT_NEAR(fromLeft->normal.y, 0.0f, 1e-5f);
+    const auto fromAbove = rayCast(box, xf, {5.2f, 4.0f}, {0.0f, -10.0f});
+    ASSERT_TRUE(fromAbove);
+    EXPECT_NEAR(fromAbove->point.y, 1.0f, 1e-5f);
+    EXPECT_NEAR(fromAbove->normal.y, 1.0f, 1e-5f);
+    EXPECT_FALSE(rayCast(box, xf, {5.0f, 0.0f}, {10.0f, 0.0f}));     // starts inside
+    EXPECT_FALSE(rayCast(box, xf, {0.0f, 1.5f}, {10.0f, 0.0f}));     // passes above
+    EXPECT_FALSE(rayCast(box, xf, {0.0f, 0.5f}, {4.0f, 0.0f}));      // stops short
+    EXPECT_FALSE(rayCast(box, xf, {0.0f, 1.0001f}, {10.0f, 0.0f}));  // parallel, just outside
+}
+
+TEST(RayCastShape, TestPointOnBothShapes) {
+    const Transform xf = at({1.0f, 1.0f}, 0.3f);
+    EXPECT_TRUE(testPoint(Circle{{1.0f, 0.0f}, 0.5f}, xf, transformPoint(xf, {1.4f, 0.0f})));
+    EXPECT_FALSE(testPoint(Circle{{1.0f, 0.0f}, 0.5f}, xf, transformPoint(xf, {1.6f, 0.0f})));
+    const Polygon triangle = Polygon::fromPoints({{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}});
+    EXPECT_TRUE(testPoint(triangle, xf, transformPoint(xf, {0.2f, 0.2f})));
+    EXPECT_FALSE(testPoint(triangle, xf, transformPoint(xf, {0.6f, 0.6f})));
+}
+
+TEST(RayCastShape, BadInputIsRefused) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const Transform xf = at({0.0f, 0.0f}, 0.0f);
+    EXPECT_THROW(rayCast(Circle{{0.0f, 0.0f}, 1.0f}, xf, {nan, 0.0f}, {1.0f, 0.0f}), Error);
+    EXPECT_THROW(rayCast(Circle{{0.0f, 0.0f}, 1.0f}, xf, {0.0f, 0.0f}, {1.0f, nan}), Error);
+    EXPECT_THROW(rayCast(Circle{{0.0f, 0.0f}, -1.0f}, xf, {0.0f, 0.0f}, {1.0f, 0.0f}), Error);
+    EXPECT_THROW(rayCast(Circle{{0.0f, 0.0f}, 1.0f}, at({nan, 0.0f}, 0.0f), {}, {1.0f, 0.0f}),
+                 Error);
+    Polygon flat = Polygon::fromPoints({{0.0f, 0.0f}, {1.0f, 0.0f}, {2.0f, 0.0f}});
+    EXPECT_THROW(rayCast(flat, xf, {0.0f, -1.0f}, {0.0f, 2.0f}), Error);
+    EXPECT_THROW(testPoint(flat, xf, {0.0f, 0.0f}), Error);
+    EXPECT_THROW(testPoint(Circle{{0.0f, 0.0f}, 1.0f}, xf, {2e9f, 0.0f}), Error);
+}
+
+namespace {
+
+// A world of circles, boxes and random convex polygons on static, kinematic and dynamic bodies,
+// with shapes in four categories; `churn` steps it and creates and destroys bodies between
+// queries.
+struct RandomWorld {
+    World world;
+    std::mt19937 random;
+    std::vector<BodyId> bodies;
+
+    explicit RandomWorld(unsigned seed) : random(seed) {
+        BodyId ground = world.createBody(BodyDef{});
+        world.createShape(ground, ShapeDef{}, Polygon::box(40.0f, 0.5f, {0.0f, -1.0f}, 0.0f));
+        for (int i = 0; i < 150; ++i) addBody();
+    }
+
+    float uniform(float lo, float hi) {
+        return std::uniform_real_distribution<float>(lo, hi)(random);
+    }
+
+    void addBody() {
+        BodyDef def;
+        const int kind = static_cast<int>(uniform(0.0f, 10.0f));
+        def.type =
+            kind == 0 ? BodyType::Static : (kind == 1 ? BodyType::Kinematic : BodyType::Dynamic);
+        def.position = {uniform(-30.0f, 30.0f), uniform(0.0f, 30.0f)};
+        def.angle = uniform(-3.0f, 3.0f);
+        if (def.type == BodyType::Kinematic) def.linearVelocity = {uniform(-2.0f, 2.0f), 0.0f};
+        const BodyId body = world.createBody(def);
+        ShapeDef shapeDef;
+        shapeDef.filter.categoryBits = static_cast<std::uint16_t>(1u << (bodies.size() % 4));
+        const int shapeKind = static_cast<int>(uniform(0.0f, 3.0f));
+        if (shapeKind == 0) {
+            world.createShape(body, shapeDef,
+                              Circle{{uniform(-0.5f, 0.5f), 0.0f}, uniform(0.2f, 1.5f)});
+        } else if (shapeKind == 1) {
+            world.createShape(body, shapeDef,
+                              Polygon::box(uniform(0.1f, 2.0f), uniform(0.1f, 2.0f)));
+        } else {
+            // Points on a circle at increasing angles: always convex.
+            Polygon polygon;
+            polygon.count = 3 + static_cast<int>(uniform(0.0f, 5.0f));
+            const float radius = uniform(0.3f, 1.5f);
+            for (int k = 0; k < polygon.count; ++k) {
+                const float angle = (k + uniform(0.1f, 0.6f)) * 2.0f * kPi / polygon.count;
+                polygon.vertices[k] = {radius * std::cos(angle), radius * std::sin(angle)};
+            }
+            world.createShape(body, shapeDef, polygon);
+        }
+        bodies.push_back(body);
+    }
+
+    void churn() {
+        for (int i = 0; i < 20; ++i) world.step(kDt);
+        for (int i = 0; i < 10; ++i) {
+            const std::size_t k = static_cast<std::size_t>(uniform(0.0f, float(bodies.size())));
+            world.destroyBody(bodies[std::min(k, bodies.size() - 1)]);
+            bodies.erase(bodies.begin() + std::min(k, bodies.size() - 1));
+        }
+        for (int i = 0; i < 10; ++i) addBody();
+        // A teleport between steps: the queries must see the body where it is now.
+        world.setBodyTransform(bodies.front(), {uniform(-20.0f, 20.0f), uniform(0.0f, 20.0f)},
+                               uniform(-3.0f, 3.0f));
+    }
+
+    std::vector<ShapeId> allShapes() const {
+        std::vector<ShapeId> shapes;
+        for (BodyId body : world.bodyIds()) {
+            for (ShapeId shape : world.bodyShapes(body)) shapes.push_back(shape);
+        }
+        return shapes;
+    }
+};
+
+bool sees(const QueryFilter& filter, const Filter& shape) {
+    return (shape.categoryBits & filter.maskBits) != 0 &&
+           (shape.maskBits & filter.categoryBits) != 0;
+}
+
+bool contains(const World& world, ShapeId shape, Vec2 point) {
+    const Transform xf = world.bodyTransform(world.shapeBody(shape));
+    return world.shapeType(shape) == ShapeType::Circle
+               ? testPoint(world.shapeCircle(shape), xf, point)
+               : testPoint(world.shapePolygon(shape), xf, point);
+}
+
+bool overlaps(const AABB& a, const AABB& b) {
+    return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y &&
+           b.lower.y <= a.upper.y;
+}
+
+std::uint64_t key(ShapeId id) {
+    return (std::uint64_t(id.generation) << 32) | std::uint32_t(id.index);
+}
+
+}  // namespace
+
+TEST(WorldQueries, AgreeWithBruteForceOnRandomWorlds) {
+    for (unsigned seed : {1u, 2u, 3u}) {
+        RandomWorld r(seed);
+        int hits = 0, boxFinds = 0, pointFinds = 0;
+        for (int round = 0; round < 4; ++round) {
+            r.churn();
+            const std::vector<ShapeId> shapes = r.allShapes();
+            for (int q = 0; q < 200; ++q) {
+                QueryFilter filter;
+                if (q % 3 == 1) filter.maskBits = 0x5;  // categories 1 and 3
+                const Vec2 origin{r.uniform(-40.0f, 40.0f), r.uniform(-5.0f, 40.0f)};
+                const Vec2 translation{r.uniform(-60.0f, 60.0f), r.uniform(-60.0f, 60.0f)};
+
+                // Closest hit and every hit, against each shape's own ray cast.
+                std::optional<RayHit> expected;
+                std::set<std::uint64_t> expectedAll;
+                for (ShapeId shape : shapes) {
+                    if (!sees(filter, r.world.shapeFilter(shape))) continue;
+                    const auto hit = r.world.castRayOnShape(shape, origin, translation);
+                    if (!hit) continue;
+                    expectedAll.insert(key(shape));
+                    if (!expected || hit->fraction < expected->fraction) expected = hit;
+                }
+                const auto closest = r.world.castRayClosest(origin, translation, filter);
+                ASSERT_EQ(closest.has_value(), expected.has_value()) << seed << " " << q;
+                if (closest) {
+                    ++hits;
+                    EXPECT_EQ(closest->fraction, expected->fraction);
+                    EXPECT_EQ(closest->point, expected->point);
+                }
+                std::set<std::uint64_t> all;
+                r.world.castRay(origin, translation, filter, [&](const RayHit& hit) {
+                    EXPECT_TRUE(all.insert(key(hit.shape)).second) << "reported twice";
+                    return 1.0f;
+                });
+                EXPECT_EQ(all, expectedAll);
+
+                // Boxes.
+                const Vec2 corner{r.uniform(-40.0f, 40.0f), r.uniform(-5.0f, 40.0f)};
+                const AABB box{corner, corner + Vec2{r.uniform(0.0f, 8.0f), r.uniform(0.0f, 8.0f)}};
+                std::set<std::uint64_t> expectedBox, foundBox;
+                for (ShapeId shape : shapes) {
+                    if (sees(filter, r.world.shapeFilter(shape)) &&
+                        overlaps(r.world.shapeAABB(shape), box)) {
+                        expectedBox.insert(key(shape));
+                    }
+                }
+                r.world.queryAABB(box, filter, [&](ShapeId shape) {
+                    foundBox.insert(key(shape));
+                    return true;
+                });
+                EXPECT_EQ(foundBox, expectedBox);
+                boxFinds += static_cast<int>(foundBox.size());
+
+                // Points.
+                std::set<std::uint64_t> expectedPoint, foundPoint;
+                for (ShapeId shape : shapes) {
+                    if (sees(filter, r.world.shapeFilter(shape)) &&
+                        contains(r.world, shape, corner)) {
+                        expectedPoint.insert(key(shape));
+                    }
+                }
+                r.world.queryPoint(corner, filter, [&](ShapeId shape) {
+                    foundPoint.insert(key(shape));
+                    return true;
+                });
+                EXPECT_EQ(foundPoint, expectedPoint);
+                pointFinds += static_cast<int>(foundPoint.size());
+            }
+        }
+        // The worlds are dense enough that the comparisons are not all of empty answers (about
+        // 60% of the 800 rays hit something).
+        EXPECT_GT(hits, 300) << seed;
+        EXPECT_GT(boxFinds, 500) << seed;
+        EXPECT_GT(pointFinds, 50) << seed;
+    }
+}
+
+TEST(WorldQueries, TheRayCallbackIgnoresClipsAndStops) {
+    // Five unit circles in a row along x, at 0, 3, 6, 9 and 12.
+    World world(WorldDef{{0.0f, 0.0f}});
+    std::vector<ShapeId> circles;
+    for (int i = 0; i < 5; ++i) {
+        BodyDef def;
+        def.position = {3.0f * i, 0.0f};
+        circles.push_back(world.createShape(world.createBody(def), ShapeDef{}, Circle{{}, 1.0f}));
+    }
+    const Vec2 origin{-5.0f, 0.0f}, translation{20.0f, 0.0f};
+    int seen = 0;
+    world.castRay(origin, translation, {}, [&](const RayHit&) {
+        ++seen;
+        return 1.0f;
+    });
+    EXPECT_EQ(seen, 5);
+
+    // Ignoring the closest circle makes the second the closest.
+    std::optional<RayHit> best;
+    world.castRay(origin, translation, {}, [&](const RayHit& hit) {
+        if (hit.shape == circles[0]) return -1.0f;
+        best = hit;
+        return hit.fraction;
+    });
+    ASSERT_TRUE(best);
+    EXPECT_EQ(best->shape, circles[1]);
+    EXPECT_NEAR(best->point.x, 2.0f, 1e-5f);
+
+    // Clipping to a fraction keeps out everything beyond it; 0 stops at the first report.
+    std::set<std::uint64_t> near;
+    world.castRay(origin, translation, {}, [&](const RayHit& hit) {
+        near.insert(key(hit.shape));
+        return 0.5f;  // x = 5: the circles at 0 and 3 start before it
+    });
+    for (ShapeId far : {circles[3], circles[4]}) EXPECT_EQ(near.count(key(far)), 0u);
+    seen = 0;
+    world.castRay(origin, translation, {}, [&](const RayHit&) {
+        ++seen;
+        return 0.0f;
+    });
+    EXPECT_EQ(seen, 1);
+
+    const auto closest = world.castRayClosest(origin, translation);
+    ASSERT_TRUE(closest);
+    EXPECT_EQ(closest->shape, circles[0]);
+    EXPECT_NEAR(closest->fraction, 0.2f, 1e-6f);
+}
+
+TEST(WorldQueries, FiltersByCategoryAndMask) {
+    World world(WorldDef{{0.0f, 0.0f}});
+    ShapeDef wallDef, glassDef;
+    wallDef.filter.categoryBits = 0x1;
+    glassDef.filter.categoryBits = 0x2;
+    glassDef.filter.maskBits = 0xFFFD;  // glass does not see queries that are glass
+    BodyDef at2, at5;
+    at2.position = {2.0f, 0.0f};
+    at5.position = {5.0f, 0.0f};
+    const ShapeId glass = world.createShape(world.createBody(at2), glassDef, Polygon::box(0.1f, 2));
+    const ShapeId wall = world.createShape(world.createBody(at5), wallDef, Polygon::box(0.1f, 2));
+    const Vec2 o{0.0f, 0.0f}, d{10.0f, 0.0f};
+    EXPECT_EQ(world.castRayClosest(o, d)->shape, glass);
+    QueryFilter wallsOnly;
+    wallsOnly.maskBits = 0x1;
+    EXPECT_EQ(world.castRayClosest(o, d, wallsOnly)->shape, wall);
+    QueryFilter asGlass;
+    asGlass.categoryBits = 0x2;  // a query that is glass: glass's mask leaves it out
+    EXPECT_EQ(world.castRayClosest(o, d, asGlass)->shape, wall);
+    int found = 0;
+    world.queryPoint({2.0f, 1.0f}, wallsOnly, [&](ShapeId) { return ++found, true; });
+    EXPECT_EQ(found, 0);
+    world.queryPoint({2.0f, 1.0f}, {}, [&](ShapeId) { return ++found, true; });
+    EXPECT_EQ(found, 1);
+}
+
+TEST(WorldQueries, ACallbackMayReadButNotMoveShapes) {
+    World world;
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    const BodyId body = world.createBody(def);
+    const ShapeId shape = world.createShape(body, ShapeDef{}, Circle{{}, 1.0f});
+    const std::uint64_t before = world.stateHash();
+    int calls = 0;
+    world.queryPoint({0.0f, 0.0f}, {}, [&](ShapeId found) {
+        ++calls;
+        EXPECT_EQ(world.shapeBody(found), body);  // reading is fine
+        EXPECT_THROW(world.createShape(body, ShapeDef{}, Circle{{}, 0.5f}), Error);
+        EXPECT_THROW(world.destroyShape(found), Error);
+        EXPECT_THROW(world.destroyBody(body), Error);
+        EXPECT_THROW(world.setBodyTransform(body, {1.0f, 0.0f}, 0.0f), Error);
+        EXPECT_THROW(world.step(kDt), Error);
+        EXPECT_THROW(world.castRay({-5.0f, 0.0f}, {10.0f, 0.0f}, {},
+                                   [&](const RayHit&) {
+                                       world.step(kDt);  // a nested query is a query too
+                                       return 1.0f;
+                                   }),
+                     Error);
+        return true;
+    });
+    EXPECT_EQ(calls, 1);
+    EXPECT_EQ(world.stateHash(), before);
+    EXPECT_TRUE(world.isValid(shape));
+    // After the query, the same calls work.
+    world.setBodyTransform(body, {1.0f, 0.0f}, 0.0f);
+    world.step(kDt);
+}
+
+TEST(WorldQueries, BadArgumentsAreRefused) {
+    World world;
+    world.createShape(world.createBody(BodyDef{}), ShapeDef{}, Circle{{}, 1.0f});
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    auto any = [](const RayHit&) { return 1.0f; };
+    auto all = [](ShapeId) { return true; };
+    EXPECT_THROW(world.castRay({nan, 0.0f}, {1.0f, 0.0f}, {}, any), Error);
+    EXPECT_THROW(world.castRay({0.0f, 0.0f}, {inf, 0.0f}, {}, any), Error);
+    EXPECT_THROW(world.castRayClosest({2e9f, 0.0f}, {1.0f, 0.0f}), Error);
+    EXPECT_THROW(world.queryAABB(AABB{{1.0f, 0.0f}, {0.0f, 1.0f}}, {}, all), Error);
+    EXPECT_THROW(world.queryAABB(AABB{{0.0f, 0.0f}, {nan, 1.0f}}, {}, all), Error);
+    EXPECT_THROW(world.queryPoint({0.0f, inf}, {}, all), Error);
+    EXPECT_THROW(world.castRayOnShape(ShapeId{}, {0.0f, 0.0f}, {1.0f, 0.0f}), Error);
+    EXPECT_THROW(world.shapeAABB(ShapeId{}), Error);
+    // A zero translation is a ray of no length: it hits nothing.
+    EXPECT_FALSE(world.castRayClosest({-5.0f, 0.0f}, {0.0f, 0.0f}));
+}
