@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bench/bench_scenes.h"
+#include "bench/query_bench.h"
 #include "heap/counting_new.h"
 
 namespace {
@@ -220,6 +221,8 @@ int main(int argc, char** argv) {
                          "  --quick    a smoke run: a twentieth of the steps, one repeat\n"
                          "  --csv      print scene,engine,threads,pivot_ms,box2d_ms,speedup lines\n"
                          "  --list     name and describe the scenes\n"
+                         "  --scene queries  only the query rows (ray casts and box queries in\n"
+                         "             10^4 shapes), which a full run prints after the scenes\n"
                          "  --profile ENGINE STEPS  step --scene STEPS times in one engine\n"
                          "             (full_ngs, baumgarte, soft_step or box2d) on one thread\n"
                          "             (pivot2d: --workers threads if given), untimed, for perf\n"
@@ -228,7 +231,8 @@ int main(int argc, char** argv) {
         }
     }
 
-    if (!options.only.empty()) {
+    const bool queriesOnly = options.only == "queries";
+    if (!options.only.empty() && !queriesOnly) {
         bool known = false;
         for (const bench::BenchScene& scene : bench::benchScenes())
             known |= scene.name == options.only;
@@ -249,12 +253,21 @@ int main(int argc, char** argv) {
     // One-thread rows first: like against like (Box2D 2.4.1 has one thread).
     std::stable_sort(rows.begin(), rows.end(),
                      [](const Row& a, const Row& b) { return a.threads < b.threads; });
+    std::vector<bench::QueryRow> queries;
+    if (options.only.empty() || queriesOnly) {
+        if (!options.csv) std::cerr << "timing queries...\n";
+        queries = bench::runQueryBench(options.quick, options.repeats);
+    }
 
     if (options.csv) {
         std::cout << "scene,engine,threads,pivot_ms,box2d_ms,speedup\n";
         for (const Row& r : rows) {
             std::printf("%s,%s,%d,%.4f,%.4f,%.3f\n", r.scene.c_str(), r.engine.c_str(), r.threads,
                         r.pivot, r.box2d, r.box2d / r.pivot);
+        }
+        for (const bench::QueryRow& q : queries) {
+            std::printf("%s,queries,1,%.4f,%.4f,%.3f\n", q.name.c_str(), q.pivotMs, q.box2dMs,
+                        q.box2dMs / q.pivotMs);
         }
         return 0;
     }
@@ -270,6 +283,21 @@ int main(int argc, char** argv) {
     for (const Row& r : rows) {
         std::printf("%-15s %-10s %7d %9.3f %9.3f %7.2fx\n", r.scene.c_str(), r.engine.c_str(),
                     r.threads, r.pivot, r.box2d, r.box2d / r.pivot);
+    }
+    if (!queries.empty()) {
+        std::printf(
+            "\nqueries: ms per batch of %d (median), the same world of 10^4 static shapes "
+            "(circles,\n"
+            "boxes, pentagons) in both engines; Box2D 2.4.1's b2World::RayCast (closest hit) and\n"
+            "QueryAABB (which reports fat boxes; pivot2d also tests each shape's own box).\n",
+            options.quick ? 1000 : 10000);
+        std::printf("%-15s %9s %9s %8s %12s %12s %12s\n", "query", "pivot", "box2d", "x box2d",
+                    "pivot found", "box2d found", "allocations");
+        for (const bench::QueryRow& q : queries) {
+            std::printf("%-15s %9.3f %9.3f %7.2fx %12lld %12lld %12lld\n", q.name.c_str(),
+                        q.pivotMs, q.box2dMs, q.box2dMs / q.pivotMs, q.pivotFound, q.box2dFound,
+                        q.pivotAllocations);
+        }
     }
     if (options.only.empty()) reportMemory(std::cout);
     return 0;

@@ -3,15 +3,21 @@
 // scripted path, then lets go; the joints' recovery is timed from the release.
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
+#include "parts.h"
 #include "scene.h"
 
 namespace pivot::scenes {
 
 namespace {
 
-// A hand of the given stiffness (Hz) whose force is capped at forcePerKg times the body's mass.
-MouseJointId grab(World& world, BodyId body, Vec2 point, float hertz, float forcePerKg) {
+// A hand of the given stiffness (Hz) whose force is capped at forcePerKg times the body's mass,
+// taking hold of the dynamic body under `point` as a pointer would (the scripted point is on
+// the body the scene means; pickedAs checks that the query found it).
+MouseJointId grab(World& world, Vec2 point, BodyId pickedAs, float hertz, float forcePerKg) {
+    const BodyId body = dynamicBodyAt(world, point);
+    if (body != pickedAs) throw std::logic_error("drag: the hand picked another body");
     MouseJointDef def;
     def.body = body;
     def.target = point;
@@ -54,7 +60,7 @@ void buildPendulumDrag(Scene& scene, const SceneOptions& options) {
     auto mouse = std::make_shared<MouseJointId>();
     scene.beforeStep = [=](Scene& s, int step) {
         World& w = *s.world;
-        if (step == 0) *mouse = grab(w, ball, w.bodyWorldCenter(ball), 30.0f, 50000.0f);
+        if (step == 0) *mouse = grab(w, w.bodyWorldCenter(ball), ball, 30.0f, 50000.0f);
         if (step < release) {
             float t = static_cast<float>(step + 1) / hz;
             w.setMouseTarget(*mouse, whirl(pivot, 3.0f, 4.0f * 2.0f * kPi, duration, t));
@@ -64,8 +70,9 @@ void buildPendulumDrag(Scene& scene, const SceneOptions& options) {
     };
 }
 
-// The chain falls for a second; then its free end is grabbed by a testbed-like hand (5 Hz, up to
-// 1000 times the link's mass in newtons), yanked to a 5 m circle about (12, 15) and whirled round
+// The chain falls for a second; then its free end is grabbed 0.1 m from its tip (inside the link:
+// a point on its outline may test either side of it) by a testbed-like hand (5 Hz, up to 1000
+// times the link's mass in newtons), yanked to a 5 m circle about (12, 15) and whirled round
 // it at a rate rising to 3 revolutions per second, and let go at t = 4 s.
 void buildChainDrag(Scene& scene, const SceneOptions& options) {
     buildChain(scene, options);
@@ -78,7 +85,7 @@ void buildChainDrag(Scene& scene, const SceneOptions& options) {
     scene.beforeStep = [=](Scene& s, int step) {
         World& w = *s.world;
         if (step == grabStep) {
-            *mouse = grab(w, end, w.bodyWorldPoint(end, {0.6f, 0.0f}), 5.0f, 1000.0f);
+            *mouse = grab(w, w.bodyWorldPoint(end, {0.5f, 0.0f}), end, 5.0f, 1000.0f);
         }
         if (step >= grabStep && step < release) {
             float t = static_cast<float>(step + 1 - grabStep) / hz;

@@ -2,6 +2,17 @@
 
 namespace pivot::scenes {
 
+BodyId dynamicBodyAt(const World& world, Vec2 point) {
+    BodyId found;
+    world.queryPoint(point, QueryFilter{}, [&](ShapeId shape) {
+        const BodyId body = world.shapeBody(shape);
+        if (world.bodyType(body) != BodyType::Dynamic) return true;
+        found = body;
+        return false;
+    });
+    return found;
+}
+
 BodyId addShelf(World& world, float left, float right, float top, float friction) {
     BodyId shelf = world.createBody(BodyDef{});
     ShapeDef def;

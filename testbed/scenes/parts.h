@@ -53,6 +53,10 @@ void layPyramid(const PyramidSpec& spec, AddBox&& addBox) {
     }
 }
 
+/// The dynamic body under `point`, found as a pointer finds it (World::queryPoint), or a null
+/// id when there is none; of several, the first the query reports.
+BodyId dynamicBodyAt(const World& world, Vec2 point);
+
 /// A static box 1 m deep whose top face is at `top`, spanning [left, right]; density 0.
 BodyId addShelf(World& world, float left, float right, float top, float friction = 0.6f);
 

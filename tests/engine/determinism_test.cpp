@@ -72,7 +72,7 @@ const RecordedHashes kRecorded[] = {
     {"pyramid",           {0x33374f5211e3838eull, 0x7a4f83ed7c2acef7ull, 0x2fc968ff77f7ae04ull, 0xcea594887e52707dull, 0x00e6c689d4438b3aull, 0xbd740aeacbdc2a63ull}},
     {"tumbler",           {0xa468ffb0d1d6388eull, 0x504a98908f7d9ecaull, 0xd26f2783555faf73ull, 0x61b1fb69e5cc961full, 0x48e11e24bd801e51ull, 0xfbc7c2cdf2b346e6ull}},
     {"pendulum_drag",     {0x06a23888fe39691bull, 0x9afe6c2e2167d5ccull, 0xe6c61ec2f5185bfbull, 0xfb387053841b4bd0ull, 0x36b62083f50deb38ull, 0x2cba08f26325c3ecull}},
-    {"chain_drag",        {0xabbb55da52ff6c0aull, 0xcae02b53083dde97ull, 0x416617442ef48f8eull, 0x31d96c819badce99ull, 0xba39d40519051a72ull, 0xd248ae57a15c3fefull}},
+    {"chain_drag",        {0xb872497f840b821aull, 0xf1341218c48eb238ull, 0x3d4525bd1579c706ull, 0x152bfe078567bc9full, 0xc65fd1b9eb7e6cbfull, 0xda3f20c05d5e8c28ull}},
     {"ragdoll",           {0x986a78436167194dull, 0xc396f341c5a179eeull, 0x45897ec3e5b175b9ull, 0x07cc21557f9f5b4full, 0x0dbc7b87cef64af7ull, 0xc5f0ea1a8ab23831ull}},
     {"ragdoll_motorized", {0xded5e98975600d27ull, 0x7e87e83c497924aeull, 0x217b56c1cf46214bull, 0xe47cfe25e0627942ull, 0xc192ef15a6c63819ull, 0x6ea81af50b902719ull}},
     {"distance_pendulum", {0xd1964694720a8e70ull, 0xeb7346be27492100ull, 0x1e35eace498130d8ull, 0x1e415cc507746a14ull, 0x7a8b82b620242a1bull, 0x61523b497ad65498ull}},

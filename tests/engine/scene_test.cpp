@@ -173,12 +173,18 @@ TEST(Scenes, ChainDragGrabsTheFreeEndAndLetsGo) {
     Scene scene = buildScene(*findScene("chain_drag"), SceneOptions{});
     RunSettings settings;
     settings.steps = 300;  // 5 s: grabbed at 1 s, released at 4 s
-    Vec2 endAt2s;
+    // While whirled (from 1 s to 4 s), the free end goes round the 5 m circle about (12, 15):
+    // its distance from the centre swings (the chain whips, from 0.2 m to 17 m), so the check is
+    // on the mean over the whirl rather than on one instant, which a 0.1 m change of where the
+    // hand takes hold moved from 4.6 m to 1.7 m.
+    double sum = 0.0;
+    int count = 0;
     runScene(scene, settings, [&](int step) {
-        if (step == 119) endAt2s = scene.world->bodyPosition(scene.bodies.back());
+        if (step < 60 || step >= 240) return;
+        sum += distance(scene.world->bodyPosition(scene.bodies.back()), {12.0f, 15.0f});
+        ++count;
     });
-    // While whirled, the free end is near the 5 m circle about (12, 15).
-    EXPECT_NEAR(distance(endAt2s, {12.0f, 15.0f}), 5.0f, 3.0f);
+    EXPECT_NEAR(sum / count, 5.0, 2.0);
 }
 
 TEST(Scenes, RagdollHitsTheWallAndComesToRestWithinItsLimits) {
