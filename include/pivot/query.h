@@ -43,7 +43,13 @@ std::optional<RayHit> rayCast(const Circle& circle, const Transform& xf, Vec2 or
 std::optional<RayHit> rayCast(const Polygon& polygon, const Transform& xf, Vec2 origin,
                               Vec2 translation);
 
-/// Whether a point (world coordinates) lies inside, or on the boundary of, a shape at `xf`.
+/// A ray against one segment at transform `xf` (checked as World::createShape checks it); the
+/// normal faces the side the ray comes from. A ray along the segment's line does not hit it.
+std::optional<RayHit> rayCast(const Segment& segment, const Transform& xf, Vec2 origin,
+                              Vec2 translation);
+
+/// Whether a point (world coordinates) lies inside, or on the boundary of, a shape at `xf`. (A
+/// segment has no inside: World::queryPoint never reports one.)
 bool testPoint(const Circle& circle, const Transform& xf, Vec2 point);
 bool testPoint(const Polygon& polygon, const Transform& xf, Vec2 point);
 

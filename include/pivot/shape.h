@@ -12,7 +12,7 @@
 
 namespace pivot {
 
-enum class ShapeType : std::uint8_t { Circle, Polygon };
+enum class ShapeType : std::uint8_t { Circle, Polygon, Segment };
 
 /// A solid disc.
 struct Circle {
@@ -34,6 +34,16 @@ struct Polygon {
     static Polygon box(float halfWidth, float halfHeight, Vec2 center, float angle);
     /// A polygon from its vertices. More than kMaxPolygonVertices throws pivot::Error.
     static Polygon fromPoints(std::initializer_list<Vec2> points);
+};
+
+/// A line segment between two points in the body frame, solid from both sides (a wall, a
+/// floor, a ramp), with the same thin collision skin as a polygon (kPolygonRadius). It has no
+/// area and so no mass: it belongs on a static or kinematic body (World::createShape refuses a
+/// dynamic one, and World::setBodyType refuses to make its body dynamic). Its points are within
+/// kMaxCoordinate and at least kLinearSlop apart. Segments do not collide with each other.
+struct Segment {
+    Vec2 point1;
+    Vec2 point2;
 };
 
 /// Which shapes may touch. Two shapes collide when each one's category is in the other's mask,

@@ -239,6 +239,8 @@ public:
     /// Attaches a shape and updates the body's mass.
     ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    /// On a static or kinematic body only (a segment has no mass).
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
     /// Destroys the shape and its contacts and wakes its body.
     void destroyShape(ShapeId id);
     bool isValid(ShapeId id) const;
@@ -252,10 +254,11 @@ public:
     /// for when they become dynamic.
     void setShapeDensity(ShapeId id, float density);
     ShapeType shapeType(ShapeId id) const;
-    /// The shape's geometry in its body's frame. Asking a polygon for its circle (or the other
-    /// way round) throws pivot::Error. Polygons come back counter-clockwise.
+    /// The shape's geometry in its body's frame. Asking a shape for another type's geometry
+    /// throws pivot::Error. Polygons come back counter-clockwise.
     Circle shapeCircle(ShapeId id) const;
     Polygon shapePolygon(ShapeId id) const;
+    Segment shapeSegment(ShapeId id) const;
     /// Takes effect at the next step: existing contacts are re-filtered, new pairs found.
     void setShapeFilter(ShapeId id, const Filter& filter);
     /// The value of ShapeDef::userData, or the last one set; pivot2d never reads it.
@@ -286,8 +289,8 @@ public:
     /// the callback returns false to stop.
     void queryAABB(const AABB& box, const QueryFilter& filter, ShapeCallback callback) const;
     /// Every shape the filter sees that contains `point` (on its boundary counts; a polygon's
-    /// skin does not), in the tree's order; the callback returns false to stop. What the
-    /// testbed's drags use to pick the body under the pointer.
+    /// skin does not; a segment contains none), in the tree's order; the callback returns false
+    /// to stop. What the testbed's drags use to pick the body under the pointer.
     void queryPoint(Vec2 point, const QueryFilter& filter, ShapeCallback callback) const;
 
     // --- contacts ---------------------------------------------------------------------------

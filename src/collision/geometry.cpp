@@ -133,6 +133,39 @@ std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out) {
     return {};
 }
 
+std::string makeSegmentPolygon(const Segment& input, ConvexPolygon& out) {
+    const Vec2 points[2] = {input.point1, input.point2};
+    for (int i = 0; i < 2; ++i) {
+        const char* name = i == 0 ? "segment.point1" : "segment.point2";
+        if (!isFinite(points[i])) {
+            return std::string(name) + " must be finite (got " + formatVec2(points[i]) + ")";
+        }
+        if (std::fpclassify(points[i].x) == FP_SUBNORMAL ||
+            std::fpclassify(points[i].y) == FP_SUBNORMAL) {
+            return std::string(name) + " must be 0 or a normal float, not a denormal (got " +
+                   formatVec2(points[i]) + ")";
+        }
+        if (std::fabs(points[i].x) > kMaxCoordinate || std::fabs(points[i].y) > kMaxCoordinate) {
+            return std::string(name) + " must be within +-kMaxCoordinate (" +
+                   formatFloat(kMaxCoordinate) + " m) (got " + formatVec2(points[i]) + ")";
+        }
+    }
+    const Vec2 edge = points[1] - points[0];
+    const float edgeLength = length(edge);
+    // Shorter than the slop a contact could not resolve it, as for a polygon's edges.
+    if (!(edgeLength >= kLinearSlop)) {
+        return "segment.point1 and segment.point2 must be at least kLinearSlop (" +
+               formatFloat(kLinearSlop) + " m) apart (got " + formatFloat(edgeLength) + " m)";
+    }
+    out = ConvexPolygon{};
+    out.count = 2;
+    out.vertices[0] = points[0];
+    out.vertices[1] = points[1];
+    out.normals[0] = (1.0f / edgeLength) * cross(edge, 1.0f);
+    out.normals[1] = -out.normals[0];
+    return {};
+}
+
 void checkCircle(const char* call, const Circle& circle) {
     requireCoordinate(call, "circle.center", circle.center);
     requireFinite(call, "circle.radius", circle.radius);

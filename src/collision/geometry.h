@@ -20,6 +20,11 @@ struct ConvexPolygon {
 /// Checks a user polygon. Returns what is wrong with it as text, or an empty string and the
 /// polygon in canonical form in `out`.
 std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out);
+/// Checks a user segment (points within kMaxCoordinate, at least kLinearSlop apart) and makes
+/// it the two-sided polygon the narrow phase sees: two vertices, the face point1 -> point2 with
+/// the normal on its right and the face back with the opposite normal. Returns what is wrong,
+/// or an empty string.
+std::string makeSegmentPolygon(const Segment& input, ConvexPolygon& out);
 /// Checks a user circle (centre within kMaxCoordinate, radius in [kLinearSlop,
 /// kMaxCoordinate]); throws pivot::Error naming `call`.
 void checkCircle(const char* call, const Circle& circle);

@@ -58,6 +58,26 @@ std::optional<RayEntry> rayCastPolygon(const ConvexPolygon& polygon, const Trans
     return entry;
 }
 
+std::optional<RayEntry> rayCastSegment(const ConvexPolygon& segment, const Transform& xf,
+                                       Vec2 origin, Vec2 translation, float maxFraction) {
+    const Vec2 p = inverseTransformPoint(xf, origin);
+    const Vec2 d = inverseRotate(xf.q, translation);
+    const Vec2 a = segment.vertices[0];
+    const Vec2 n = segment.normals[0];
+    const float approach = dot(n, d);
+    if (approach == 0.0f) return std::nullopt;  // along the line, or no translation
+    const float t = dot(n, a - p) / approach;
+    if (!(t >= 0.0f && t <= maxFraction)) return std::nullopt;
+    const Vec2 e = segment.vertices[1] - a;
+    const float along = dot(e, p + t * d - a);
+    if (along < 0.0f || along > dot(e, e)) return std::nullopt;  // past an end
+    RayEntry entry;
+    entry.fraction = t;
+    entry.point = origin + t * translation;
+    entry.normal = rotate(xf.q, approach < 0.0f ? n : -n);
+    return entry;
+}
+
 bool circleContains(const Circle& circle, const Transform& xf, Vec2 point) {
     const Vec2 d = point - transformPoint(xf, circle.center);
     return dot(d, d) <= circle.radius * circle.radius;

@@ -10,6 +10,10 @@
 // n . (x - v) <= 0 (Cyrus-Beck): an edge the ray crosses inwards (n . d < 0) raises the entry
 // fraction to (n . (v - origin)) / (n . d), one it crosses outwards lowers the exit fraction. The
 // entry edge gives the normal. A ray that starts inside enters through no edge: no hit.
+//
+// Segment (a to b, unit normal n): the ray crosses the segment's line at
+// t = n . (a - origin) / (n . d), where it must also lie between a and b; the normal faces the
+// side the ray comes from. A ray along the line never crosses it.
 #pragma once
 
 #include <optional>
@@ -30,6 +34,10 @@ struct RayEntry {
 std::optional<RayEntry> rayCastCircle(const Circle& circle, const Transform& xf, Vec2 origin,
                                       Vec2 translation, float maxFraction);
 std::optional<RayEntry> rayCastPolygon(const ConvexPolygon& polygon, const Transform& xf,
+                                       Vec2 origin, Vec2 translation, float maxFraction);
+
+/// `segment` as makeSegmentPolygon stores it (vertices 0 and 1, normals[0] the unit normal).
+std::optional<RayEntry> rayCastSegment(const ConvexPolygon& segment, const Transform& xf,
                                        Vec2 origin, Vec2 translation, float maxFraction);
 
 bool circleContains(const Circle& circle, const Transform& xf, Vec2 point);

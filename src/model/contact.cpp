@@ -4,11 +4,13 @@ namespace pivot {
 
 namespace {
 // Contacts are made with the polygon first whenever a polygon meets a circle (see
-// World::Impl::addPair), so these three cases are all there is.
+// World::Impl::addPair), so these three cases are all there is. A segment is a polygon of two
+// vertices to the narrow phase (its skin is a polygon's too); two segments never meet (both
+// are on static or kinematic bodies).
 void collide(Manifold& m, const Shape& a, const Transform& xfA, const Shape& b,
              const Transform& xfB) {
-    if (a.type == ShapeType::Polygon) {
-        if (b.type == ShapeType::Polygon) {
+    if (a.type != ShapeType::Circle) {
+        if (b.type != ShapeType::Circle) {
             collidePolygons(m, a.polygon, xfA, b.polygon, xfB);
         } else {
             collidePolygonAndCircle(m, a.polygon, xfA, b.circle, xfB);

@@ -60,6 +60,11 @@ OriginMass polygonMassAboutOrigin(const Vec2* vertices, int count, float density
 
 OriginMass shapeMassAboutOrigin(const Shape& shape) {
     if (shape.type == ShapeType::Circle) return circleMassAboutOrigin(shape.circle, shape.density);
+    if (shape.type == ShapeType::Segment) {
+        OriginMass m;  // no area, no mass (segments sit on static and kinematic bodies)
+        m.center = 0.5f * (shape.polygon.vertices[0] + shape.polygon.vertices[1]);
+        return m;
+    }
     return polygonMassAboutOrigin(shape.polygon.vertices.data(), shape.polygon.count,
                                   shape.density);
 }

@@ -14,7 +14,7 @@ struct Shape {
     std::int32_t body = -1;
     ShapeType type = ShapeType::Circle;
     Circle circle;
-    ConvexPolygon polygon;
+    ConvexPolygon polygon;  // a polygon's, or a segment's as a two-sided polygon of two vertices
     float density = 0.0f;
     float friction = 0.0f;
     float restitution = 0.0f;
@@ -38,7 +38,8 @@ struct OriginMass {
 };
 OriginMass shapeMassAboutOrigin(const Shape& shape);
 
-/// The radius a shape collides with: a circle's own, or the polygon skin kPolygonRadius.
+/// The radius a shape collides with: a circle's own, or the skin kPolygonRadius of polygons and
+/// segments.
 inline float collisionRadius(const Shape& shape) {
     return shape.type == ShapeType::Circle ? shape.circle.radius : kPolygonRadius;
 }

@@ -25,8 +25,9 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     if (pairs_.find(key) != -1) return;
     if (!bodiesMayCollide(a.body, b.body)) return;
 
-    // The narrow phase has polygon-circle but not circle-polygon: put the polygon first.
-    if (a.type == ShapeType::Circle && b.type == ShapeType::Polygon) std::swap(shapeA, shapeB);
+    // The narrow phase has polygon-circle but not circle-polygon: put the polygon (or the
+    // segment, a polygon of two vertices to it) first.
+    if (a.type == ShapeType::Circle && b.type != ShapeType::Circle) std::swap(shapeA, shapeB);
 
     Contact contact;
     contact.shapeA = shapeA;

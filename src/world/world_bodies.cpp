@@ -91,6 +91,10 @@ void World::setBodyType(BodyId id, BodyType type) {
     if (type == BodyType::Dynamic) {
         // The rule createShape enforces, so a dynamic body's mass always comes from its shapes.
         for (std::int32_t s = body.shapeList; s != -1; s = w.shapes[s].next) {
+            if (w.shapes[s].type == ShapeType::Segment) {
+                fail(call, "a dynamic body cannot carry a segment, which has no mass, and shape " +
+                               std::to_string(s) + " is one (destroy it first)");
+            }
             if (w.shapes[s].density == 0.0f) {
                 fail(call, "a dynamic body needs density > 0 in every shape, and shape " +
                                std::to_string(s) +

@@ -17,14 +17,25 @@ bool sees(const QueryFilter& filter, const Shape& shape) {
 
 std::optional<RayEntry> castOnShape(const Shape& shape, const Transform& xf, Vec2 origin,
                                     Vec2 translation, float maxFraction) {
-    return shape.type == ShapeType::Circle
-               ? rayCastCircle(shape.circle, xf, origin, translation, maxFraction)
-               : rayCastPolygon(shape.polygon, xf, origin, translation, maxFraction);
+    switch (shape.type) {
+        case ShapeType::Circle:
+            return rayCastCircle(shape.circle, xf, origin, translation, maxFraction);
+        case ShapeType::Polygon:
+            return rayCastPolygon(shape.polygon, xf, origin, translation, maxFraction);
+        case ShapeType::Segment:
+            return rayCastSegment(shape.polygon, xf, origin, translation, maxFraction);
+    }
+    return std::nullopt;
 }
 
+/// A segment has no inside: it contains no point.
 bool shapeContains(const Shape& shape, const Transform& xf, Vec2 point) {
-    return shape.type == ShapeType::Circle ? circleContains(shape.circle, xf, point)
-                                           : polygonContains(shape.polygon, xf, point);
+    switch (shape.type) {
+        case ShapeType::Circle: return circleContains(shape.circle, xf, point);
+        case ShapeType::Polygon: return polygonContains(shape.polygon, xf, point);
+        case ShapeType::Segment: return false;
+    }
+    return false;
 }
 
 void checkTransform(const char* call, const Transform& xf) {
@@ -176,6 +187,19 @@ std::optional<RayHit> rayCast(const Polygon& polygon, const Transform& xf, Vec2 
     checkTransform(call, xf);
     checkRay(call, origin, translation);
     const std::optional<RayEntry> entry = rayCastPolygon(checked, xf, origin, translation, 1.0f);
+    if (!entry) return std::nullopt;
+    return RayHit{ShapeId{}, entry->point, entry->normal, entry->fraction};
+}
+
+std::optional<RayHit> rayCast(const Segment& segment, const Transform& xf, Vec2 origin,
+                              Vec2 translation) {
+    const char* call = "pivot::rayCast";
+    ConvexPolygon checked;
+    const std::string problem = makeSegmentPolygon(segment, checked);
+    if (!problem.empty()) fail(call, problem);
+    checkTransform(call, xf);
+    checkRay(call, origin, translation);
+    const std::optional<RayEntry> entry = rayCastSegment(checked, xf, origin, translation, 1.0f);
     if (!entry) return std::nullopt;
     return RayHit{ShapeId{}, entry->point, entry->normal, entry->fraction};
 }

@@ -90,6 +90,23 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& po
     return attachShape(call, *impl_, bodyIndex, def, shape);
 }
 
+ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Segment& segment) {
+    const char* call = "World::createShape";
+    impl_->requireNoQuery(call);
+    std::int32_t bodyIndex = impl_->bodyIndex(call, bodyId);
+    if (impl_->bodies[bodyIndex].type == BodyType::Dynamic) {
+        fail(call,
+             "a segment has no area and so no mass: it goes on a static or kinematic "
+             "body, not a dynamic one");
+    }
+    checkShapeDef(call, def, impl_->bodies[bodyIndex]);
+    Shape shape;
+    shape.type = ShapeType::Segment;
+    std::string problem = makeSegmentPolygon(segment, shape.polygon);
+    if (!problem.empty()) fail(call, problem);
+    return attachShape(call, *impl_, bodyIndex, def, shape);
+}
+
 void World::destroyShape(ShapeId id) {
     const char* call = "World::destroyShape";
     Impl& w = *impl_;
@@ -122,17 +139,39 @@ ShapeType World::shapeType(ShapeId id) const {
     return impl_->shapes[impl_->shapeIndex("World::shapeType", id)].type;
 }
 
+namespace {
+
+const char* shapeTypeName(ShapeType type) {
+    switch (type) {
+        case ShapeType::Circle: return "a circle";
+        case ShapeType::Polygon: return "a polygon";
+        case ShapeType::Segment: return "a segment";
+    }
+    return "unknown";
+}
+
+const Shape& shapeOfType(const char* call, const World::Impl& w, ShapeId id, ShapeType type) {
+    const Shape& shape = w.shapes[w.shapeIndex(call, id)];
+    if (shape.type != type) {
+        fail(call,
+             std::string("shape is ") + shapeTypeName(shape.type) + ", not " + shapeTypeName(type));
+    }
+    return shape;
+}
+
+}  // namespace
+
 Circle World::shapeCircle(ShapeId id) const {
-    const char* call = "World::shapeCircle";
-    const Shape& shape = impl_->shapes[impl_->shapeIndex(call, id)];
-    if (shape.type != ShapeType::Circle) fail(call, "shape is a polygon, not a circle");
-    return shape.circle;
+    return shapeOfType("World::shapeCircle", *impl_, id, ShapeType::Circle).circle;
+}
+
+Segment World::shapeSegment(ShapeId id) const {
+    const Shape& shape = shapeOfType("World::shapeSegment", *impl_, id, ShapeType::Segment);
+    return Segment{shape.polygon.vertices[0], shape.polygon.vertices[1]};
 }
 
 Polygon World::shapePolygon(ShapeId id) const {
-    const char* call = "World::shapePolygon";
-    const Shape& shape = impl_->shapes[impl_->shapeIndex(call, id)];
-    if (shape.type != ShapeType::Polygon) fail(call, "shape is a circle, not a polygon");
+    const Shape& shape = shapeOfType("World::shapePolygon", *impl_, id, ShapeType::Polygon);
     Polygon polygon;
     polygon.count = shape.polygon.count;
     for (int i = 0; i < polygon.count; ++i) polygon.vertices[i] = shape.polygon.vertices[i];

@@ -28,6 +28,9 @@ std::vector<Outline> outlinesOf(const World& world, BodyId body) {
             Circle circle = world.shapeCircle(shape);
             outline.center = circle.center;
             outline.radius = circle.radius;
+        } else if (outline.type == ShapeType::Segment) {
+            const Segment segment = world.shapeSegment(shape);
+            outline.vertices = {segment.point1, segment.point2};  // drawn as a closed line
         } else {
             Polygon polygon = world.shapePolygon(shape);
             outline.vertices.assign(polygon.vertices.begin(),

@@ -43,6 +43,12 @@ SnapshotFrame captureFrame(const World& world, const std::string& caption) {
                 Circle c = world.shapeCircle(shape);
                 frame.circles.push_back(
                     {transformPoint(xf, c.center), c.radius, world.bodyAngle(body), isStatic});
+            } else if (world.shapeType(shape) == ShapeType::Segment) {
+                const Segment s = world.shapeSegment(shape);
+                SnapshotFrame::PolygonShape outline;  // two points: drawn as a line
+                outline.isStatic = isStatic;
+                outline.vertices = {transformPoint(xf, s.point1), transformPoint(xf, s.point2)};
+                frame.polygons.push_back(outline);
             } else {
                 Polygon p = world.shapePolygon(shape);
                 SnapshotFrame::PolygonShape outline;

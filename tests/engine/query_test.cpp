@@ -92,8 +92,8 @@ TEST(RayCastShape, BadInputIsRefused) {
 namespace {
 
 // A world of circles, boxes and random convex polygons on static, kinematic and dynamic bodies,
-// with shapes in four categories; `churn` steps it and creates and destroys bodies between
-// queries.
+// and segments on the static and kinematic ones, with shapes in four categories; `churn` steps it
+// and creates and destroys bodies between queries.
 struct RandomWorld {
     World world;
     std::mt19937 random;
@@ -120,8 +120,12 @@ struct RandomWorld {
         const BodyId body = world.createBody(def);
         ShapeDef shapeDef;
         shapeDef.filter.categoryBits = static_cast<std::uint16_t>(1u << (bodies.size() % 4));
-        const int shapeKind = static_cast<int>(uniform(0.0f, 3.0f));
-        if (shapeKind == 0) {
+        const int shapeKind = static_cast<int>(uniform(0.0f, 4.0f));
+        if (shapeKind == 3 && def.type != BodyType::Dynamic) {
+            const float length = uniform(0.5f, 6.0f);
+            world.createShape(body, shapeDef,
+                              Segment{{-0.5f * length, 0.0f}, {0.5f * length, 0.3f}});
+        } else if (shapeKind == 0) {
             world.createShape(body, shapeDef,
                               Circle{{uniform(-0.5f, 0.5f), 0.0f}, uniform(0.2f, 1.5f)});
         } else if (shapeKind == 1) {
@@ -170,6 +174,7 @@ bool sees(const QueryFilter& filter, const Filter& shape) {
 
 bool contains(const World& world, ShapeId shape, Vec2 point) {
     const Transform xf = world.bodyTransform(world.shapeBody(shape));
+    if (world.shapeType(shape) == ShapeType::Segment) return false;  // no inside
     return world.shapeType(shape) == ShapeType::Circle
                ? testPoint(world.shapeCircle(shape), xf, point)
                : testPoint(world.shapePolygon(shape), xf, point);

@@ -430,6 +430,13 @@ private:
         return false;
     }
 
+    bool hasSegment(BodyId body) const {
+        for (ShapeId s : world_->bodyShapes(body)) {
+            if (world_->shapeType(s) == ShapeType::Segment) return true;
+        }
+        return false;
+    }
+
     // A call that changes a body's mass moves its centre of mass, by up to about 3e5 m, and the
     // centre's velocity by w x that shift: it is refused if that would pass kMaxSpeed. Where it
     // might, either outcome is allowed; elsewhere the call's own verdict stands.
@@ -464,6 +471,7 @@ private:
             {10, &Driver::createBody},
             {6, &Driver::createCircle},
             {8, &Driver::createPolygon},
+            {3, &Driver::createSegment},
             {7, &Driver::createJoint},
             {3, &Driver::createDistanceJoint},
             {2, &Driver::createPulleyJoint},
@@ -577,6 +585,9 @@ private:
         Arg<ShapeDef> def = shapeDef(!isDynamic(body));
         Verdict v = geometryVerdict;
         if (body.bad || def.bad) v = Verdict::Bad;
+        if constexpr (std::is_same_v<Shape, Segment>) {
+            if (isDynamic(body)) v = Verdict::Bad;  // a segment has no mass
+        }
         if (!body.bad) v = afterMassChange(body.value, v);
         trace("createShape(" + what + ") body=" + idText(body.value) +
               " density=" + text(def.value.density));
@@ -597,6 +608,18 @@ private:
         Arg<float> radius = values_->radius();
         createShape(Circle{center.value, radius.value}, verdict(center.bad || radius.bad),
                     "circle r=" + text(radius.value));
+    }
+
+    // Mostly a valid segment, now and then a degenerate one (too short, or a bad point). The
+    // body's type decides the rest: createShape refuses a segment on a dynamic body.
+    void createSegment() {
+        Arg<Vec2> point1 = values_->coordinate(10.0f);
+        Arg<Vec2> point2 = values_->coordinate(10.0f);
+        if (random_.chance(0.05f)) point2.value = point1.value + Vec2{0.5f * kLinearSlop, 0.0f};
+        const Vec2 d = point2.value - point1.value;
+        const bool bad = point1.bad || point2.bad || !isFinite(d) || !(length(d) >= kLinearSlop);
+        const Segment segment{point1.value, point2.value};
+        createShape(segment, verdict(bad), "segment");
     }
 
     void createPolygon() {
@@ -1474,7 +1497,8 @@ private:
             bad = true;
         } else {
             type = static_cast<BodyType>(random_.below(3));
-            if (type == BodyType::Dynamic && !body.bad && hasZeroDensityShape(body.value)) {
+            if (type == BodyType::Dynamic && !body.bad &&
+                (hasZeroDensityShape(body.value) || hasSegment(body.value))) {
                 bad = true;
             }
         }
@@ -1987,16 +2011,25 @@ private:
                 break;
             }
             case 3: {
-                bool circle = !shape.bad && w.shapeType(shape.value) == ShapeType::Circle;
-                if (random_.chance(0.5f)) {
-                    attempt("World::shapeCircle", verdict(shape.bad || !circle),
+                const ShapeType type = shape.bad ? ShapeType::Circle : w.shapeType(shape.value);
+                const int ask = random_.below(3);
+                if (ask == 0) {
+                    attempt("World::shapeCircle", verdict(shape.bad || type != ShapeType::Circle),
                             [&] { w.shapeCircle(shape.value); });
+                } else if (ask == 1) {
+                    attempt("World::shapeSegment", verdict(shape.bad || type != ShapeType::Segment),
+                            [&] {
+                                // What comes back must be accepted again as a segment.
+                                const Segment g = w.shapeSegment(shape.value);
+                                rayCast(g, Transform{{0.0f, 0.0f}, Rot(0.0f)}, {}, {1.0f, 1.0f});
+                            });
                 } else {
-                    attempt("World::shapePolygon", verdict(shape.bad || circle), [&] {
-                        // What comes back must be accepted again as a shape's geometry.
-                        Polygon p = w.shapePolygon(shape.value);
-                        computeMass(p, 1.0f);
-                    });
+                    attempt("World::shapePolygon", verdict(shape.bad || type != ShapeType::Polygon),
+                            [&] {
+                                // What comes back must be accepted again as a shape's geometry.
+                                Polygon p = w.shapePolygon(shape.value);
+                                computeMass(p, 1.0f);
+                            });
                 }
                 break;
             }

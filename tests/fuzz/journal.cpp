@@ -93,6 +93,13 @@ ShapeId Journal::createShape(BodyId body, const ShapeDef& def, const Polygon& po
     return id;
 }
 
+ShapeId Journal::createShape(BodyId body, const ShapeDef& def, const Segment& segment) {
+    ShapeId id = world_->createShape(body, def, segment);
+    lines_.push_back("segment " + nameNew('s', id) + " " + nameOf('b', body) + " " +
+                     shapeDefText(def) + " " + num(segment.point1) + " " + num(segment.point2));
+    return id;
+}
+
 JointId Journal::createJoint(const RevoluteJointDef& def) {
     JointId id = world_->createJoint(def);
     lines_.push_back(
@@ -576,7 +583,7 @@ ReplayResult replay(std::istream& in) {
             def.allowSleep = f.b();
             def.isAwake = f.b();
             call = [&w, &bodies, name, def] { bodies[name] = w.createBody(def); };
-        } else if (command == "circle" || command == "polygon") {
+        } else if (command == "circle" || command == "polygon" || command == "segment") {
             std::string name = f.word();
             BodyId b = body(f.word());
             ShapeDef def = f.shapeDef();
@@ -585,6 +592,11 @@ ReplayResult replay(std::istream& in) {
                 c.center = f.v();
                 c.radius = f.f();
                 call = [&w, &shapes, name, b, def, c] { shapes[name] = w.createShape(b, def, c); };
+            } else if (command == "segment") {
+                Segment g;
+                g.point1 = f.v();
+                g.point2 = f.v();
+                call = [&w, &shapes, name, b, def, g] { shapes[name] = w.createShape(b, def, g); };
             } else {
                 Polygon p;
                 p.count = f.i();

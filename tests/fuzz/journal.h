@@ -31,6 +31,7 @@ public:
     BodyId createBody(const BodyDef& def);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
     JointId createJoint(const RevoluteJointDef& def);
     JointId createJoint(const DistanceJointDef& def);
     JointId createJoint(const PulleyJointDef& def);
