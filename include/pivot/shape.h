@@ -34,6 +34,14 @@ struct Polygon {
     static Polygon box(float halfWidth, float halfHeight, Vec2 center, float angle);
     /// A polygon from its vertices. More than kMaxPolygonVertices throws pivot::Error.
     static Polygon fromPoints(std::initializer_list<Vec2> points);
+    /// The convex hull of a cloud of points (any number, any order), counter-clockwise, made
+    /// valid for World::createShape: points closer than kLinearSlop are merged and points on
+    /// (or within a tenth of the slop of) the line between their neighbours are dropped. Throws
+    /// pivot::Error for a point that is not finite or outside kMaxCoordinate, for fewer than 3
+    /// points, for a cloud with no area (all on one line, or all within the slop of each other)
+    /// and for a hull of more than kMaxPolygonVertices corners (simplify the cloud first).
+    static Polygon convexHull(const Vec2* points, int count);
+    static Polygon convexHull(std::initializer_list<Vec2> points);
 };
 
 /// A line segment between two points in the body frame, solid from both sides (a wall, a

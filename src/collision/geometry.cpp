@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "core/validation.h"
 
@@ -50,6 +52,85 @@ Polygon Polygon::fromPoints(std::initializer_list<Vec2> points) {
     Polygon p;
     for (Vec2 v : points) p.vertices[p.count++] = v;
     return p;
+}
+
+namespace {
+
+// The hull's corners, counter-clockwise, by Andrew's monotone chain: the points sorted by x then
+// y, a lower chain left to right and an upper one back, each keeping only left turns.
+std::vector<Vec2> monotoneChain(std::vector<Vec2> points) {
+    std::sort(points.begin(), points.end(),
+              [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::vector<Vec2> hull;
+    const auto turnsLeft = [&](Vec2 next) {
+        const std::size_t n = hull.size();
+        return cross(hull[n - 1] - hull[n - 2], next - hull[n - 2]) > 0.0f;
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+        const std::size_t start = hull.size();
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const Vec2 p = pass == 0 ? points[k] : points[points.size() - 1 - k];
+            while (hull.size() >= start + 2 && !turnsLeft(p)) hull.pop_back();
+            hull.push_back(p);
+        }
+        hull.pop_back();  // the chain's last point starts the other chain
+    }
+    return hull;
+}
+
+// Drops what makeConvexPolygon would refuse: a corner within kLinearSlop of the next one, and a
+// corner within a tenth of the slop of the line through its neighbours, until neither is left.
+void cleanHull(std::vector<Vec2>& hull) {
+    bool changed = true;
+    while (changed && hull.size() >= 3) {
+        changed = false;
+        for (std::size_t i = 0; i < hull.size() && hull.size() >= 3; ++i) {
+            const Vec2 previous = hull[(i + hull.size() - 1) % hull.size()];
+            const Vec2 next = hull[(i + 1) % hull.size()];
+            const Vec2 edge = next - previous;
+            const float span = length(edge);
+            const bool merged = length(next - hull[i]) < kLinearSlop;
+            // How far the corner stands out of the line through its neighbours.
+            const bool onLine =
+                span > 0.0f && cross(hull[i] - previous, edge) / span < 0.1f * kLinearSlop;
+            if (merged || onLine) {
+                hull.erase(hull.begin() + static_cast<std::ptrdiff_t>(i));
+                changed = true;
+                break;
+            }
+        }
+    }
+}
+
+}  // namespace
+
+Polygon Polygon::convexHull(const Vec2* points, int count) {
+    const char* call = "Polygon::convexHull";
+    if (count < 3) fail(call, "needs at least 3 points (got " + std::to_string(count) + ")");
+    for (int i = 0; i < count; ++i) {
+        requireCoordinate(call, ("points[" + std::to_string(i) + "]").c_str(), points[i]);
+    }
+    std::vector<Vec2> hull = monotoneChain(std::vector<Vec2>(points, points + count));
+    cleanHull(hull);
+    if (hull.size() < 3) {
+        fail(call, "the points have no area: they lie on one line, or within kLinearSlop (" +
+                       formatFloat(kLinearSlop) + " m) of each other");
+    }
+    if (hull.size() > static_cast<std::size_t>(kMaxPolygonVertices)) {
+        fail(call, "the hull has " + std::to_string(hull.size()) +
+                       " corners, more than kMaxPolygonVertices (" +
+                       std::to_string(kMaxPolygonVertices) + "); simplify the points first");
+    }
+    Polygon polygon;
+    for (Vec2 v : hull) polygon.vertices[polygon.count++] = v;
+    ConvexPolygon checked;
+    const std::string problem = makeConvexPolygon(polygon, checked);
+    if (!problem.empty()) fail(call, "the hull is not a valid polygon: " + problem);
+    return polygon;
+}
+
+Polygon Polygon::convexHull(std::initializer_list<Vec2> points) {
+    return convexHull(points.begin(), static_cast<int>(points.size()));
 }
 
 namespace {

@@ -1,6 +1,11 @@
 // Mass properties against values worked out by hand.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -168,4 +173,61 @@ TEST(Mass, AShapeFarFromTheBodyOriginKeepsItsInertia) {
     for (int i = 0; i < 60; ++i) world.step(1.0f / 60.0f);
     EXPECT_TRUE(isFinite(world.bodyPosition(body)));
     EXPECT_NEAR(world.bodyAngularVelocity(body), 1.0f, 1e-3f);
+}
+
+// Polygon::convexHull: random clouds give a valid polygon that holds every point.
+TEST(ConvexHull, OfRandomCloudsIsValidAndHoldsEveryPoint) {
+    std::mt19937 random(7);
+    auto uniform = [&](float lo, float hi) {
+        return std::uniform_real_distribution<float>(lo, hi)(random);
+    };
+    int made = 0, tooManyCorners = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        std::vector<Vec2> cloud;
+        const int n = 3 + static_cast<int>(uniform(0.0f, 30.0f));
+        const Vec2 center{uniform(-100.0f, 100.0f), uniform(-100.0f, 100.0f)};
+        const float scale = uniform(0.05f, 3.0f);
+        for (int i = 0; i < n; ++i) {
+            cloud.push_back(center +
+                            Vec2{scale * uniform(-1.0f, 1.0f), scale * uniform(-1.0f, 1.0f)});
+        }
+        if (trial % 5 == 0) cloud.push_back(cloud.front());  // a repeated point
+        Polygon hull;
+        try {
+            hull = Polygon::convexHull(cloud.data(), static_cast<int>(cloud.size()));
+        } catch (const Error& e) {
+            // The only refusal a cloud of this kind may get: too many corners for a polygon.
+            EXPECT_NE(std::string(e.what()).find("more than kMaxPolygonVertices"),
+                      std::string::npos)
+                << e.what();
+            ++tooManyCorners;
+            continue;
+        }
+        ++made;
+        // Accepted as a shape as it is, and counter-clockwise.
+        EXPECT_GT(computeMass(hull, 1.0f).mass, 0.0f);
+        for (int i = 0; i < hull.count; ++i) {
+            const Vec2 a = hull.vertices[i], b = hull.vertices[(i + 1) % hull.count];
+            const Vec2 outward{b.y - a.y, a.x - b.x};
+            for (Vec2 p : cloud) {
+                // Every point inside or on the hull, up to the slop its cleaning may drop.
+                EXPECT_LE(dot(outward, p - a) / length(outward), kLinearSlop) << trial;
+            }
+        }
+    }
+    EXPECT_GT(made, 1000);
+    EXPECT_GT(tooManyCorners, 0);  // the big clouds do reach the limit
+}
+
+TEST(ConvexHull, RefusesCloudsWithoutAreaOrBadPoints) {
+    EXPECT_THROW(Polygon::convexHull({{0, 0}, {1, 0}}), Error);
+    EXPECT_THROW(Polygon::convexHull({{0, 0}, {1, 1}, {2, 2}, {3, 3}}), Error);    // on a line
+    EXPECT_THROW(Polygon::convexHull({{0, 0}, {0.001f, 0}, {0, 0.001f}}), Error);  // a speck
+    EXPECT_THROW(Polygon::convexHull({{0, 0}, {1, 0}, {std::nanf(""), 1}}), Error);
+    EXPECT_THROW(Polygon::convexHull({{0, 0}, {1, 0}, {0, 2e5f}}), Error);
+    // A square with points inside, on its edges and repeated comes back as the square.
+    const Polygon square = Polygon::convexHull(
+        {{0.5f, 0.5f}, {1, 0}, {0, 0}, {1, 1}, {0, 1}, {0.5f, 0}, {0, 0}, {1, 0.3f}});
+    ASSERT_EQ(square.count, 4);
+    EXPECT_NEAR(computeMass(square, 1.0f).mass, 1.0f, 1e-6f);
 }

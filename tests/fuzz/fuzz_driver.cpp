@@ -2175,6 +2175,23 @@ private:
     }
 
     void freeFunctions() {
+        if (random_.chance(0.2f)) {
+            // A cloud of points, some maybe bad: the hull is refused, or is a valid shape.
+            std::vector<Vec2> cloud;
+            bool bad = false;
+            const int n = random_.below(20);
+            const float scale = random_.chance(0.1f) ? 0.002f : 2.0f;
+            for (int i = 0; i < n; ++i) {
+                Arg<Vec2> p = values_->coordinate(scale);
+                bad = bad || p.bad;
+                cloud.push_back(p.value);
+            }
+            attempt("Polygon::convexHull", bad ? Verdict::Bad : Verdict::Unknown, [&] {
+                const Polygon hull = Polygon::convexHull(cloud.data(), n);
+                computeMass(hull, 1.0f);  // what it makes, createShape takes
+            });
+            return;
+        }
         switch (random_.below(4)) {
             case 0: {
                 // Not a structured binding: C++17 lambdas cannot capture one.
