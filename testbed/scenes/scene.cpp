@@ -101,6 +101,8 @@ const std::vector<SceneInfo>& allScenes() {
          buildOverlapRecovery},
         {"far_chain", "the chain 30 km from the origin, where floats are 2 mm apart",
          buildFarChain},
+        {"ramps", "balls and boxes down a segment ramp, over a bump and into a hanging chain",
+         buildRamps},
     };
     return scenes;
 }

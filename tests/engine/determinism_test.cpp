@@ -90,6 +90,7 @@ const RecordedHashes kRecorded[] = {
     {"heavy_stack",       {0x08c475b272262242ull, 0xcf8992d1c7ce371full, 0x6034900afcc6d710ull, 0x692b26b863ecc1adull, 0xaeafd31e373eab0eull, 0x14f09ea1d3196a6bull}},
     {"overlap_recovery",  {0xb1f33b4b74b3d82bull, 0xf3e51cf809fa54beull, 0x7014479612dcbd91ull, 0x61c2fc806591620cull, 0xb331f301df8d8f97ull, 0xc9fb20ce20d3015aull}},
     {"far_chain",         {0x81fb2025224fdea3ull, 0x71cbe8c9908acb6eull, 0xb35adbaea103c602ull, 0x2729620802baade1ull, 0xd1dc607b2ac3ed93ull, 0xac454c9b17b2d73bull}},
+    {"ramps",             {0xf096bdc60e24e01dull, 0xc487832dd7280297ull, 0x94348676d3349586ull, 0x9207c967b85896aeull, 0x95a36b4e690e6f24ull, 0x1b23d648e760c1ecull}},
 };
 // clang-format on
 
