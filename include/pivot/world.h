@@ -292,6 +292,13 @@ public:
     /// skin does not; a segment contains none), in the tree's order; the callback returns false
     /// to stop. What the testbed's drags use to pick the body under the pointer.
     void queryPoint(Vec2 point, const QueryFilter& filter, ShapeCallback callback) const;
+    /// Every shape the filter sees that overlaps a circle or polygon placed at `xf` (touching
+    /// counts; polygon and segment skins do not), in the tree's order; the callback returns
+    /// false to stop. The shape is checked as World::createShape checks it.
+    void queryShape(const Circle& circle, const Transform& xf, const QueryFilter& filter,
+                    ShapeCallback callback) const;
+    void queryShape(const Polygon& polygon, const Transform& xf, const QueryFilter& filter,
+                    ShapeCallback callback) const;
 
     // --- contacts ---------------------------------------------------------------------------
     // Every list the API returns (contacts, events, bodyIds, jointIds, bodyShapes) is a copy,

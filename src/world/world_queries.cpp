@@ -1,7 +1,9 @@
 // The World facade, part four: queries. Each walks the broad phase's tree (its fat boxes hold
 // every shape's current box) and tests the shapes it reaches exactly.
+#include <algorithm>
 #include <cmath>
 
+#include "collision/distance.h"
 #include "collision/ray_cast.h"
 #include "world/world_checks.h"
 #include "world/world_impl.h"
@@ -163,6 +165,77 @@ void World::queryPoint(Vec2 point, const QueryFilter& filter, ShapeCallback call
         }
         return callback(w.shapeId(index));
     });
+}
+
+namespace {
+
+// A shape as the distance routine sees it in a query: its core and, for a circle, its radius
+// (the skins of polygons and segments are not part of a query).
+DistanceProxy proxyOf(const Shape& shape) {
+    DistanceProxy proxy;
+    if (shape.type == ShapeType::Circle) {
+        proxy.count = 1;
+        proxy.vertices[0] = shape.circle.center;
+        proxy.radius = shape.circle.radius;
+        return proxy;
+    }
+    proxy.count = shape.polygon.count;
+    for (int i = 0; i < proxy.count; ++i) proxy.vertices[i] = shape.polygon.vertices[i];
+    return proxy;
+}
+
+AABB boxOf(const DistanceProxy& proxy, const Transform& xf) {
+    Vec2 lower = transformPoint(xf, proxy.vertices[0]);
+    Vec2 upper = lower;
+    for (int i = 1; i < proxy.count; ++i) {
+        const Vec2 v = transformPoint(xf, proxy.vertices[i]);
+        lower = {std::min(lower.x, v.x), std::min(lower.y, v.y)};
+        upper = {std::max(upper.x, v.x), std::max(upper.y, v.y)};
+    }
+    const Vec2 r{proxy.radius, proxy.radius};
+    return {lower - r, upper + r};
+}
+
+void queryOverlaps(const World::Impl& w, const DistanceProxy& query, const Transform& xf,
+                   const QueryFilter& filter, ShapeCallback callback) {
+    QueryScope scope(w);
+    const BroadPhase& broadPhase = w.contactManager.broadPhase();
+    broadPhase.tree().query(boxOf(query, xf), [&](std::int32_t proxy) {
+        const std::int32_t index = broadPhase.userData(proxy);
+        const Shape& shape = w.shapes[index];
+        if (!sees(filter, shape)) return true;
+        const DistanceResult d =
+            shapeDistance(query, xf, proxyOf(shape), w.bodies[shape.body].xf, true);
+        if (!d.overlap) return true;
+        return callback(w.shapeId(index));
+    });
+}
+
+}  // namespace
+
+void World::queryShape(const Circle& circle, const Transform& xf, const QueryFilter& filter,
+                       ShapeCallback callback) const {
+    const char* call = "World::queryShape";
+    checkCircle(call, circle);
+    checkTransform(call, xf);
+    DistanceProxy query;
+    query.count = 1;
+    query.vertices[0] = circle.center;
+    query.radius = circle.radius;
+    queryOverlaps(*impl_, query, xf, filter, callback);
+}
+
+void World::queryShape(const Polygon& polygon, const Transform& xf, const QueryFilter& filter,
+                       ShapeCallback callback) const {
+    const char* call = "World::queryShape";
+    ConvexPolygon checked;
+    const std::string problem = makeConvexPolygon(polygon, checked);
+    if (!problem.empty()) fail(call, problem);
+    checkTransform(call, xf);
+    DistanceProxy query;
+    query.count = checked.count;
+    for (int i = 0; i < checked.count; ++i) query.vertices[i] = checked.vertices[i];
+    queryOverlaps(*impl_, query, xf, filter, callback);
 }
 
 // --- one shape, outside any world -------------------------------------------------------------

@@ -146,7 +146,7 @@ TEST(ChurningContacts, StepWithoutAllocatingOnceWarm) {
 }
 
 // Queries allocate nothing either: a game may cast hundreds of rays a frame. A settled pyramid,
-// queried with rays (closest and every hit), boxes and points over it.
+// queried with rays (closest and every hit), boxes, points and shapes over it.
 TEST(Queries, AllocateNothing) {
     Scene scene = buildScene(*findScene("pyramid"), SceneOptions{});
     World& world = *scene.world;
@@ -169,6 +169,11 @@ TEST(Queries, AllocateNothing) {
             ++found;
             return true;
         });
+        world.queryShape(Polygon::box(1.0f, 0.5f), Transform{{x, 2.0f}, Rot(0.3f)}, QueryFilter{},
+                         [&](ShapeId) {
+                             ++found;
+                             return true;
+                         });
     }
     EXPECT_EQ(counter.allocations(), 0);
     EXPECT_GT(hits, 500);  // the queries did find things

@@ -390,6 +390,126 @@ TEST(WorldQueries, BadArgumentsAreRefused) {
     EXPECT_THROW(world.queryPoint({0.0f, inf}, {}, all), Error);
     EXPECT_THROW(world.castRayOnShape(ShapeId{}, {0.0f, 0.0f}, {1.0f, 0.0f}), Error);
     EXPECT_THROW(world.shapeAABB(ShapeId{}), Error);
+    const Transform xf{{0.0f, 0.0f}, Rot(0.0f)};
+    EXPECT_THROW(world.queryShape(Circle{{0.0f, 0.0f}, -1.0f}, xf, {}, all), Error);
+    EXPECT_THROW(world.queryShape(Polygon::fromPoints({{0, 0}, {1, 0}, {2, 0}}), xf, {}, all),
+                 Error);
+    EXPECT_THROW(
+        world.queryShape(Circle{{0.0f, 0.0f}, 1.0f}, Transform{{nan, 0.0f}, Rot(0.0f)}, {}, all),
+        Error);
     // A zero translation is a ray of no length: it hits nothing.
     EXPECT_FALSE(world.castRayClosest({-5.0f, 0.0f}, {0.0f, 0.0f}));
+}
+
+namespace {
+
+double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
+    const double ex = double(b.x) - a.x, ey = double(b.y) - a.y;
+    const double px = double(p.x) - a.x, py = double(p.y) - a.y;
+    const double t = std::clamp((px * ex + py * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+    return std::hypot(px - t * ex, py - t * ey);
+}
+
+// A convex outline in world coordinates, counter-clockwise (a segment: its two ends).
+std::vector<Vec2> outlineOf(const World& world, ShapeId shape) {
+    const Transform xf = world.bodyTransform(world.shapeBody(shape));
+    std::vector<Vec2> out;
+    if (world.shapeType(shape) == ShapeType::Segment) {
+        const Segment s = world.shapeSegment(shape);
+        return {transformPoint(xf, s.point1), transformPoint(xf, s.point2)};
+    }
+    const Polygon p = world.shapePolygon(shape);
+    for (int i = 0; i < p.count; ++i) out.push_back(transformPoint(xf, p.vertices[i]));
+    return out;
+}
+
+// Whether an edge normal of `a` separates it from `b` (exact for convex outlines; a two-point
+// outline's two "edges" give both normals of the segment).
+bool separates(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const Vec2 p = a[i], q = a[(i + 1) % a.size()];
+        const double nx = double(q.y) - p.y, ny = double(p.x) - q.x;
+        double nearest = 1e30;
+        for (Vec2 v : b) {
+            nearest = std::min(nearest, nx * (double(v.x) - p.x) + ny * (double(v.y) - p.y));
+        }
+        if (nearest > 1e-9) return true;
+    }
+    return false;
+}
+
+// Distance from a point to a convex outline (0 inside).
+double distanceTo(const std::vector<Vec2>& outline, Vec2 p) {
+    if (outline.size() > 2 && !separates(outline, {p})) return 0.0;
+    double best = 1e30;
+    for (std::size_t i = 0; i < outline.size(); ++i) {
+        best =
+            std::min(best, pointSegmentDistance(p, outline[i], outline[(i + 1) % outline.size()]));
+    }
+    return best;
+}
+
+}  // namespace
+
+TEST(WorldQueries, ShapeOverlapsAgreeWithBruteForce) {
+    RandomWorld r(5);
+    int found = 0, nearMisses = 0;
+    for (int round = 0; round < 3; ++round) {
+        r.churn();
+        const std::vector<ShapeId> shapes = r.allShapes();
+        for (int q = 0; q < 200; ++q) {
+            const Vec2 at{r.uniform(-35.0f, 35.0f), r.uniform(-3.0f, 35.0f)};
+            const float angle = r.uniform(-3.0f, 3.0f);
+            const bool circleQuery = q % 2 == 0;
+            const Circle circle{{0.0f, 0.0f}, r.uniform(0.2f, 3.0f)};
+            const Polygon box = Polygon::box(r.uniform(0.2f, 3.0f), r.uniform(0.2f, 3.0f));
+            const Transform xf{at, Rot(angle)};
+            std::vector<Vec2> boxOutline;
+            for (int i = 0; i < box.count; ++i)
+                boxOutline.push_back(transformPoint(xf, box.vertices[i]));
+
+            std::set<std::uint64_t> expected, margin;
+            for (ShapeId shape : shapes) {
+                // The brute-force answer, and whether it sits within 1e-4 m of changing.
+                double gap;  // > 0 apart, <= 0 overlapping (as a distance where one is known)
+                if (r.world.shapeType(shape) == ShapeType::Circle) {
+                    const Circle c = r.world.shapeCircle(shape);
+                    const Vec2 center =
+                        transformPoint(r.world.bodyTransform(r.world.shapeBody(shape)), c.center);
+                    gap = circleQuery ? double(length(center - at)) - circle.radius - c.radius
+                                      : distanceTo(boxOutline, center) - c.radius;
+                } else {
+                    const std::vector<Vec2> outline = outlineOf(r.world, shape);
+                    if (circleQuery) {
+                        gap = distanceTo(outline, at) - circle.radius;
+                    } else {
+                        const bool apart =
+                            separates(outline, boxOutline) || separates(boxOutline, outline);
+                        gap = apart ? 1.0 : -1.0;  // SAT decides; no distance needed
+                    }
+                }
+                if (std::abs(gap) < 1e-4) margin.insert(key(shape));
+                if (gap <= 0.0) expected.insert(key(shape));
+            }
+            std::set<std::uint64_t> got;
+            auto collect = [&](ShapeId shape) {
+                got.insert(key(shape));
+                return true;
+            };
+            if (circleQuery) {
+                r.world.queryShape(circle, xf, QueryFilter{}, collect);
+            } else {
+                r.world.queryShape(box, xf, QueryFilter{}, collect);
+            }
+            for (std::uint64_t k : margin) {  // round-off may tip a grazing shape either way
+                expected.erase(k);
+                got.erase(k);
+                ++nearMisses;
+            }
+            EXPECT_EQ(got, expected) << "query " << q << " round " << round;
+            found += static_cast<int>(got.size());
+        }
+    }
+    EXPECT_GT(found, 300);
+    EXPECT_LT(nearMisses, 5);
 }

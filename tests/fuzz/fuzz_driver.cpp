@@ -2149,6 +2149,19 @@ private:
                         return true;
                     });
                 });
+                {
+                    Arg<float> radius = values_->radius();
+                    attempt("World::queryShape", verdict(origin.bad || radius.bad), [&] {
+                        w.queryShape(Circle{{0.0f, 0.0f}, radius.value},
+                                     Transform{origin.value, Rot(0.5f)}, filter,
+                                     [&](ShapeId found) {
+                                         if (!w.isValid(found)) {
+                                             failure("queryShape reported a dead shape");
+                                         }
+                                         return true;
+                                     });
+                    });
+                }
                 if (!shape.bad) {
                     attempt("World::shapeAABB", Verdict::Valid, [&] {
                         const AABB box = w.shapeAABB(shape.value);
