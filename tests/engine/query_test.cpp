@@ -397,6 +397,10 @@ TEST(WorldQueries, BadArgumentsAreRefused) {
     EXPECT_THROW(
         world.queryShape(Circle{{0.0f, 0.0f}, 1.0f}, Transform{{nan, 0.0f}, Rot(0.0f)}, {}, all),
         Error);
+    EXPECT_THROW(world.castShape(Circle{{0.0f, 0.0f}, 1.0f}, xf, {inf, 0.0f}, {}, any), Error);
+    EXPECT_THROW(
+        world.castShapeClosest(Polygon::fromPoints({{0, 0}, {1, 0}, {2, 0}}), xf, {1.0f, 0.0f}),
+        Error);
     // A zero translation is a ray of no length: it hits nothing.
     EXPECT_FALSE(world.castRayClosest({-5.0f, 0.0f}, {0.0f, 0.0f}));
 }
@@ -512,4 +516,75 @@ TEST(WorldQueries, ShapeOverlapsAgreeWithBruteForce) {
     }
     EXPECT_GT(found, 300);
     EXPECT_LT(nearMisses, 5);
+}
+
+TEST(WorldQueries, ShapeCastsStopJustShortOfTheFirstShape) {
+    World world(WorldDef{{0.0f, 0.0f}});
+    BodyDef wallDef;
+    wallDef.position = {0.0f, 0.0f};
+    const ShapeId wall =
+        world.createShape(world.createBody(wallDef), ShapeDef{}, Polygon::box(1.0f, 3.0f));
+    const Transform start{{-5.0f, 0.5f}, Rot(0.0f)};
+    const auto hit = world.castShapeClosest(Circle{{0.0f, 0.0f}, 0.5f}, start, {10.0f, 0.0f});
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->shape, wall);
+    // The circle's edge travels 3.5 m to the wall's face at x = -1; it stops within the cast
+    // tolerance (a quarter of the slop) before it.
+    EXPECT_LE(hit->fraction, 0.35f);
+    EXPECT_GE(hit->fraction, 0.35f - 0.25f * kLinearSlop / 10.0f - 1e-6f);
+    EXPECT_NEAR(hit->normal.x, -1.0f, 1e-4f);
+    EXPECT_NEAR(hit->point.x, -1.0f, 1e-4f);
+    // A box cast turned by 45 degrees: its corner leads, at sqrt(2) / 2 from its centre.
+    const Transform turned{{-5.0f, 0.0f}, Rot(0.25f * kPi)};
+    const auto corner = world.castShapeClosest(Polygon::box(0.5f, 0.5f), turned, {10.0f, 0.0f});
+    ASSERT_TRUE(corner);
+    EXPECT_NEAR(corner->fraction, (4.0f - std::sqrt(0.5f)) / 10.0f, 0.25f * kLinearSlop / 10.0f);
+    // Missing, moving away, and starting inside.
+    EXPECT_FALSE(world.castShapeClosest(Circle{{0.0f, 0.0f}, 0.5f}, start, {0.0f, 10.0f}));
+    EXPECT_FALSE(world.castShapeClosest(Circle{{0.0f, 0.0f}, 0.5f}, start, {-10.0f, 0.0f}));
+    const auto inside = world.castShapeClosest(Circle{{0.0f, 0.0f}, 0.5f},
+                                               Transform{{0.0f, 0.0f}, Rot(0.0f)}, {1.0f, 0.0f});
+    ASSERT_TRUE(inside);
+    EXPECT_EQ(inside->fraction, 0.0f);
+    EXPECT_EQ(inside->normal, (Vec2{0.0f, 0.0f}));
+}
+
+TEST(WorldQueries, ShapeCastsAgreeWithOverlapQueriesAlongThePath) {
+    // The first hit is where the moving shape starts to touch: just before it, it overlaps
+    // nothing the filter sees; just past it, it overlaps the shape hit.
+    RandomWorld r(9);
+    int hits = 0;
+    for (int round = 0; round < 2; ++round) {
+        r.churn();
+        for (int q = 0; q < 150; ++q) {
+            const Vec2 at{r.uniform(-35.0f, 35.0f), r.uniform(-3.0f, 35.0f)};
+            const Transform xf{at, Rot(r.uniform(-3.0f, 3.0f))};
+            const Vec2 translation{r.uniform(-15.0f, 15.0f), r.uniform(-15.0f, 15.0f)};
+            const Polygon box = Polygon::box(r.uniform(0.2f, 1.0f), r.uniform(0.2f, 1.0f));
+            auto overlapsAt = [&](float fraction, ShapeId only) {
+                bool any = false;
+                r.world.queryShape(box, Transform{at + fraction * translation, xf.q}, {},
+                                   [&](ShapeId s) {
+                                       if (only.isNull() || s == only) any = true;
+                                       return !any;
+                                   });
+                return any;
+            };
+            if (overlapsAt(0.0f, ShapeId{})) continue;  // starts touching: not this test's case
+            const auto hit = r.world.castShapeClosest(box, xf, translation);
+            if (!hit) {
+                for (int k = 0; k <= 20; ++k) EXPECT_FALSE(overlapsAt(k / 20.0f, ShapeId{})) << q;
+                continue;
+            }
+            ++hits;
+            for (int k = 0; k < 20; ++k) {
+                EXPECT_FALSE(overlapsAt(hit->fraction * k / 20.0f, ShapeId{})) << q;
+            }
+            const float past = hit->fraction + 2.0f * kLinearSlop / length(translation);
+            if (past <= 1.0f) {
+                EXPECT_TRUE(overlapsAt(past, hit->shape)) << q;
+            }
+        }
+    }
+    EXPECT_GT(hits, 50);  // about 30% of the casts hit something
 }

@@ -2151,6 +2151,18 @@ private:
                 });
                 {
                     Arg<float> radius = values_->radius();
+                    attempt(
+                        "World::castShapeClosest",
+                        verdict(origin.bad || radius.bad || translation.bad), [&] {
+                            if (auto hit = w.castShapeClosest(Circle{{0.0f, 0.0f}, radius.value},
+                                                              Transform{origin.value, Rot(0.5f)},
+                                                              translation.value, filter)) {
+                                if (!isFinite(hit->point) || !(hit->fraction >= 0.0f) ||
+                                    !(hit->fraction <= 1.0f)) {
+                                    failure("castShapeClosest gave a hit off its path");
+                                }
+                            }
+                        });
                     attempt("World::queryShape", verdict(origin.bad || radius.bad), [&] {
                         w.queryShape(Circle{{0.0f, 0.0f}, radius.value},
                                      Transform{origin.value, Rot(0.5f)}, filter,
