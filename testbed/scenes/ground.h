@@ -1,5 +1,6 @@
 // The static ground most scenes stand on: an 80 m wide slab whose top face is y = 0 (Box2D's
-// testbed uses an edge there; pivot2d has no edge shape, and the slab's top is the same line).
+// testbed uses an edge there; the scenes were written before pivot2d had segments, and keep the
+// slab, whose top is the same line, so that their recorded results stay comparable).
 // Its friction is Box2D's default fixture friction, 0.2, as on the testbed ground the
 // reference scenes copy; contacts mix it with the other shape's (sqrt of the product).
 #pragma once
