@@ -1,7 +1,7 @@
-// Asking the world what is where: ray casts, box overlaps and point queries, on one shape or on
-// every shape of a World (World::castRay, castRayClosest, queryAABB, queryPoint). The world's
-// queries walk the broad phase's tree, so each costs about log(shapes) plus what it finds, and
-// none allocates.
+// Asking the world what is where: ray casts, box, point and shape overlap queries and shape
+// casts, on one shape or on every shape of a World (World::castRay, castRayClosest, queryAABB,
+// queryPoint, queryShape, castShape, castShapeClosest). The world's queries walk the broad
+// phase's tree, so each costs about log(shapes) plus what it finds, and none allocates.
 #pragma once
 
 #include <cstdint>
@@ -24,8 +24,9 @@ struct QueryFilter {
     std::uint16_t maskBits = 0xFFFF;
 };
 
-/// Where a ray first enters a shape. A ray from origin through origin + translation; a ray that
-/// starts inside a shape does not hit it (it never enters).
+/// Where a ray first enters a shape (or a cast shape first touches one: World::castShape). A ray
+/// from origin through origin + translation; a ray that starts inside a shape does not hit it
+/// (it never enters).
 struct RayHit {
     ShapeId shape;          ///< the shape hit (null from the single-shape rayCast functions)
     Vec2 point;             ///< m, in world coordinates
