@@ -1,0 +1,64 @@
+// What the World's query files share: the filter rule, the argument checks, and the scope that
+// marks a query under way (World::Impl::requireNoQuery).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "collision/geometry.h"
+#include "collision/ray_cast.h"
+#include "world/world_checks.h"
+#include "world/world_impl.h"
+
+namespace pivot::queries {
+
+inline bool sees(const QueryFilter& filter, const Shape& shape) {
+    return (shape.filter.categoryBits & filter.maskBits) != 0 &&
+           (shape.filter.maskBits & filter.categoryBits) != 0;
+}
+
+inline void checkTransform(const char* call, const Transform& xf) {
+    requireCoordinate(call, "xf.p", xf.p);
+    requireFinite(call, "xf.q.c", xf.q.c);
+    requireFinite(call, "xf.q.s", xf.q.s);
+}
+
+inline void checkRay(const char* call, Vec2 origin, Vec2 translation) {
+    requireCoordinate(call, "origin", origin);
+    // The end point may lie outside the world's limits (a long line of sight), but the
+    // arithmetic must stay finite.
+    requireMagnitude(call, "translation", translation);
+}
+
+inline ConvexPolygon checkedPolygon(const char* call, const Polygon& polygon) {
+    ConvexPolygon checked;
+    const std::string problem = makeConvexPolygon(polygon, checked);
+    if (!problem.empty()) fail(call, problem);
+    return checked;
+}
+
+inline ConvexPolygon checkedSegment(const char* call, const Segment& segment) {
+    ConvexPolygon checked;
+    const std::string problem = makeSegmentPolygon(segment, checked);
+    if (!problem.empty()) fail(call, problem);
+    return checked;
+}
+
+inline std::optional<RayHit> asHit(ShapeId shape, const std::optional<RayEntry>& entry) {
+    if (!entry) return std::nullopt;
+    return RayHit{shape, entry->point, entry->normal, entry->fraction};
+}
+
+/// Counts a query under way for as long as it lives (see World::Impl::requireNoQuery).
+class QueryScope {
+public:
+    explicit QueryScope(const World::Impl& w) : w_(w) { ++w_.queryDepth; }
+    ~QueryScope() { --w_.queryDepth; }
+    QueryScope(const QueryScope&) = delete;
+    QueryScope& operator=(const QueryScope&) = delete;
+
+private:
+    const World::Impl& w_;
+};
+
+}  // namespace pivot::queries

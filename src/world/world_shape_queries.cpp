@@ -1,0 +1,161 @@
+// The World facade, part five: shapes as queries. queryShape finds what a circle or polygon placed
+// anywhere overlaps, castShape where one moving in a straight line first touches something; both
+// walk the broad phase's tree and measure with GJK (collision/distance.h, shape_cast.h).
+#include <algorithm>
+
+#include "collision/distance.h"
+#include "collision/shape_cast.h"
+#include "world/query_support.h"
+
+namespace pivot {
+
+namespace {
+
+using namespace queries;
+
+// A shape as the distance routine sees it in a query: its core and, for a circle, its radius
+// (the skins of polygons and segments are not part of a query).
+DistanceProxy proxyOf(const Shape& shape) {
+    DistanceProxy proxy;
+    if (shape.type == ShapeType::Circle) {
+        proxy.count = 1;
+        proxy.vertices[0] = shape.circle.center;
+        proxy.radius = shape.circle.radius;
+        return proxy;
+    }
+    proxy.count = shape.polygon.count;
+    for (int i = 0; i < proxy.count; ++i) proxy.vertices[i] = shape.polygon.vertices[i];
+    return proxy;
+}
+
+AABB boxOf(const DistanceProxy& proxy, const Transform& xf) {
+    Vec2 lower = transformPoint(xf, proxy.vertices[0]);
+    Vec2 upper = lower;
+    for (int i = 1; i < proxy.count; ++i) {
+        const Vec2 v = transformPoint(xf, proxy.vertices[i]);
+        lower = {std::min(lower.x, v.x), std::min(lower.y, v.y)};
+        upper = {std::max(upper.x, v.x), std::max(upper.y, v.y)};
+    }
+    const Vec2 r{proxy.radius, proxy.radius};
+    return {lower - r, upper + r};
+}
+
+void queryOverlaps(const World::Impl& w, const DistanceProxy& query, const Transform& xf,
+                   const QueryFilter& filter, ShapeCallback callback) {
+    QueryScope scope(w);
+    const BroadPhase& broadPhase = w.contactManager.broadPhase();
+    broadPhase.tree().query(boxOf(query, xf), [&](std::int32_t proxy) {
+        const std::int32_t index = broadPhase.userData(proxy);
+        const Shape& shape = w.shapes[index];
+        if (!sees(filter, shape)) return true;
+        const DistanceResult d =
+            shapeDistance(query, xf, proxyOf(shape), w.bodies[shape.body].xf, true);
+        if (!d.overlap) return true;
+        return callback(w.shapeId(index));
+    });
+}
+
+}  // namespace
+
+namespace {
+
+DistanceProxy checkedProxy(const char* call, const Circle& circle) {
+    checkCircle(call, circle);
+    DistanceProxy proxy;
+    proxy.count = 1;
+    proxy.vertices[0] = circle.center;
+    proxy.radius = circle.radius;
+    return proxy;
+}
+
+DistanceProxy checkedProxy(const char* call, const Polygon& polygon) {
+    const ConvexPolygon checked = checkedPolygon(call, polygon);
+    DistanceProxy proxy;
+    proxy.count = checked.count;
+    for (int i = 0; i < checked.count; ++i) proxy.vertices[i] = checked.vertices[i];
+    return proxy;
+}
+
+void castShapeNamed(const char* call, const World::Impl& w, const DistanceProxy& mover,
+                    const Transform& xf, Vec2 translation, const QueryFilter& filter,
+                    RayCallback callback) {
+    checkTransform(call, xf);
+    requireMagnitude(call, "translation", translation);
+    // Every shape whose box meets the box swept by the mover; the casts then clip as they go.
+    const AABB start = boxOf(mover, xf);
+    const AABB end = boxOf(mover, Transform{xf.p + translation, xf.q});
+    float maxFraction = 1.0f;
+    QueryScope scope(w);
+    const BroadPhase& broadPhase = w.contactManager.broadPhase();
+    broadPhase.tree().query(combine(start, end), [&](std::int32_t proxy) {
+        const std::int32_t index = broadPhase.userData(proxy);
+        const Shape& shape = w.shapes[index];
+        if (!sees(filter, shape)) return true;
+        const std::optional<CastEntry> entry =
+            castShape(mover, xf, translation, proxyOf(shape), w.bodies[shape.body].xf, maxFraction);
+        if (!entry) return true;
+        const float answer =
+            callback(RayHit{w.shapeId(index), entry->point, entry->normal, entry->fraction});
+        if (answer < 0.0f) return true;      // ignore this shape
+        if (!(answer > 0.0f)) return false;  // 0 or NaN: stop
+        maxFraction = std::min(maxFraction, answer);
+        return true;
+    });
+}
+
+template <typename Geometry>
+std::optional<RayHit> castShapeClosestNamed(const char* call, const World::Impl& w,
+                                            const Geometry& geometry, const Transform& xf,
+                                            Vec2 translation, const QueryFilter& filter) {
+    std::optional<RayHit> closest;
+    castShapeNamed(call, w, checkedProxy(call, geometry), xf, translation, filter,
+                   [&](const RayHit& hit) {
+                       if (!closest || hit.fraction < closest->fraction) closest = hit;
+                       return hit.fraction;  // only closer hits from here on (0 stops)
+                   });
+    return closest;
+}
+
+}  // namespace
+
+void World::castShape(const Circle& circle, const Transform& xf, Vec2 translation,
+                      const QueryFilter& filter, RayCallback callback) const {
+    const char* call = "World::castShape";
+    castShapeNamed(call, *impl_, checkedProxy(call, circle), xf, translation, filter, callback);
+}
+
+void World::castShape(const Polygon& polygon, const Transform& xf, Vec2 translation,
+                      const QueryFilter& filter, RayCallback callback) const {
+    const char* call = "World::castShape";
+    castShapeNamed(call, *impl_, checkedProxy(call, polygon), xf, translation, filter, callback);
+}
+
+std::optional<RayHit> World::castShapeClosest(const Circle& circle, const Transform& xf,
+                                              Vec2 translation, const QueryFilter& filter) const {
+    return castShapeClosestNamed("World::castShapeClosest", *impl_, circle, xf, translation,
+                                 filter);
+}
+
+std::optional<RayHit> World::castShapeClosest(const Polygon& polygon, const Transform& xf,
+                                              Vec2 translation, const QueryFilter& filter) const {
+    return castShapeClosestNamed("World::castShapeClosest", *impl_, polygon, xf, translation,
+                                 filter);
+}
+
+void World::queryShape(const Circle& circle, const Transform& xf, const QueryFilter& filter,
+                       ShapeCallback callback) const {
+    const char* call = "World::queryShape";
+    const DistanceProxy query = checkedProxy(call, circle);
+    checkTransform(call, xf);
+    queryOverlaps(*impl_, query, xf, filter, callback);
+}
+
+void World::queryShape(const Polygon& polygon, const Transform& xf, const QueryFilter& filter,
+                       ShapeCallback callback) const {
+    const char* call = "World::queryShape";
+    const DistanceProxy query = checkedProxy(call, polygon);
+    checkTransform(call, xf);
+    queryOverlaps(*impl_, query, xf, filter, callback);
+}
+
+}  // namespace pivot
