@@ -129,8 +129,9 @@ struct RandomWorld {
             world.createShape(body, shapeDef,
                               Circle{{uniform(-0.5f, 0.5f), 0.0f}, uniform(0.2f, 1.5f)});
         } else if (shapeKind == 1) {
-            world.createShape(body, shapeDef,
-                              Polygon::box(uniform(0.1f, 2.0f), uniform(0.1f, 2.0f)));
+            const float halfWidth = uniform(0.1f, 2.0f);   // one draw per statement: the
+            const float halfHeight = uniform(0.1f, 2.0f);  // same worlds with any compiler
+            world.createShape(body, shapeDef, Polygon::box(halfWidth, halfHeight));
         } else {
             // Points on a circle at increasing angles: always convex.
             Polygon polygon;
@@ -154,8 +155,8 @@ struct RandomWorld {
         }
         for (int i = 0; i < 10; ++i) addBody();
         // A teleport between steps: the queries must see the body where it is now.
-        world.setBodyTransform(bodies.front(), {uniform(-20.0f, 20.0f), uniform(0.0f, 20.0f)},
-                               uniform(-3.0f, 3.0f));
+        const Vec2 to{uniform(-20.0f, 20.0f), uniform(0.0f, 20.0f)};
+        world.setBodyTransform(bodies.front(), to, uniform(-3.0f, 3.0f));
     }
 
     std::vector<ShapeId> allShapes() const {
@@ -466,7 +467,8 @@ TEST(WorldQueries, ShapeOverlapsAgreeWithBruteForce) {
             const float angle = r.uniform(-3.0f, 3.0f);
             const bool circleQuery = q % 2 == 0;
             const Circle circle{{0.0f, 0.0f}, r.uniform(0.2f, 3.0f)};
-            const Polygon box = Polygon::box(r.uniform(0.2f, 3.0f), r.uniform(0.2f, 3.0f));
+            const float halfWidth = r.uniform(0.2f, 3.0f);
+            const Polygon box = Polygon::box(halfWidth, r.uniform(0.2f, 3.0f));
             const Transform xf{at, Rot(angle)};
             std::vector<Vec2> boxOutline;
             for (int i = 0; i < box.count; ++i)
@@ -560,7 +562,8 @@ TEST(WorldQueries, ShapeCastsAgreeWithOverlapQueriesAlongThePath) {
             const Vec2 at{r.uniform(-35.0f, 35.0f), r.uniform(-3.0f, 35.0f)};
             const Transform xf{at, Rot(r.uniform(-3.0f, 3.0f))};
             const Vec2 translation{r.uniform(-15.0f, 15.0f), r.uniform(-15.0f, 15.0f)};
-            const Polygon box = Polygon::box(r.uniform(0.2f, 1.0f), r.uniform(0.2f, 1.0f));
+            const float halfWidth = r.uniform(0.2f, 1.0f);
+            const Polygon box = Polygon::box(halfWidth, r.uniform(0.2f, 1.0f));
             auto overlapsAt = [&](float fraction, ShapeId only) {
                 bool any = false;
                 r.world.queryShape(box, Transform{at + fraction * translation, xf.q}, {},

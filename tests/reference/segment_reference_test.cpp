@@ -7,11 +7,13 @@
 // So what is compared is what the contact solver sees, in world terms:
 //  - against a circle: the number of points, the normal (within 1e-4: see kNormalTolerance),
 //    the point and its separation (within 1e-5 m);
-//  - against a polygon: whether they touch; the normal, which may differ only where the two
-//    routines' rules for choosing the reference face disagree near a tie (both normals must
-//    then separate the shapes by nearly the same distance, and such cases stay under 5%); and
-//    the deepest point's separation, which may differ only where pivot2d keeps a clipped point
-//    up to the two skins past a face's end (never shallower, and deeper by at most the skins).
+//  - against a polygon: whether they touch (except, rarely, where the cores are apart within
+//    the two skins and the routines' treatments of the skins' rounded corners part); the normal,
+//    which may differ only where the two routines' rules for choosing the reference face disagree
+//    near a tie (both normals must then separate the shapes by nearly the same distance, and such
+//    cases stay under 5%); and the deepest point's separation, which may differ only where pivot2d
+//    keeps a clipped point up to the two skins past a face's end (never shallower, and deeper by at
+//    most the skins).
 // Box2D's own edge routines, needed for one-sided chain segments with ghost vertices, are the
 // next step (issue 14); when pivot2d has them, this comparison becomes bit for bit.
 #include <box2d/box2d.h>
@@ -20,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "collision/geometry.h"
 #include "collision/manifold.h"
@@ -99,6 +102,50 @@ double axisSeparation(Vec2 n, const b2EdgeShape& edge, const b2Transform& xfA,
     return nearestB - furthestA;
 }
 
+double pointSegment(double px, double py, b2Vec2 a, b2Vec2 b) {
+    const double ex = double(b.x) - a.x, ey = double(b.y) - a.y;
+    const double qx = px - a.x, qy = py - a.y;
+    const double t = std::clamp((qx * ex + qy * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+    return std::hypot(qx - t * ex, qy - t * ey);
+}
+
+// The distance between the segment's and the polygon's cores (skins left out), in double
+// precision: 0 when no edge normal of either separates them, else the smallest distance from an
+// end or corner of one to an edge of the other.
+double coreDistance(const b2EdgeShape& edge, const b2Transform& xfA, const b2PolygonShape& polygon,
+                    const b2Transform& xfB) {
+    const b2Vec2 s1 = b2Mul(xfA, edge.m_vertex1), s2 = b2Mul(xfA, edge.m_vertex2);
+    std::vector<b2Vec2> corners;
+    for (int i = 0; i < polygon.m_count; ++i) corners.push_back(b2Mul(xfB, polygon.m_vertices[i]));
+    auto separatedAlong = [&](double nx, double ny, double offset, const std::vector<b2Vec2>& pts) {
+        for (const b2Vec2& p : pts) {
+            if (nx * p.x + ny * p.y <= offset) return false;
+        }
+        return true;
+    };
+    bool separated = false;
+    const double ex = double(s2.x) - s1.x, ey = double(s2.y) - s1.y;
+    for (double sign : {1.0, -1.0}) {  // the segment's two faces
+        const double nx = sign * ey, ny = -sign * ex;
+        separated = separated || separatedAlong(nx, ny, nx * s1.x + ny * s1.y, corners);
+    }
+    for (std::size_t i = 0; i < corners.size(); ++i) {  // the polygon's faces
+        const b2Vec2 p = corners[i], q = corners[(i + 1) % corners.size()];
+        const double nx = double(q.y) - p.y, ny = double(p.x) - q.x;
+        separated = separated || separatedAlong(nx, ny, nx * p.x + ny * p.y, {s1, s2});
+    }
+    if (!separated) return 0.0;
+    double best = 1e30;
+    for (const b2Vec2& p : corners) best = std::min(best, pointSegment(p.x, p.y, s1, s2));
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        for (const b2Vec2& e : {s1, s2}) {
+            best = std::min(best,
+                            pointSegment(e.x, e.y, corners[i], corners[(i + 1) % corners.size()]));
+        }
+    }
+    return best;
+}
+
 }  // namespace
 
 TEST(SegmentReference, AgainstACircleAsBox2dEdges) {
@@ -106,17 +153,24 @@ TEST(SegmentReference, AgainstACircleAsBox2dEdges) {
     Counts counts;
     for (int c = 0; c < 20000; ++c) {
         b2EdgeShape edge;
+        // One draw per statement: the order in which function arguments are evaluated is
+        // unspecified, and a seed must give the same cases with any compiler.
         const float length = randomIn(rng, 0.2f, 4.0f);
-        edge.SetTwoSided(b2Vec2(-0.5f * length, randomIn(rng, -0.3f, 0.3f)),
-                         b2Vec2(0.5f * length, randomIn(rng, -0.3f, 0.3f)));
+        const float y1 = randomIn(rng, -0.3f, 0.3f);
+        const float y2 = randomIn(rng, -0.3f, 0.3f);
+        edge.SetTwoSided(b2Vec2(-0.5f * length, y1), b2Vec2(0.5f * length, y2));
         b2CircleShape circle;
         circle.m_radius = randomIn(rng, 0.05f, 1.0f);
         b2Transform bxfA, bxfB;
-        bxfA.Set(b2Vec2(randomIn(rng, -5, 5), randomIn(rng, -5, 5)), randomIn(rng, -kPi, kPi));
+        const float ax = randomIn(rng, -5, 5);
+        const float ay = randomIn(rng, -5, 5);
+        const float angleA = randomIn(rng, -kPi, kPi);
+        bxfA.Set(b2Vec2(ax, ay), angleA);
         // Around the edge, near its line and its ends: inside, touching and just apart.
         const float along = randomIn(rng, -0.6f, 0.6f) * length;
         const float across = randomIn(rng, -1.0f, 1.0f) * (circle.m_radius + 0.05f);
-        bxfB.Set(b2Mul(bxfA, b2Vec2(along, across)), randomIn(rng, -kPi, kPi));
+        const float angleB = randomIn(rng, -kPi, kPi);
+        bxfB.Set(b2Mul(bxfA, b2Vec2(along, across)), angleB);
 
         b2Manifold theirs;
         b2CollideEdgeAndCircle(&theirs, &edge, bxfA, &circle, bxfB);
@@ -145,18 +199,25 @@ TEST(SegmentReference, AgainstAPolygonAsBox2dEdges) {
     int disagreements = 0, otherNormal = 0, otherDepth = 0;
     for (int c = 0; c < 20000; ++c) {
         b2EdgeShape edge;
+        // One draw per statement: the order in which function arguments are evaluated is
+        // unspecified, and a seed must give the same cases with any compiler.
         const float length = randomIn(rng, 0.2f, 4.0f);
-        edge.SetTwoSided(b2Vec2(-0.5f * length, randomIn(rng, -0.3f, 0.3f)),
-                         b2Vec2(0.5f * length, randomIn(rng, -0.3f, 0.3f)));
+        const float y1 = randomIn(rng, -0.3f, 0.3f);
+        const float y2 = randomIn(rng, -0.3f, 0.3f);
+        edge.SetTwoSided(b2Vec2(-0.5f * length, y1), b2Vec2(0.5f * length, y2));
         b2PolygonShape box;
         const float hx = randomIn(rng, 0.1f, 1.5f);
         const float hy = randomIn(rng, 0.1f, 1.5f);
         box.SetAsBox(hx, hy);
         b2Transform bxfA, bxfB;
-        bxfA.Set(b2Vec2(randomIn(rng, -5, 5), randomIn(rng, -5, 5)), randomIn(rng, -kPi, kPi));
+        const float ax = randomIn(rng, -5, 5);
+        const float ay = randomIn(rng, -5, 5);
+        const float angleA = randomIn(rng, -kPi, kPi);
+        bxfA.Set(b2Vec2(ax, ay), angleA);
         const float along = randomIn(rng, -0.6f, 0.6f) * length;
         const float across = randomIn(rng, -1.0f, 1.0f) * (std::max(hx, hy) + 0.05f);
-        bxfB.Set(b2Mul(bxfA, b2Vec2(along, across)), randomIn(rng, -kPi, kPi));
+        const float angleB = randomIn(rng, -kPi, kPi);
+        bxfB.Set(b2Mul(bxfA, b2Vec2(along, across)), angleB);
 
         b2Manifold theirs;
         b2CollideEdgeAndPolygon(&theirs, &edge, bxfA, &box, bxfB);
@@ -178,9 +239,13 @@ TEST(SegmentReference, AgainstAPolygonAsBox2dEdges) {
         // skins along the face. What must agree: whether the shapes touch, the normal, and the
         // deepest point's separation (the penetration the solver removes).
         if ((ours.pointCount > 0) != (theirs.pointCount > 0)) {
+            // Only where the cores are apart, within the two skins, where the routines'
+            // treatments of the skins' rounded corners part: overlapping cores touch in both.
             ++disagreements;
-            ADD_FAILURE() << "case " << c << ": " << ours.pointCount << " points against "
-                          << theirs.pointCount;
+            const double cores = coreDistance(edge, bxfA, box, bxfB);
+            EXPECT_GT(cores, 0.0) << "case " << c << ": " << ours.pointCount << " points against "
+                                  << theirs.pointCount;
+            EXPECT_LE(cores, 2.0 * kPolygonRadius + 1e-6) << "case " << c;
             continue;
         }
         if (ours.pointCount == 0) continue;
@@ -229,5 +294,6 @@ TEST(SegmentReference, AgainstAPolygonAsBox2dEdges) {
         "another normal, %d with another depth, largest %.3g m\n",
         counts.compared, counts.withPoints, disagreements, otherNormal, otherDepth, counts.largest);
     EXPECT_GT(counts.withPoints, counts.compared / 4);
-    EXPECT_LT(otherNormal, counts.withPoints / 20);  // near ties stay rare (2.7% at this seed)
+    EXPECT_LT(otherNormal, counts.withPoints / 20);    // near ties stay rare (2.7% at this seed)
+    EXPECT_LT(disagreements, counts.compared / 1000);  // and touching in one only, rarer still
 }
