@@ -61,4 +61,18 @@ private:
     const World::Impl& w_;
 };
 
+/// Walks the shapes whose fat boxes overlap `box` and that the filter sees, as the query scope
+/// requires: visit(index, shape) returns false to stop.
+template <typename Visit>
+void forEachCandidate(const World::Impl& w, const AABB& box, const QueryFilter& filter,
+                      Visit&& visit) {
+    QueryScope scope(w);
+    const BroadPhase& broadPhase = w.contactManager.broadPhase();
+    broadPhase.tree().query(box, [&](std::int32_t proxy) {
+        const std::int32_t index = broadPhase.userData(proxy);
+        const Shape& shape = w.shapes[index];
+        return !sees(filter, shape) || visit(index, shape);
+    });
+}
+
 }  // namespace pivot::queries

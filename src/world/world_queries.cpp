@@ -111,12 +111,8 @@ void World::queryAABB(const AABB& box, const QueryFilter& filter, ShapeCallback 
         fail(call, "box.lower must be <= box.upper in x and y (got " + formatVec2(box.lower) +
                        " and " + formatVec2(box.upper) + ")");
     }
-    QueryScope scope(w);
-    w.contactManager.broadPhase().tree().query(box, [&](std::int32_t proxy) {
-        const std::int32_t index = w.contactManager.broadPhase().userData(proxy);
-        const Shape& shape = w.shapes[index];
-        if (!sees(filter, shape) || !overlaps(shape.box, box)) return true;
-        return callback(w.shapeId(index));
+    forEachCandidate(w, box, filter, [&](std::int32_t index, const Shape& shape) {
+        return !overlaps(shape.box, box) || callback(w.shapeId(index));
     });
 }
 
@@ -124,14 +120,8 @@ void World::queryPoint(Vec2 point, const QueryFilter& filter, ShapeCallback call
     const char* call = "World::queryPoint";
     const Impl& w = *impl_;
     requireCoordinate(call, "point", point);
-    QueryScope scope(w);
-    w.contactManager.broadPhase().tree().query(AABB{point, point}, [&](std::int32_t proxy) {
-        const std::int32_t index = w.contactManager.broadPhase().userData(proxy);
-        const Shape& shape = w.shapes[index];
-        if (!sees(filter, shape) || !shapeContains(shape, w.bodies[shape.body].xf, point)) {
-            return true;
-        }
-        return callback(w.shapeId(index));
+    forEachCandidate(w, AABB{point, point}, filter, [&](std::int32_t index, const Shape& shape) {
+        return !shapeContains(shape, w.bodies[shape.body].xf, point) || callback(w.shapeId(index));
     });
 }
 

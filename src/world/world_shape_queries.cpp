@@ -13,19 +13,25 @@ namespace {
 
 using namespace queries;
 
-// A shape as the distance routine sees it in a query: its core and, for a circle, its radius
+// Shapes as the distance routine sees them in a query: the core and, for a circle, its radius
 // (the skins of polygons and segments are not part of a query).
-DistanceProxy proxyOf(const Shape& shape) {
+DistanceProxy proxyOf(const Circle& circle) {
     DistanceProxy proxy;
-    if (shape.type == ShapeType::Circle) {
-        proxy.count = 1;
-        proxy.vertices[0] = shape.circle.center;
-        proxy.radius = shape.circle.radius;
-        return proxy;
-    }
-    proxy.count = shape.polygon.count;
-    for (int i = 0; i < proxy.count; ++i) proxy.vertices[i] = shape.polygon.vertices[i];
+    proxy.count = 1;
+    proxy.vertices[0] = circle.center;
+    proxy.radius = circle.radius;
     return proxy;
+}
+
+DistanceProxy proxyOf(const ConvexPolygon& polygon) {
+    DistanceProxy proxy;
+    proxy.count = polygon.count;
+    for (int i = 0; i < proxy.count; ++i) proxy.vertices[i] = polygon.vertices[i];
+    return proxy;
+}
+
+DistanceProxy proxyOf(const Shape& shape) {
+    return shape.type == ShapeType::Circle ? proxyOf(shape.circle) : proxyOf(shape.polygon);
 }
 
 AABB boxOf(const DistanceProxy& proxy, const Transform& xf) {
@@ -42,16 +48,10 @@ AABB boxOf(const DistanceProxy& proxy, const Transform& xf) {
 
 void queryOverlaps(const World::Impl& w, const DistanceProxy& query, const Transform& xf,
                    const QueryFilter& filter, ShapeCallback callback) {
-    QueryScope scope(w);
-    const BroadPhase& broadPhase = w.contactManager.broadPhase();
-    broadPhase.tree().query(boxOf(query, xf), [&](std::int32_t proxy) {
-        const std::int32_t index = broadPhase.userData(proxy);
-        const Shape& shape = w.shapes[index];
-        if (!sees(filter, shape)) return true;
+    forEachCandidate(w, boxOf(query, xf), filter, [&](std::int32_t index, const Shape& shape) {
         const DistanceResult d =
             shapeDistance(query, xf, proxyOf(shape), w.bodies[shape.body].xf, true);
-        if (!d.overlap) return true;
-        return callback(w.shapeId(index));
+        return !d.overlap || callback(w.shapeId(index));
     });
 }
 
@@ -61,19 +61,11 @@ namespace {
 
 DistanceProxy checkedProxy(const char* call, const Circle& circle) {
     checkCircle(call, circle);
-    DistanceProxy proxy;
-    proxy.count = 1;
-    proxy.vertices[0] = circle.center;
-    proxy.radius = circle.radius;
-    return proxy;
+    return proxyOf(circle);
 }
 
 DistanceProxy checkedProxy(const char* call, const Polygon& polygon) {
-    const ConvexPolygon checked = checkedPolygon(call, polygon);
-    DistanceProxy proxy;
-    proxy.count = checked.count;
-    for (int i = 0; i < checked.count; ++i) proxy.vertices[i] = checked.vertices[i];
-    return proxy;
+    return proxyOf(checkedPolygon(call, polygon));
 }
 
 void castShapeNamed(const char* call, const World::Impl& w, const DistanceProxy& mover,
@@ -85,12 +77,7 @@ void castShapeNamed(const char* call, const World::Impl& w, const DistanceProxy&
     const AABB start = boxOf(mover, xf);
     const AABB end = boxOf(mover, Transform{xf.p + translation, xf.q});
     float maxFraction = 1.0f;
-    QueryScope scope(w);
-    const BroadPhase& broadPhase = w.contactManager.broadPhase();
-    broadPhase.tree().query(combine(start, end), [&](std::int32_t proxy) {
-        const std::int32_t index = broadPhase.userData(proxy);
-        const Shape& shape = w.shapes[index];
-        if (!sees(filter, shape)) return true;
+    forEachCandidate(w, combine(start, end), filter, [&](std::int32_t index, const Shape& shape) {
         const std::optional<CastEntry> entry =
             castShape(mover, xf, translation, proxyOf(shape), w.bodies[shape.body].xf, maxFraction);
         if (!entry) return true;

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "box2d_conversions.h"
 #include "collision/manifold.h"
 
 using namespace pivot;
@@ -42,35 +43,7 @@ static_assert(b2_polygonRadius == kPolygonRadius, "polygon skin differs from Box
 static_assert(b2_linearSlop == kLinearSlop, "linear slop differs from Box2D's");
 static_assert(b2_maxPolygonVertices == kMaxPolygonVertices, "vertex limit differs");
 
-// --- conversions: Box2D's shapes and transforms, copied bit for bit --------------------------
-
-Vec2 toPivot(b2Vec2 v) {
-    return {v.x, v.y};
-}
-
-Transform toPivot(const b2Transform& xf) {
-    Transform t;
-    t.p = toPivot(xf.p);
-    t.q.s = xf.q.s;
-    t.q.c = xf.q.c;
-    return t;
-}
-
-// Taken from the b2PolygonShape after SetAsBox or Set (whose hull may reorder the points), so
-// vertex and face indices mean the same polygon features in both engines.
-ConvexPolygon toPivot(const b2PolygonShape& shape) {
-    ConvexPolygon p;
-    p.count = shape.m_count;
-    for (int i = 0; i < shape.m_count; ++i) {
-        p.vertices[i] = toPivot(shape.m_vertices[i]);
-        p.normals[i] = toPivot(shape.m_normals[i]);
-    }
-    return p;
-}
-
-Circle toPivot(const b2CircleShape& shape) {
-    return Circle{toPivot(shape.m_p), shape.m_radius};
-}
+using reference::toPivot;
 
 // --- random configurations --------------------------------------------------------------------
 

@@ -24,6 +24,7 @@
 #include <random>
 #include <vector>
 
+#include "box2d_conversions.h"
 #include "collision/geometry.h"
 #include "collision/manifold.h"
 
@@ -37,17 +38,7 @@ constexpr float kTolerance = 1e-5f;
 // frame: a round-off of 7 m x 6e-8 over 0.05 m is 1e-5 already.
 constexpr float kNormalTolerance = 1e-4f;
 
-Vec2 toPivot(b2Vec2 v) {
-    return {v.x, v.y};
-}
-
-Transform toPivot(const b2Transform& xf) {
-    Transform t;
-    t.p = toPivot(xf.p);
-    t.q.s = xf.q.s;
-    t.q.c = xf.q.c;
-    return t;
-}
+using reference::toPivot;
 
 struct Counts {
     int compared = 0, withPoints = 0, nearTies = 0;
@@ -56,6 +47,39 @@ struct Counts {
 
 float randomIn(std::mt19937& rng, float lo, float hi) {
     return std::uniform_real_distribution<float>(lo, hi)(rng);
+}
+
+// The random cases, one draw per statement: the order in which function arguments are evaluated
+// is unspecified, and a seed must give the same cases with any compiler.
+
+/// A two-sided edge up to 4 m long, its ends up to 0.3 m off its body's x axis.
+b2EdgeShape randomEdge(std::mt19937& rng, float& length) {
+    length = randomIn(rng, 0.2f, 4.0f);
+    const float y1 = randomIn(rng, -0.3f, 0.3f);
+    const float y2 = randomIn(rng, -0.3f, 0.3f);
+    b2EdgeShape edge;
+    edge.SetTwoSided(b2Vec2(-0.5f * length, y1), b2Vec2(0.5f * length, y2));
+    return edge;
+}
+
+b2Transform randomPose(std::mt19937& rng) {
+    const float x = randomIn(rng, -5, 5);
+    const float y = randomIn(rng, -5, 5);
+    const float angle = randomIn(rng, -kPi, kPi);
+    b2Transform xf;
+    xf.Set(b2Vec2(x, y), angle);
+    return xf;
+}
+
+/// Around the edge at xfA, near its line and its ends, within `reach` of it: overlapping,
+/// touching and just apart.
+b2Transform poseNearEdge(std::mt19937& rng, const b2Transform& xfA, float length, float reach) {
+    const float along = randomIn(rng, -0.6f, 0.6f) * length;
+    const float across = randomIn(rng, -1.0f, 1.0f) * reach;
+    const float angle = randomIn(rng, -kPi, kPi);
+    b2Transform xf;
+    xf.Set(b2Mul(xfA, b2Vec2(along, across)), angle);
+    return xf;
 }
 
 // World-term comparison of two manifolds that made the same decisions.
@@ -152,25 +176,12 @@ TEST(SegmentReference, AgainstACircleAsBox2dEdges) {
     std::mt19937 rng(41);
     Counts counts;
     for (int c = 0; c < 20000; ++c) {
-        b2EdgeShape edge;
-        // One draw per statement: the order in which function arguments are evaluated is
-        // unspecified, and a seed must give the same cases with any compiler.
-        const float length = randomIn(rng, 0.2f, 4.0f);
-        const float y1 = randomIn(rng, -0.3f, 0.3f);
-        const float y2 = randomIn(rng, -0.3f, 0.3f);
-        edge.SetTwoSided(b2Vec2(-0.5f * length, y1), b2Vec2(0.5f * length, y2));
+        float length = 0.0f;
+        const b2EdgeShape edge = randomEdge(rng, length);
         b2CircleShape circle;
         circle.m_radius = randomIn(rng, 0.05f, 1.0f);
-        b2Transform bxfA, bxfB;
-        const float ax = randomIn(rng, -5, 5);
-        const float ay = randomIn(rng, -5, 5);
-        const float angleA = randomIn(rng, -kPi, kPi);
-        bxfA.Set(b2Vec2(ax, ay), angleA);
-        // Around the edge, near its line and its ends: inside, touching and just apart.
-        const float along = randomIn(rng, -0.6f, 0.6f) * length;
-        const float across = randomIn(rng, -1.0f, 1.0f) * (circle.m_radius + 0.05f);
-        const float angleB = randomIn(rng, -kPi, kPi);
-        bxfB.Set(b2Mul(bxfA, b2Vec2(along, across)), angleB);
+        const b2Transform bxfA = randomPose(rng);
+        const b2Transform bxfB = poseNearEdge(rng, bxfA, length, circle.m_radius + 0.05f);
 
         b2Manifold theirs;
         b2CollideEdgeAndCircle(&theirs, &edge, bxfA, &circle, bxfB);
@@ -198,38 +209,22 @@ TEST(SegmentReference, AgainstAPolygonAsBox2dEdges) {
     Counts counts;
     int disagreements = 0, otherNormal = 0, otherDepth = 0;
     for (int c = 0; c < 20000; ++c) {
-        b2EdgeShape edge;
-        // One draw per statement: the order in which function arguments are evaluated is
-        // unspecified, and a seed must give the same cases with any compiler.
-        const float length = randomIn(rng, 0.2f, 4.0f);
-        const float y1 = randomIn(rng, -0.3f, 0.3f);
-        const float y2 = randomIn(rng, -0.3f, 0.3f);
-        edge.SetTwoSided(b2Vec2(-0.5f * length, y1), b2Vec2(0.5f * length, y2));
+        float length = 0.0f;
+        const b2EdgeShape edge = randomEdge(rng, length);
         b2PolygonShape box;
         const float hx = randomIn(rng, 0.1f, 1.5f);
         const float hy = randomIn(rng, 0.1f, 1.5f);
         box.SetAsBox(hx, hy);
-        b2Transform bxfA, bxfB;
-        const float ax = randomIn(rng, -5, 5);
-        const float ay = randomIn(rng, -5, 5);
-        const float angleA = randomIn(rng, -kPi, kPi);
-        bxfA.Set(b2Vec2(ax, ay), angleA);
-        const float along = randomIn(rng, -0.6f, 0.6f) * length;
-        const float across = randomIn(rng, -1.0f, 1.0f) * (std::max(hx, hy) + 0.05f);
-        const float angleB = randomIn(rng, -kPi, kPi);
-        bxfB.Set(b2Mul(bxfA, b2Vec2(along, across)), angleB);
+        const b2Transform bxfA = randomPose(rng);
+        const b2Transform bxfB = poseNearEdge(rng, bxfA, length, std::max(hx, hy) + 0.05f);
 
         b2Manifold theirs;
         b2CollideEdgeAndPolygon(&theirs, &edge, bxfA, &box, bxfB);
-        ConvexPolygon segment, polygon;
+        ConvexPolygon segment;
         ASSERT_TRUE(
             makeSegmentPolygon(Segment{toPivot(edge.m_vertex1), toPivot(edge.m_vertex2)}, segment)
                 .empty());
-        polygon.count = box.m_count;
-        for (int i = 0; i < box.m_count; ++i) {
-            polygon.vertices[i] = toPivot(box.m_vertices[i]);
-            polygon.normals[i] = toPivot(box.m_normals[i]);
-        }
+        const ConvexPolygon polygon = toPivot(box);
         Manifold ours;
         collidePolygons(ours, segment, toPivot(bxfA), polygon, toPivot(bxfB));
         ++counts.compared;
