@@ -29,7 +29,14 @@ struct BodyDef {
     bool fixedRotation = false;
     /// May sleep once at rest (WorldDef::enableSleep switches sleeping for the whole world).
     bool allowSleep = true;
-    bool isAwake = true;         ///< false creates the body asleep until something wakes it
+    bool isAwake = true;  ///< false creates the body asleep until something wakes it
+    /// Continuous collision (WorldDef::enableContinuous): a dynamic body that would pass through
+    /// static or kinematic geometry within a step is stopped at the moment it touches. false
+    /// leaves this body to the discrete step alone (cheaper; fast bodies may then tunnel).
+    bool continuous = true;
+    /// A bullet is also kept from tunnelling through other dynamic bodies (each bullet costs a
+    /// time of impact per nearby dynamic shape per step). Needs `continuous`.
+    bool bullet = false;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
 };
 

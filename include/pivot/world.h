@@ -46,6 +46,12 @@ struct WorldDef {
     float restitutionThreshold = kRestitutionThreshold;
     /// Let islands that have come to rest sleep (see BodyDef::allowSleep).
     bool enableSleep = true;
+    /// Continuous collision, as Box2D 2.4.1 has it: after each step, a dynamic body that passed
+    /// into or through static or kinematic geometry (or, for a bullet, any body) is taken back
+    /// to the moment it touched and stepped on from there, so fast bodies do not tunnel.
+    /// BodyDef::continuous and BodyDef::bullet choose per body; docs/contacts.md says what it
+    /// costs and where it differs from a smaller time step.
+    bool enableContinuous = true;
     /// Threads that step the world, the caller's included, in [1, 64]. Independent islands,
     /// contact updates and broad-phase queries are shared among them; results are bit-for-bit
     /// the same for every count.
@@ -121,6 +127,9 @@ struct StepStats {
     int discardedBodyCount = 0;
     /// Bodies held at the world's edge this step (World::worldEdgeEvents lists them).
     int edgeBodyCount = 0;
+    /// Impacts continuous collision solved this step: bodies taken back to the moment they
+    /// touched something they would otherwise have passed into or through.
+    int impactCount = 0;
 };
 
 class World {
@@ -156,6 +165,9 @@ public:
     /// Switching sleep off wakes every body.
     void setSleepEnabled(bool enabled);
     bool isSleepEnabled() const;
+    /// WorldDef::enableContinuous; takes effect at the next step.
+    void setContinuousEnabled(bool enabled);
+    bool isContinuousEnabled() const;
 
     // --- bodies -----------------------------------------------------------------------------
     BodyId createBody(const BodyDef& def);
@@ -206,6 +218,11 @@ public:
     void setBodyAwake(BodyId id, bool awake);
     /// Whether the body may sleep; forbidding it wakes the body.
     void setBodySleepAllowed(BodyId id, bool allowed);
+    /// BodyDef::continuous and BodyDef::bullet; take effect at the next step.
+    bool isBodyContinuous(BodyId id) const;
+    void setBodyContinuous(BodyId id, bool continuous);
+    bool isBodyBullet(BodyId id) const;
+    void setBodyBullet(BodyId id, bool bullet);
     /// The value of BodyDef::userData, or the last one set; pivot2d never reads it.
     std::uint64_t bodyUserData(BodyId id) const;
     void setBodyUserData(BodyId id, std::uint64_t userData);

@@ -1,5 +1,5 @@
 // When two moving convex shapes first come within touching distance: the time of impact that
-// continuous collision (solver/continuous_solver.h) advances bodies to.
+// continuous collision (world/continuous_solver.h) advances bodies to.
 //
 // Each body moves along a sweep: its centre of mass and angle go linearly from (c0, a0) at the
 // sweep's start to (c, a) at its end, parametrised by t in [0, 1]. The search is conservative

@@ -351,12 +351,32 @@ void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool) con
 }
 
 float ContactSolver::solvePositions(IndexRange range, SolverPose* positions) const {
+    return positionSweep(range, positions, positionBias_, kNoSlot, kNoSlot);
+}
+
+float ContactSolver::solveImpactPositions(IndexRange range, SolverPose* positions,
+                                          std::int32_t movableA, std::int32_t movableB,
+                                          float bias) const {
+    return positionSweep(range, positions, bias, movableA, movableB);
+}
+
+float ContactSolver::positionSweep(IndexRange range, SolverPose* positions, float bias,
+                                   std::int32_t movableA, std::int32_t movableB) const {
     float smallest = 0.0f;
     if (position_.empty()) return smallest;
+    auto moves = [&](std::int32_t slot) {
+        return movableA == kNoSlot || slot == movableA || slot == movableB;
+    };
     for (int k = range.begin; k < range.end; ++k) {
         const ContactPositionConstraint& pc = position_[k];
         SolverPose& A = positions[pc.indexA];
         SolverPose& B = positions[pc.indexB];
+        const bool movesA = moves(pc.indexA);
+        const bool movesB = moves(pc.indexB);
+        const float mA = movesA ? pc.mA : 0.0f;
+        const float iA = movesA ? pc.iA : 0.0f;
+        const float mB = movesB ? pc.mB : 0.0f;
+        const float iB = movesB ? pc.iB : 0.0f;
         for (int j = 0; j < pc.pointCount; ++j) {
             MeasuredPoint m = measure(pc, solverTransform(A, pc.localCenterA),
                                       solverTransform(B, pc.localCenterB), j);
@@ -365,17 +385,16 @@ float ContactSolver::solvePositions(IndexRange range, SolverPose* positions) con
             smallest = minSeparation(smallest, m.separation);
             // Only penetration beyond the slop is corrected, a fraction at a time and never by
             // more than kMaxLinearCorrection in one solve.
-            float C = std::clamp(positionBias_ * (m.separation + kLinearSlop),
-                                 -kMaxLinearCorrection, 0.0f);
+            float C = std::clamp(bias * (m.separation + kLinearSlop), -kMaxLinearCorrection, 0.0f);
             float rnA = cross(rA, m.normal);
             float rnB = cross(rB, m.normal);
-            float K = pc.mA + pc.mB + pc.iA * rnA * rnA + pc.iB * rnB * rnB;
+            float K = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
             float impulse = K > 0.0f ? -C / K : 0.0f;
             Vec2 P = impulse * m.normal;
-            A.c -= pc.mA * P;
-            A.a -= pc.iA * cross(rA, P);
-            B.c += pc.mB * P;
-            B.a += pc.iB * cross(rB, P);
+            A.c -= mA * P;
+            A.a -= iA * cross(rA, P);
+            B.c += mB * P;
+            B.a += iB * cross(rB, P);
         }
     }
     return smallest;

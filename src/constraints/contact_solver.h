@@ -99,6 +99,11 @@ public:
     /// One NGS sweep over the points of contacts [range). Returns the smallest separation
     /// measured (m, before each correction; NaN if any was NaN); 0 when there are none.
     float solvePositions(IndexRange range, SolverPose* positions) const;
+    /// Continuous collision's position sweep (world/continuous_solver.h): as solvePositions,
+    /// with the given bias, moving only the bodies in solver slots movableA and movableB (the
+    /// others are held as if infinitely heavy). Needs NGS constraints (reset with NGS).
+    float solveImpactPositions(IndexRange range, SolverPose* positions, std::int32_t movableA,
+                               std::int32_t movableB, float bias) const;
     /// Whether any contact takes part in the NGS position phase.
     bool hasPositionConstraints() const { return !position_.empty(); }
     /// Soft contacts: whether they relax, and one relax sweep over [range) (rigid, no spring).
@@ -114,6 +119,11 @@ public:
     static float minSeparation(float a, float b) { return !(b >= a) ? b : a; }
 
 private:
+    /// One NGS sweep; a body moves if every body may (movableA = kNoSlot) or it is in one of the
+    /// two slots.
+    float positionSweep(IndexRange range, SolverPose* positions, float bias, std::int32_t movableA,
+                        std::int32_t movableB) const;
+
     std::vector<ContactVelocityConstraint> velocity_;
     std::vector<ContactPositionConstraint> position_;
     float positionBias_ = 0.0f;

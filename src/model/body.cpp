@@ -29,6 +29,7 @@ void forEachShapeAfter(const Body& body, const SlotPool<Shape>& shapes, const Ma
 
 void updateBodyMass(Body& body, const SlotPool<Shape>& shapes) {
     body = bodyAfterMassChange(body, shapes, MassChange{body.type});
+    restartSweep(body);
 }
 
 Body bodyAfterMassChange(const Body& before, const SlotPool<Shape>& shapes,

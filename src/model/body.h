@@ -36,6 +36,15 @@ struct Body {
     bool fixedRotation = false;
     std::uint64_t userData = 0;
 
+    // Continuous collision (world/continuous_solver.h). The step's motion is the sweep from
+    // (center0, angle0) to (center, angle); alpha0 is the fraction of the step at which the
+    // sweep now starts, once a time of impact has moved its start forward.
+    Vec2 center0;
+    float angle0 = 0.0f;
+    float alpha0 = 0.0f;
+    bool bullet = false;     // kept from tunnelling through dynamic bodies too
+    bool continuous = true;  // takes part in continuous collision at all
+
     std::int32_t shapeList = -1;    // head of the body's shape list
     std::int32_t jointList = -1;    // head of the body's joint edge list (see body_edge.h)
     std::int32_t contactList = -1;  // head of the body's contact edge list
@@ -61,6 +70,13 @@ struct Body {
 inline void synchronizeTransform(Body& body) {
     body.xf.q = Rot(body.angle);
     body.xf.p = body.center - rotate(body.xf.q, body.localCenter);
+}
+
+/// The body is where it is with no motion behind it (created, teleported, its centre of mass
+/// moved): the sweep starts where it ends.
+inline void restartSweep(Body& body) {
+    body.center0 = body.center;
+    body.angle0 = body.angle;
 }
 
 /// Flushes a denormal to zero: the API refuses denormals, so the engine must not produce any in

@@ -114,4 +114,17 @@ AABB computeShapeBox(const Shape& shape, const Transform& xf) {
     return {lower - r, upper + r};
 }
 
+DistanceProxy contactProxy(const Shape& shape) {
+    DistanceProxy proxy;
+    if (shape.type == ShapeType::Circle) {
+        proxy.count = 1;
+        proxy.vertices[0] = shape.circle.center;
+    } else {
+        proxy.count = shape.polygon.count;
+        for (int i = 0; i < proxy.count; ++i) proxy.vertices[i] = shape.polygon.vertices[i];
+    }
+    proxy.radius = collisionRadius(shape);
+    return proxy;
+}
+
 }  // namespace pivot

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "collision/aabb.h"
+#include "collision/distance.h"
 #include "collision/geometry.h"
 #include "pivot/shape.h"
 
@@ -43,6 +44,9 @@ OriginMass shapeMassAboutOrigin(const Shape& shape);
 inline float collisionRadius(const Shape& shape) {
     return shape.type == ShapeType::Circle ? shape.circle.radius : kPolygonRadius;
 }
+
+/// The shape as GJK and the time of impact see it in contacts: its core and collision radius.
+DistanceProxy contactProxy(const Shape& shape);
 
 /// The shape's bounding box at a transform, including its collision radius.
 AABB computeShapeBox(const Shape& shape, const Transform& xf);

@@ -213,6 +213,7 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
     for (int i = mine.begin; i < mine.end; ++i) {
         Body& b = bodies[island.bodies[i]];
         if (b.type == BodyType::Static) continue;
+        restartSweep(b);  // the step's motion starts where the body was (continuous collision)
         const SolverPose& p = work.positions[i];
         const SolverVelocity& v = work.velocities[i];
         if (!isFinite(p.c) || !std::isfinite(p.a) || !isFinite(v.v) || !std::isfinite(v.w)) {

@@ -36,6 +36,7 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     contact.edges[1].body = shapes_[shapeB].body;
     contact.friction = mixFriction(shapes_[shapeA].friction, shapes_[shapeB].friction);
     contact.restitution = mixRestitution(shapes_[shapeA].restitution, shapes_[shapeB].restitution);
+    contact.serial = ++contactsMade_;
     std::int32_t index = contacts_.insert(contact);
     linkEdges(contacts_, bodies_, &Body::contactList, index);
     pairs_.insert(key, index);
@@ -113,6 +114,21 @@ void ContactManager::updateContacts() {
     }
 }
 
+bool ContactManager::updateContactNow(std::int32_t index) {
+    Contact& contact = contacts_[index];
+    const bool wasTouching = contact.touching;
+    const bool touching =
+        updateContact(contact, shapes_[contact.shapeA], bodies_[contact.bodyA()].xf,
+                      shapes_[contact.shapeB], bodies_[contact.bodyB()].xf);
+    if (touching != wasTouching) {
+        wakeUp(bodies_[contact.bodyA()]);
+        wakeUp(bodies_[contact.bodyB()]);
+        (touching ? beginEvents_ : endEvents_)
+            .push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
+    }
+    return touching;
+}
+
 void ContactManager::update() {
     beginEvents_.clear();
     endEvents_.clear();
@@ -168,6 +184,19 @@ void ContactManager::synchronizeShapes(std::int32_t bodyIndex, bool swept) {
         AABB before = swept ? shape.box : after;
         shape.box = after;
         Vec2 displacement =
+            0.5f * (after.lower + after.upper) - 0.5f * (before.lower + before.upper);
+        broadPhase_.moveProxy(shape.proxyId, combine(before, after), displacement);
+    }
+}
+
+void ContactManager::synchronizeShapesFrom(std::int32_t bodyIndex, const Transform& from) {
+    const Body& body = bodies_[bodyIndex];
+    for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
+        Shape& shape = shapes_[s];
+        const AABB before = computeShapeBox(shape, from);
+        const AABB after = computeShapeBox(shape, body.xf);
+        shape.box = after;
+        const Vec2 displacement =
             0.5f * (after.lower + after.upper) - 0.5f * (before.lower + before.upper);
         broadPhase_.moveProxy(shape.proxyId, combine(before, after), displacement);
     }

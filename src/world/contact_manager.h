@@ -53,6 +53,15 @@ public:
     void afterSolve(const std::vector<std::int32_t>& solvedBodies);
 
     void destroyContact(std::int32_t contactIndex);
+    /// Makes contacts of the new overlapping pairs the broad phase has found.
+    void findNewContacts();
+    /// The narrow phase for one contact at its bodies' current transforms, outside the step's
+    /// contact update (continuous collision): a change of touching is recorded as an event
+    /// and wakes both bodies. Returns whether the contact touches.
+    bool updateContactNow(std::int32_t contactIndex);
+    /// Moves a body's broad-phase boxes to cover its motion from `from` to its current
+    /// transform (a body continuous collision moved within the step).
+    void synchronizeShapesFrom(std::int32_t bodyIndex, const Transform& from);
     /// Moves a body's broad-phase boxes to its current transform, covering the whole motion
     /// since the last sync when `swept` (a step), or not (a teleport).
     void synchronizeShapes(std::int32_t bodyIndex, bool swept);
@@ -70,7 +79,6 @@ public:
 private:
     /// A broad-phase pair: makes a contact unless one exists or the pair may not collide.
     void addPair(std::int32_t shapeA, std::int32_t shapeB);
-    void findNewContacts();
     void updateContacts();
     /// synchronizeShapes for every body solved this step, with the boxes computed and the
     /// containment tests made on every worker; only the re-insertions are made in turn.
@@ -94,6 +102,7 @@ private:
     PairMap pairs_;  // shape pair -> contact index
     std::array<std::int32_t, 16> categoryCounts_{};
     bool newShapes_ = false;
+    std::uint64_t contactsMade_ = 0;  // Contact::serial of the last contact made
     std::vector<ContactEvent> beginEvents_;
     std::vector<ContactEvent> endEvents_;
     std::vector<std::uint8_t> contactOutcomes_;  // updateContacts' first phase, per contact slot

@@ -3,7 +3,9 @@
 //      parted pairs, recompute manifolds;
 //   2. islands (solver/stepper.cpp): build and solve them, sleeping those at rest;
 //   3. contacts again: move the broad-phase boxes of the bodies that moved, find new pairs;
-//   4. events, statistics, forces cleared, dt remembered for the next warm start.
+//   4. continuous collision (world/continuous_solver.h): bodies that passed into or through
+//      what they should have stopped at are taken back to the impact and stepped on;
+//   5. events, statistics, forces cleared, dt remembered for the next warm start.
 #include <algorithm>
 
 #include "constraints/step_context.h"
@@ -85,6 +87,16 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     }
 
     contactManager.afterSolve(islands.bodies);
+    if (enableContinuous) {
+        stats.impactCount =
+            continuous.solve(bodies, shapes, contacts, contactManager, pool, context);
+        for (std::int32_t index : continuous.bodiesHeldAtEdge()) {
+            Body& body = bodies[index];
+            edgeEvents.push_back({bodyId(index), body.edgeReached});
+            body.heldAtEdge = false;
+            ++stats.edgeBodyCount;
+        }
+    }
 
     // Forces apply for one step.
     bodies.forEach([this](std::int32_t, Body& b) {

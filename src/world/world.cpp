@@ -35,6 +35,7 @@ World::Impl::Impl(const WorldDef& def)
       contactPushSpeed(def.contactPushSpeed),
       restitutionThreshold(def.restitutionThreshold),
       enableSleep(def.enableSleep),
+      enableContinuous(def.enableContinuous),
       jointLetGoSeparation(def.jointLetGoSeparation),
       substepCount(def.substepCount),
       pool(def.workerCount),
@@ -161,6 +162,14 @@ void World::setSleepEnabled(bool enabled) {
 
 bool World::isSleepEnabled() const {
     return impl_->enableSleep;
+}
+
+void World::setContinuousEnabled(bool enabled) {
+    impl_->enableContinuous = enabled;
+}
+
+bool World::isContinuousEnabled() const {
+    return impl_->enableContinuous;
 }
 
 }  // namespace pivot

@@ -41,6 +41,8 @@ BodyId World::createBody(const BodyDef& def) {
     body.allowSleep = def.allowSleep;
     body.awake = def.isAwake || def.type == BodyType::Static;
     body.userData = def.userData;
+    body.bullet = def.bullet;
+    body.continuous = def.continuous;
     std::int32_t index = impl_->bodies.insert(body);
     updateBodyMass(impl_->bodies[index], impl_->shapes);
     return impl_->bodyId(index);
@@ -184,6 +186,22 @@ void World::setBodySleepAllowed(BodyId id, bool allowed) {
     if (!allowed) wakeUp(b);
 }
 
+bool World::isBodyContinuous(BodyId id) const {
+    return impl_->bodies[impl_->bodyIndex("World::isBodyContinuous", id)].continuous;
+}
+
+void World::setBodyContinuous(BodyId id, bool continuous) {
+    impl_->bodies[impl_->bodyIndex("World::setBodyContinuous", id)].continuous = continuous;
+}
+
+bool World::isBodyBullet(BodyId id) const {
+    return impl_->bodies[impl_->bodyIndex("World::isBodyBullet", id)].bullet;
+}
+
+void World::setBodyBullet(BodyId id, bool bullet) {
+    impl_->bodies[impl_->bodyIndex("World::setBodyBullet", id)].bullet = bullet;
+}
+
 std::uint64_t World::bodyUserData(BodyId id) const {
     return impl_->bodies[impl_->bodyIndex("World::bodyUserData", id)].userData;
 }
@@ -203,6 +221,7 @@ void World::setBodyTransform(BodyId id, Vec2 position, float angle) {
     b.xf = {position, Rot(angle)};
     b.angle = angle;
     b.center = transformPoint(b.xf, b.localCenter);
+    restartSweep(b);
     // A teleport is not a motion: the broad-phase boxes jump without a swept extent.
     w.contactManager.synchronizeShapes(index, false);
     w.contactManager.markNewShapes();

@@ -146,6 +146,7 @@ std::uint64_t World::stateHash() const {
     h.add(w.contactBiasFactor);
     h.add(w.restitutionThreshold);
     h.add(w.enableSleep);
+    h.add(w.enableContinuous);
     h.add(w.jointLetGoSeparation);
     // These, and the soft-step settings, are hashed only when they differ from their defaults,
     // so that hashes recorded before they existed still hold.
@@ -190,6 +191,10 @@ std::uint64_t World::stateHash() const {
         h.add(b.awake);
         h.add(b.allowSleep);
         h.add(b.sleepTime);
+        h.add(b.center0);
+        h.add(b.angle0);
+        h.add(b.bullet);
+        h.add(b.continuous);
     });
     h.add(w.shapes.size());
     w.shapes.forEach([&](std::int32_t index, const Shape& s) {
@@ -276,6 +281,7 @@ std::uint64_t World::stateHash() const {
         h.add(c.restitution);
         h.add(c.touching);
         h.add(c.needsFiltering);
+        h.add(c.serial);
         const Manifold& m = c.manifold;
         h.add(static_cast<std::int32_t>(m.type));
         h.add(m.localNormal);

@@ -23,6 +23,7 @@
 #include "pivot/world.h"
 #include "solver/stepper.h"
 #include "world/contact_manager.h"
+#include "world/continuous_solver.h"
 
 namespace pivot {
 
@@ -40,6 +41,7 @@ struct World::Impl {
     float contactPushSpeed;
     float restitutionThreshold;
     bool enableSleep;
+    bool enableContinuous;
     float jointLetGoSeparation;  // m; 0: never
     int substepCount;            // [1, kMaxSubsteps]
 
@@ -51,6 +53,7 @@ struct World::Impl {
     TaskPool pool;  // before the parts that share it
     ContactManager contactManager;
     Stepper stepper;
+    ContinuousSolver continuous;
 
     std::vector<JointLetGoEvent> letGoEvents;  // joints let go by the last step
     std::vector<WorldEdgeEvent> edgeEvents;    // bodies held at the world's edge by it

@@ -31,7 +31,9 @@ DistanceProxy proxyOf(const ConvexPolygon& polygon) {
 }
 
 DistanceProxy proxyOf(const Shape& shape) {
-    return shape.type == ShapeType::Circle ? proxyOf(shape.circle) : proxyOf(shape.polygon);
+    DistanceProxy proxy = contactProxy(shape);
+    if (shape.type != ShapeType::Circle) proxy.radius = 0.0f;  // no skin in a query
+    return proxy;
 }
 
 AABB boxOf(const DistanceProxy& proxy, const Transform& xf) {

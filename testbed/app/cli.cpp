@@ -78,7 +78,7 @@ std::string usage() {
            "\n"
            "reference: builds each reference scene in pivot2d and in Box2D 2.4.1 and prints\n"
            "how closely FullNGS follows Box2D's revolute joint, then every position solver\n"
-           "beside Box2D (continuous collision off, and on) over 600 steps (needs a build\n"
+           "beside Box2D (its continuous collision off, and on) over 600 steps (needs a build\n"
            "with Box2D: Debian's libbox2d-dev).\n"
            "\n"
            "report: runs every scene with every position solver, a bias sweep for baumgarte\n"
@@ -106,6 +106,9 @@ std::string usage() {
            "  --pos-iters N     position iterations per step (default 3)\n"
            "  --substeps N      substeps per step, in [1, 64] (default 1); the iteration\n"
            "                    counts apply in each substep\n"
+           "  --continuous on|off  continuous collision in every scene (default: as each\n"
+           "                    scene has it: on, but off in chain, chain_drag, far_chain,\n"
+           "                    ragdoll, ragdoll_motorized and car)\n"
            "  --csv FILE        also write the table to FILE as CSV\n"
            "  --html FILE       write a self-contained page replaying the runs in a browser\n"
            "                    (the --scene, or pendulum_drag, chain_drag, bridge_heavy and\n"
@@ -185,6 +188,10 @@ CliOptions parseCli(const std::vector<std::string>& args) {
                 static_cast<int>(parseInteger(arg, value(), 0, kMaxIterations));
         } else if (arg == "--substeps") {
             options.substeps = static_cast<int>(parseInteger(arg, value(), 1, kMaxSubsteps));
+        } else if (arg == "--continuous") {
+            const std::string v = value();
+            if (v != "on" && v != "off") throw CliError("--continuous takes on or off");
+            options.continuous = v == "on";
         } else if (arg == "--csv") {
             options.csvPath = value();
         } else if (arg == "--docs") {

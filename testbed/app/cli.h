@@ -23,6 +23,8 @@ struct CliOptions {
     int velocityIterations = kDefaultVelocityIterations;
     int positionIterations = kDefaultPositionIterations;
     int substeps = 1;  ///< WorldDef::substepCount
+    /// Continuous collision on or off in every scene; unset: as each scene has it.
+    std::optional<bool> continuous;
     std::optional<std::string> csvPath;
     std::optional<std::string> htmlPath;  ///< write the browser replay here
     std::string docsDir = "docs";         ///< report: where results.md goes

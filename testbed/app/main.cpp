@@ -39,6 +39,7 @@ std::vector<testbed::TableRow> runAll(const testbed::CliOptions& options) {
                 sceneOptions.biasFactor = options.bias;
                 sceneOptions.hz = options.hz;
                 sceneOptions.substepCount = options.substeps;
+                sceneOptions.continuous = options.continuous;
                 scenes::Scene scene = scenes::buildScene(info, sceneOptions);
 
                 scenes::RunSettings settings;

@@ -53,10 +53,13 @@ void PrintTo(const ReferenceCase& c, std::ostream* out) {
 }
 
 TrajectoryDifference compareTrajectories(const ReferenceCase& c,
-                                         const scenes::SceneOptions& options, int steps) {
+                                         const scenes::SceneOptions& options, int steps,
+                                         std::optional<bool> continuous) {
     const float dt = 1.0f / 60.0f;
     scenes::Scene ours = buildPivotCase(c, options);
-    box2d::Box2dScene theirs = c.buildBox2d(false);
+    if (continuous) ours.world->setContinuousEnabled(*continuous);
+    // Box2D's continuous collision on exactly where the pivot2d scene has it on.
+    box2d::Box2dScene theirs = c.buildBox2d(ours.world->isContinuousEnabled());
     TrajectoryDifference d;
     for (int s = 0; s < steps; ++s) {
         if (ours.beforeStep) ours.beforeStep(ours, s);
@@ -64,6 +67,7 @@ TrajectoryDifference compareTrajectories(const ReferenceCase& c,
         ours.world->step(dt, 8, 3);
         theirs.world->Step(dt, 8, 3);
         ++d.steps;
+        d.impacts += ours.world->lastStepStats().impactCount;
         if (ours.bodies.size() != theirs.bodies.size()) {
             d.bodyCountsMatch = false;
             break;

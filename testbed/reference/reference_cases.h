@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -35,15 +36,18 @@ struct TrajectoryDifference {
     double angle = 0.0;      ///< rad, largest angle difference
     int identicalSteps = 0;  ///< leading steps after which every pose was bit-identical
     bool bodyCountsMatch = true;
+    int impacts = 0;  ///< impacts pivot2d's continuous collision solved (StepStats::impactCount)
 };
 
 /// The steps over which a case's trajectories are compared: 600, or the first 30 if chaotic.
 int comparedSteps(const ReferenceCase& c);
 
-/// Steps the case's pivot2d scene (with `options`) and Box2D scene (continuous collision off)
-/// together at 60 Hz, 8 and 3 iterations, for comparedSteps(c) steps.
+/// Steps the case's pivot2d scene (with `options`) and Box2D scene together at 60 Hz, 8 and 3
+/// iterations, for `steps` steps. Box2D's continuous collision is on where the pivot2d scene
+/// has it on; `continuous`, when given, switches it in both.
 TrajectoryDifference compareTrajectories(const ReferenceCase& c,
-                                         const scenes::SceneOptions& options, int steps);
+                                         const scenes::SceneOptions& options, int steps,
+                                         std::optional<bool> continuous = std::nullopt);
 
 /// For test output.
 void PrintTo(const ReferenceCase& c, std::ostream* out);

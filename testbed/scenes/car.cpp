@@ -4,12 +4,14 @@
 // side of the start, over ground with a 0.15 m bump every 3 m from -15 to 15 m. The suspension rows
 // take the bumps; the line rows hold the wheels under the chassis as it pitches.
 #include "ground.h"
+#include "parts.h"
 #include "scene.h"
 
 namespace pivot::scenes {
 
 void buildCar(Scene& scene, const SceneOptions& options) {
     World& world = *scene.world;
+    keepContinuousOffForJoints(world);
     const BodyId ground = createGround(world);
     ShapeDef bump;
     bump.density = 0.0f;

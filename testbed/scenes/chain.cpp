@@ -10,6 +10,7 @@ namespace pivot::scenes {
 
 void buildChain(Scene& scene, const SceneOptions& options) {
     World& world = *scene.world;
+    keepContinuousOffForJoints(world);
     BodyId ground = createGround(world);
     Chain chain = addChain(world, ground, 0.0f, 25.0f, [&](BodyId a, BodyId b, Vec2 anchor) {
         return options.jointAt(a, b, anchor);
@@ -24,6 +25,7 @@ void buildFarChain(Scene& scene, const SceneOptions& options) {
     // its poses rounded 250 times coarser than at the origin, still finer than the 5 mm slop.
     constexpr float kFar = 30000.0f;
     World& world = *scene.world;
+    keepContinuousOffForJoints(world);
     BodyDef groundDef;
     groundDef.position = {kFar, 0.0f};
     BodyId ground = world.createBody(groundDef);

@@ -5,6 +5,7 @@
 // parts never collide with each other (a shared negative filter group). The motorized variant adds
 // to every joint a motor holding speed 0 with up to 20 N m, like muscles keeping a pose.
 #include "ground.h"
+#include "parts.h"
 #include "scene.h"
 
 namespace pivot::scenes {
@@ -24,6 +25,7 @@ struct Hinge {
 
 void buildRagdollWith(Scene& scene, const SceneOptions& options, bool motorized) {
     World& world = *scene.world;
+    keepContinuousOffForJoints(world);
     createGround(world, 0.6f);
     BodyId wall = world.createBody(BodyDef{});
     ShapeDef wallShape;

@@ -125,6 +125,7 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
     def.substepCount = options.substepCount;
     scene.world = std::make_unique<World>(def);
     info.build(scene, options);
+    if (options.continuous) scene.world->setContinuousEnabled(*options.continuous);
     return scene;
 }
 

@@ -24,6 +24,9 @@ struct SceneOptions {
     Vec2 gravity{0.0f, -10.0f};
     int workerCount = 1;   ///< WorldDef::workerCount
     int substepCount = 1;  ///< WorldDef::substepCount
+    /// Continuous collision switched on or off after the scene is built; unset: as the scene
+    /// has it (on, unless the scene calls keepContinuousOffForJoints).
+    std::optional<bool> continuous;
 
     /// A revolute joint def at a world anchor carrying this scene's solver and bias.
     RevoluteJointDef jointAt(BodyId a, BodyId b, Vec2 anchor) const;

@@ -1,0 +1,359 @@
+#include "world/continuous_solver.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "collision/time_of_impact.h"
+#include "core/buffer.h"
+#include "model/body_edge.h"
+
+namespace pivot {
+
+namespace {
+
+// Box2D 2.4.1's limits and gains for impacts (b2_maxSubSteps, b2_maxTOIContacts,
+// b2_toiBaumgarte and the position iterations of b2World::SolveTOI).
+constexpr int kMaxImpactsPerContact = 8;
+constexpr std::size_t kMaxIslandContacts = 32;
+constexpr std::size_t kMaxIslandBodies = 2 * kMaxIslandContacts;
+constexpr float kImpactBias = 0.75f;
+constexpr int kImpactPositionIterations = 20;
+// The position sweeps stop once no point is deeper than this: they only push to -kLinearSlop,
+// so a stricter bound could never be met.
+constexpr float kImpactTolerance = -1.5f * kLinearSlop;
+// An impact this close to the end of the step is left to the next step.
+constexpr float kLatestImpact = 1.0f - 10.0f * std::numeric_limits<float>::epsilon();
+
+Sweep sweepOf(const Body& b) {
+    Sweep s;
+    s.localCenter = b.localCenter;
+    s.c0 = b.center0;
+    s.c = b.center;
+    s.a0 = b.angle0;
+    s.a = b.angle;
+    s.alpha0 = b.alpha0;
+    return s;
+}
+
+// Moves the start of the body's sweep to `alpha` of the step; the body stays where it is.
+void advanceSweep(Body& b, float alpha) {
+    Sweep s = sweepOf(b);
+    s.advance(alpha);
+    b.center0 = s.c0;
+    b.angle0 = s.a0;
+    b.alpha0 = s.alpha0;
+}
+
+// Puts the body at `alpha` of the step, with nothing of its motion left behind it.
+void advanceBody(Body& b, float alpha) {
+    advanceSweep(b, alpha);
+    b.center = b.center0;
+    b.angle = b.angle0;
+    synchronizeTransform(b);
+}
+
+Transform sweepStart(const Body& b) {
+    Transform xf;
+    xf.q = Rot(b.angle0);
+    xf.p = b.center0 - rotate(xf.q, b.localCenter);
+    return xf;
+}
+
+bool isActive(const Body& b) {
+    return b.awake && b.type != BodyType::Static;
+}
+
+// A body that can stop another in mid-step: any but a dynamic non-bullet.
+bool stopsTunnelling(const Body& b) {
+    return b.bullet || b.type != BodyType::Dynamic;
+}
+
+bool optedOut(const Body& b) {
+    return b.type == BodyType::Dynamic && !b.continuous;
+}
+
+// Whether the contact can be an impact: something moves, and one side is static, kinematic or
+// a bullet (two ordinary dynamic bodies are left to the discrete step).
+bool mayImpact(const Contact& c, const SlotPool<Body>& bodies) {
+    const Body& a = bodies[c.bodyA()];
+    const Body& b = bodies[c.bodyB()];
+    if (!isActive(a) && !isActive(b)) return false;
+    if (optedOut(a) || optedOut(b)) return false;
+    return stopsTunnelling(a) || stopsTunnelling(b);
+}
+
+bool inPlay(const Contact& c) {
+    return !c.toiDisabled && c.toiCount <= kMaxImpactsPerContact;
+}
+
+}  // namespace
+
+ContinuousSolver::Motion::Motion(const Body& b)
+    : center0(b.center0), center(b.center), angle0(b.angle0), angle(b.angle), alpha0(b.alpha0) {}
+
+void ContinuousSolver::Motion::restore(Body& b) const {
+    b.center0 = center0;
+    b.center = center;
+    b.angle0 = angle0;
+    b.angle = angle;
+    b.alpha0 = alpha0;
+    synchronizeTransform(b);
+}
+
+void ContinuousSolver::keepPath(std::int32_t index, const Body& body) {
+    if (body.type == BodyType::Kinematic) kinematicPaths_.push_back({index, Motion(body)});
+}
+
+void ContinuousSolver::computeImpact(Contact& contact, SlotPool<Body>& bodies,
+                                     const SlotPool<Shape>& shapes) {
+    Body& a = bodies[contact.bodyA()];
+    Body& b = bodies[contact.bodyB()];
+    // Both sweeps must start at the same moment.
+    float alpha0 = a.alpha0;
+    if (a.alpha0 < b.alpha0) {
+        alpha0 = b.alpha0;
+        advanceSweep(a, alpha0);
+    } else if (b.alpha0 < a.alpha0) {
+        alpha0 = a.alpha0;
+        advanceSweep(b, alpha0);
+    }
+    const ImpactResult impact =
+        timeOfImpact(contactProxy(shapes[contact.shapeA]), sweepOf(a),
+                     contactProxy(shapes[contact.shapeB]), sweepOf(b), 1.0f);
+    contact.toi = impact.state == ImpactState::Touching
+                      ? std::min(alpha0 + (1.0f - alpha0) * impact.t, 1.0f)
+                      : 1.0f;
+    contact.toiKnown = true;
+}
+
+std::int32_t ContinuousSolver::earliestImpact(SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
+                                              SlotPool<Contact>& contacts, float& alpha) {
+    std::int32_t best = -1;
+    float bestAlpha = 1.0f;
+    auto consider = [&](std::int32_t index) {
+        const Contact& c = contacts[index];
+        if (c.toi < bestAlpha ||
+            (best != -1 && c.toi == bestAlpha && c.serial > contacts[best].serial)) {
+            best = index;
+            bestAlpha = c.toi;
+        }
+    };
+    unknown_.clear();
+    for (std::int32_t index = 0; index < contacts.capacity(); ++index) {
+        if (!contacts.isAlive(index)) continue;
+        const Contact& c = contacts[index];
+        if (!inPlay(c)) continue;
+        if (c.toiKnown) {
+            consider(index);
+        } else if (mayImpact(c, bodies)) {
+            unknown_.push_back(index);
+        }
+    }
+    // Computing an impact may move the start of a sweep another computation then reads:
+    // newest contact first, as Box2D lists them.
+    std::sort(unknown_.begin(), unknown_.end(), [&](std::int32_t x, std::int32_t y) {
+        return contacts[x].serial > contacts[y].serial;
+    });
+    for (std::int32_t index : unknown_) {
+        computeImpact(contacts[index], bodies, shapes);
+        consider(index);
+    }
+    alpha = bestAlpha;
+    if (best == -1 || kLatestImpact < bestAlpha) return -1;
+    return best;
+}
+
+void ContinuousSolver::buildIsland(std::int32_t contactIndex, float alpha, SlotPool<Body>& bodies,
+                                   SlotPool<Contact>& contacts, ContactManager& contactManager) {
+    const std::int32_t first[2] = {contacts[contactIndex].bodyA(), contacts[contactIndex].bodyB()};
+    islandBodies_.assign(first, first + 2);
+    bodySlot_[first[0]] = 0;
+    bodySlot_[first[1]] = 1;
+    islandContacts_.assign(1, contactIndex);
+    inIsland_[contactIndex] = 1;
+
+    for (std::int32_t bodyIndex : first) {
+        const Body& body = bodies[bodyIndex];
+        if (body.type != BodyType::Dynamic) continue;
+        for (std::int32_t key = body.contactList; key != -1;) {
+            if (islandBodies_.size() == kMaxIslandBodies) break;
+            if (islandContacts_.size() == kMaxIslandContacts) break;
+            const std::int32_t index = edgeOwner(key);
+            const int side = edgeSide(key);
+            key = contacts[index].edges[side].nextKey;
+            if (inIsland_[index]) continue;
+            const std::int32_t otherIndex = contacts[index].edges[1 - side].body;
+            Body& other = bodies[otherIndex];
+            // Only what can stop the body: static, kinematic and bullet bodies (a bullet's
+            // contacts take ordinary dynamic bodies in too).
+            if (other.type == BodyType::Dynamic && !body.bullet && !other.bullet) continue;
+            if (optedOut(other)) continue;
+            const Motion before(other);
+            if (bodySlot_[otherIndex] < 0) {
+                keepPath(otherIndex, other);
+                advanceBody(other, alpha);
+            }
+            if (!contactManager.updateContactNow(index)) {
+                before.restore(other);
+                if (bodySlot_[otherIndex] < 0 && other.type == BodyType::Kinematic) {
+                    kinematicPaths_.pop_back();
+                }
+                continue;
+            }
+            inIsland_[index] = 1;
+            islandContacts_.push_back(index);
+            if (bodySlot_[otherIndex] >= 0) continue;
+            bodySlot_[otherIndex] = static_cast<std::int32_t>(islandBodies_.size());
+            islandBodies_.push_back(otherIndex);
+            wakeUp(other);
+        }
+    }
+}
+
+void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
+                                   const SlotPool<Contact>& contacts, const StepContext& step,
+                                   float alpha) {
+    const std::size_t bodyCount = islandBodies_.size();
+    const int contactCount = static_cast<int>(islandContacts_.size());
+    resizeBuffer(positions_, bodyCount);
+    resizeBuffer(velocities_, bodyCount);
+    for (std::size_t i = 0; i < bodyCount; ++i) {
+        const Body& b = bodies[islandBodies_[i]];
+        positions_[i] = {b.center, b.angle};
+        velocities_[i] = {b.linearVelocity, b.angularVelocity};
+    }
+    resizeBuffer(islandPairs_, islandContacts_.size());
+    for (std::size_t k = 0; k < islandContacts_.size(); ++k) {
+        const Contact& c = contacts[islandContacts_[k]];
+        islandPairs_[k] = {bodySlot_[c.bodyA()], bodySlot_[c.bodyB()]};
+    }
+
+    // The rest of the step, solved as one rigid step without warm starting (the discrete step
+    // applied this step's warm start already).
+    StepContext rest = step;
+    rest.dt = (1.0f - alpha) * step.stepDt;
+    rest.invDt = 1.0f / rest.dt;
+    rest.dtRatio = 1.0f;
+    rest.warmStarting = false;
+    rest.contactCorrection = ContactCorrection::NGS;
+    const IndexRange all{0, contactCount};
+    contactSolver_.reset(contactCount, rest);
+    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts, bodies,
+                           shapes, rest, positions_.data());
+    for (int i = 0; i < kImpactPositionIterations; ++i) {
+        const float deepest =
+            contactSolver_.solveImpactPositions(all, positions_.data(), 0, 1, kImpactBias);
+        if (deepest >= kImpactTolerance) break;
+    }
+    // Where the two bodies were pushed to is where the rest of their step starts.
+    for (int slot : {0, 1}) {
+        Body& b = bodies[islandBodies_[static_cast<std::size_t>(slot)]];
+        b.center0 = positions_[static_cast<std::size_t>(slot)].c;
+        b.angle0 = positions_[static_cast<std::size_t>(slot)].a;
+    }
+    // Velocity constraints at the corrected poses.
+    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts, bodies,
+                           shapes, rest, positions_.data());
+    for (int i = 0; i < step.velocityIterations; ++i) {
+        contactSolver_.solveVelocities(all, velocities_.data());
+    }
+
+    const float h = rest.dt;
+    for (std::size_t i = 0; i < bodyCount; ++i) {
+        Vec2 v = velocities_[i].v;
+        float w = velocities_[i].w;
+        const Vec2 translation = h * v;
+        if (dot(translation, translation) > kMaxTranslation * kMaxTranslation) {
+            v *= kMaxTranslation / length(translation);
+        }
+        const float rotation = h * w;
+        if (rotation * rotation > kMaxRotation * kMaxRotation) {
+            w *= kMaxRotation / std::fabs(rotation);
+        }
+        Body& b = bodies[islandBodies_[i]];
+        b.center = flushDenormal(positions_[i].c + h * v);
+        b.angle = flushDenormal(angleWithinLimits(positions_[i].a + h * w));
+        b.linearVelocity = flushDenormal(v);
+        b.angularVelocity = flushDenormal(w);
+        synchronizeTransform(b);
+        if (b.type != BodyType::Static && holdAtWorldEdge(b))
+            heldAtEdge_.push_back(islandBodies_[i]);
+    }
+}
+
+int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
+                            SlotPool<Contact>& contacts, ContactManager& contactManager,
+                            TaskPool& pool, const StepContext& step) {
+    heldAtEdge_.clear();
+    bodies.forEach([](std::int32_t, Body& b) { b.alpha0 = 0.0f; });
+    contacts.forEach([](std::int32_t, Contact& c) {
+        c.toi = 1.0f;
+        c.toiCount = 0;
+        c.toiKnown = false;
+        c.toiDisabled = false;
+    });
+    // Before the first impact every sweep starts at 0, so no computation moves one: each
+    // contact's impact depends on its own bodies only, and the workers share them out.
+    pool.parallelFor(contacts.capacity(), 64, [&](int begin, int end, int) {
+        for (std::int32_t index = begin; index < end; ++index) {
+            if (!contacts.isAlive(index)) continue;
+            Contact& c = contacts[index];
+            if (mayImpact(c, bodies)) computeImpact(c, bodies, shapes);
+        }
+    });
+
+    resizeBuffer(bodySlot_, static_cast<std::size_t>(bodies.capacity()), std::int32_t{-1});
+    int impacts = 0;
+    for (;;) {
+        float alpha = 1.0f;
+        const std::int32_t contactIndex = earliestImpact(bodies, shapes, contacts, alpha);
+        if (contactIndex < 0) break;
+        resizeBuffer(inIsland_, static_cast<std::size_t>(contacts.capacity()), std::uint8_t{0});
+
+        Body& a = bodies[contacts[contactIndex].bodyA()];
+        Body& b = bodies[contacts[contactIndex].bodyB()];
+        const Motion beforeA(a), beforeB(b);
+        kinematicPaths_.clear();
+        keepPath(contacts[contactIndex].bodyA(), a);
+        keepPath(contacts[contactIndex].bodyB(), b);
+        advanceBody(a, alpha);
+        advanceBody(b, alpha);
+        const bool touching = contactManager.updateContactNow(contactIndex);
+        Contact& contact = contacts[contactIndex];
+        contact.toiKnown = false;
+        ++contact.toiCount;
+        if (!touching) {
+            // The sweep said touching, the manifold found no point: skip the contact this step.
+            contact.toiDisabled = true;
+            beforeA.restore(a);
+            beforeB.restore(b);
+            continue;
+        }
+        wakeUp(a);
+        wakeUp(b);
+
+        buildIsland(contactIndex, alpha, bodies, contacts, contactManager);
+        solveIsland(bodies, shapes, contacts, step, alpha);
+        for (const KinematicPath& path : kinematicPaths_) path.motion.restore(bodies[path.body]);
+        ++impacts;
+
+        // The moved bodies' boxes cover the rest of their step; their contacts' impacts are
+        // out of date.
+        for (std::int32_t k : islandContacts_) inIsland_[k] = 0;
+        for (std::int32_t bodyIndex : islandBodies_) {
+            bodySlot_[bodyIndex] = -1;
+            const Body& body = bodies[bodyIndex];
+            if (body.type != BodyType::Dynamic) continue;
+            contactManager.synchronizeShapesFrom(bodyIndex, sweepStart(body));
+            for (std::int32_t key = body.contactList; key != -1;) {
+                Contact& c = contacts[edgeOwner(key)];
+                c.toiKnown = false;
+                key = c.edges[edgeSide(key)].nextKey;
+            }
+        }
+        contactManager.findNewContacts();
+    }
+    return impacts;
+}
+
+}  // namespace pivot
