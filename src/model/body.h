@@ -97,6 +97,23 @@ inline float angleWithinLimits(float angle) {
         std::remainder(static_cast<double>(angle), 2.0 * 3.14159265358979323846));
 }
 
+/// Holds a solved linear velocity within kMaxSpeed, the most the API accepts. Returns whether it
+/// had to.
+inline bool holdLinearSpeed(Vec2& v) {
+    if (lengthSquared(v) <= kMaxSpeed * kMaxSpeed) return false;
+    v *= kMaxSpeed / length(v);
+    // The scaling may round a component just past the limit.
+    v = {std::fmin(std::fmax(v.x, -kMaxSpeed), kMaxSpeed),
+         std::fmin(std::fmax(v.y, -kMaxSpeed), kMaxSpeed)};
+    return true;
+}
+/// The same for an angular velocity and kMaxAngularSpeed.
+inline bool holdAngularSpeed(float& w) {
+    if (std::fabs(w) <= kMaxAngularSpeed) return false;
+    w = std::copysign(kMaxAngularSpeed, w);
+    return true;
+}
+
 /// Keeps the body's origin within +-kMaxCoordinate, the limit setBodyTransform checks: a body
 /// that went further is put back on the edge it crossed (its centre of mass with it), and its
 /// velocity outwards across that edge is stopped. Returns whether it had to.

@@ -232,17 +232,8 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
         // within the speeds the API takes, and counted with the clamps.
         Vec2 linear = v.v;
         float angular = v.w;
-        if (lengthSquared(linear) > kMaxSpeed * kMaxSpeed) {
-            linear *= kMaxSpeed / length(linear);
-            // The scaling may round a component just past the limit.
-            linear = {std::clamp(linear.x, -kMaxSpeed, kMaxSpeed),
-                      std::clamp(linear.y, -kMaxSpeed, kMaxSpeed)};
-            ++report.translationClamps;
-        }
-        if (std::fabs(angular) > kMaxAngularSpeed) {
-            angular = std::copysign(kMaxAngularSpeed, angular);
-            ++report.rotationClamps;
-        }
+        if (holdLinearSpeed(linear)) ++report.translationClamps;
+        if (holdAngularSpeed(angular)) ++report.rotationClamps;
         b.linearVelocity = flushDenormal(linear);
         b.angularVelocity = flushDenormal(angular);
         synchronizeTransform(b);

@@ -62,10 +62,11 @@ void ContactManager::destroyContact(std::int32_t index) {
 void ContactManager::updateContacts() {
     enum : std::uint8_t { kKeep, kDestroy, kBegan, kEnded };
     resizeBuffer(contactOutcomes_, static_cast<std::size_t>(contacts_.capacity()));
-    // A contact begins or ends at most once a step: room for every one, so that a step with
-    // more events than any before does not allocate (only a grown contact pool does).
-    beginEvents_.reserve(static_cast<std::size_t>(contacts_.capacity()));
-    endEvents_.reserve(static_cast<std::size_t>(contacts_.capacity()));
+    // A contact begins or ends once in the narrow phase and seldom more than once in continuous
+    // collision's impacts: room for twice every one, so that a step with more events than any
+    // before does not allocate (only a grown contact pool does).
+    beginEvents_.reserve(2 * static_cast<std::size_t>(contacts_.capacity()));
+    endEvents_.reserve(2 * static_cast<std::size_t>(contacts_.capacity()));
     pool_.parallelFor(contacts_.capacity(), 512, [&](int begin, int end, int) {
         for (std::int32_t index = begin; index < end; ++index) {
             std::uint8_t& outcome = contactOutcomes_[index];

@@ -271,6 +271,23 @@ void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Shape>
             w *= kMaxRotation / std::fabs(rotation);
         }
         Body& b = bodies[islandBodies_[i]];
+        const Vec2 reached = positions_[i].c + h * v;
+        const float turned = positions_[i].a + h * w;
+        if (b.type != BodyType::Static &&
+            !(isFinite(v) && std::isfinite(w) && isFinite(reached) && std::isfinite(turned))) {
+            // As the discrete step does with a non-finite solve: the body keeps its pose (here,
+            // where the impact found it) and a dynamic one stops.
+            if (b.type == BodyType::Dynamic) {
+                b.linearVelocity = Vec2{};
+                b.angularVelocity = 0.0f;
+            }
+            discarded_.push_back(islandBodies_[i]);
+            continue;
+        }
+        // An impact's solve may push a light body hard: hold what it leaves within the speeds
+        // the API takes, as the discrete step does.
+        holdLinearSpeed(v);
+        holdAngularSpeed(w);
         b.center = flushDenormal(positions_[i].c + h * v);
         b.angle = flushDenormal(angleWithinLimits(positions_[i].a + h * w));
         b.linearVelocity = flushDenormal(v);
@@ -285,6 +302,7 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
                             SlotPool<Contact>& contacts, ContactManager& contactManager,
                             TaskPool& pool, const StepContext& step) {
     heldAtEdge_.clear();
+    discarded_.clear();
     bodies.forEach([](std::int32_t, Body& b) { b.alpha0 = 0.0f; });
     contacts.forEach([](std::int32_t, Contact& c) {
         c.toi = 1.0f;
@@ -303,6 +321,15 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     });
 
     resizeBuffer(bodySlot_, static_cast<std::size_t>(bodies.capacity()), std::int32_t{-1});
+    // Room for the most an impact can involve, so that a warm step does not allocate.
+    unknown_.reserve(static_cast<std::size_t>(contacts.capacity()));
+    islandBodies_.reserve(kMaxIslandBodies);
+    islandContacts_.reserve(kMaxIslandContacts);
+    islandPairs_.reserve(kMaxIslandContacts);
+    positions_.reserve(kMaxIslandBodies);
+    velocities_.reserve(kMaxIslandBodies);
+    kinematicPaths_.reserve(kMaxIslandBodies);
+    contactSolver_.reserve(kMaxIslandContacts);
     int impacts = 0;
     for (;;) {
         float alpha = 1.0f;

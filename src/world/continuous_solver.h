@@ -58,6 +58,9 @@ public:
     /// Bodies an impact's motion took past the world's edge, held there (holdAtWorldEdge), in
     /// the order the impacts were solved.
     const std::vector<std::int32_t>& bodiesHeldAtEdge() const { return heldAtEdge_; }
+    /// Bodies whose impact solve was not finite: each kept the pose the impact found it at, and
+    /// a dynamic one was stopped.
+    const std::vector<std::int32_t>& discardedBodies() const { return discarded_; }
 
 private:
     /// The contact's time of impact as a fraction of the step (1: none), moving the start of
@@ -85,6 +88,7 @@ private:
     std::vector<SolverVelocity> velocities_;
     ContactSolver contactSolver_;
     std::vector<std::int32_t> heldAtEdge_;
+    std::vector<std::int32_t> discarded_;
     /// What moving a body to an impact changes, to put it back.
     struct Motion {
         Vec2 center0, center;

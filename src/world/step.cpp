@@ -96,6 +96,10 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
             body.heldAtEdge = false;
             ++stats.edgeBodyCount;
         }
+        for (std::int32_t index : continuous.discardedBodies()) {
+            discarded.push_back(bodyId(index));
+            ++stats.discardedBodyCount;
+        }
     }
 
     // Forces apply for one step.

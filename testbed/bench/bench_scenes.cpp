@@ -101,6 +101,34 @@ BenchScene chainScene(const std::string& name, int steps, int count) {
     return scene;
 }
 
+// A testbed scene (with its script) as the bench steps it: sleeping off, continuous collision as
+// the scene has it.
+Stepper sceneStepper(const char* name, const PivotSetup& setup, int workers) {
+    scenes::SceneOptions options;
+    options.solver = setup.solver;
+    options.contactCorrection = setup.contacts;
+    options.substepCount = setup.substeps;
+    options.workerCount = workers;
+    auto scene =
+        std::make_shared<scenes::Scene>(scenes::buildScene(*scenes::findScene(name), options));
+    scene->world->setSleepEnabled(false);
+    const int velocity = setup.velocityIterations, position = setup.positionIterations;
+    return [scene, velocity, position](int i) {
+        if (scene->beforeStep) scene->beforeStep(*scene, i);
+        scene->world->step(kDt, velocity, position);
+    };
+}
+
+// Its Box2D twin, built with continuous collision as the pivot2d scene has it.
+Stepper box2dSceneStepper(box2d::Box2dScene built) {
+    auto scene = std::make_shared<box2d::Box2dScene>(std::move(built));
+    scene->world->SetAllowSleeping(false);
+    return [scene](int i) {
+        if (scene->beforeStep) scene->beforeStep(*scene, i);
+        scene->world->Step(kDt, 8, 3);
+    };
+}
+
 }  // namespace
 
 const std::vector<PivotSetup>& pivotSetups() {
@@ -140,29 +168,20 @@ std::vector<BenchScene> benchScenes() {
     heavy.description = "the testbed scene: the bridge, and at 2 s a 600 kg box falls on it";
     heavy.steps = 600;
     heavy.buildPivot = [](const PivotSetup& setup, int workers) {
-        scenes::SceneOptions options;
-        options.solver = setup.solver;
-        options.contactCorrection = setup.contacts;
-        options.substepCount = setup.substeps;
-        options.workerCount = workers;
-        auto scene = std::make_shared<scenes::Scene>(
-            scenes::buildScene(*scenes::findScene("bridge_heavy"), options));
-        scene->world->setSleepEnabled(false);
-        const int velocity = setup.velocityIterations, position = setup.positionIterations;
-        return Stepper([scene, velocity, position](int i) {
-            scene->beforeStep(*scene, i);
-            scene->world->step(kDt, velocity, position);
-        });
+        return sceneStepper("bridge_heavy", setup, workers);
     };
-    heavy.buildBox2d = [] {
-        auto scene = std::make_shared<box2d::Box2dScene>(box2d::buildBridgeHeavy(false));
-        scene->world->SetAllowSleeping(false);
-        return Stepper([scene](int i) {
-            scene->beforeStep(*scene, i);
-            scene->world->Step(kDt, 8, 3);
-        });
-    };
+    heavy.buildBox2d = [] { return box2dSceneStepper(box2d::buildBridgeHeavy(true)); };
     scenes.push_back(heavy);
+    BenchScene bullets;
+    bullets.name = "bullets";
+    bullets.description =
+        "the testbed scene: a pyramid of 210 boxes shot at by ten bullets (continuous collision)";
+    bullets.steps = 600;
+    bullets.buildPivot = [](const PivotSetup& setup, int workers) {
+        return sceneStepper("bullets", setup, workers);
+    };
+    bullets.buildBox2d = [] { return box2dSceneStepper(box2d::buildBullets(true)); };
+    scenes.push_back(bullets);
     // Scaling: cost per step as the work grows.
     scenes.push_back(chainScene("chains_1", 600, 1));
     scenes.push_back(chainScene("chains_10", 600, 10));

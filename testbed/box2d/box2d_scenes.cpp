@@ -479,4 +479,41 @@ Box2dScene buildMassRatio(bool continuous) {
     return scene;
 }
 
+Box2dScene buildBullets(bool continuous) {
+    Box2dScene scene = emptyScene(continuous);
+    ground(*scene.world);
+    scenes::PyramidSpec pyramid;
+    pyramid.rows = 20;
+    pyramid.pitchX = 1.05f;
+    scene.bodies = addPyramid(*scene.world, pyramid);
+    // As scenes::addRange (created after the pyramid, as there).
+    b2Body* walls = staticBody(*scene.world);
+    const float half = 0.5f * scenes::Volley::kWallHeight;
+    for (float side : {-1.0f, 1.0f}) {
+        b2PolygonShape wall;
+        wall.SetAsBox(0.5f, half, b2Vec2(side * (scenes::Volley::kWallX + 0.5f), half), 0.0f);
+        walls->CreateFixture(&wall, 0.0f);
+    }
+    scene.beforeStep = [](Box2dScene& s, int step) {
+        const scenes::Volley volley;
+        const int shot = volley.shotAt(step);
+        if (shot < 0) return;
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(volley.x, volley.height(shot));
+        def.linearVelocity.Set(volley.speed, 0.0f);
+        def.bullet = true;
+        b2Body* bullet = s.world->CreateBody(&def);
+        b2CircleShape circle;
+        circle.m_radius = volley.radius;
+        b2FixtureDef fixture;
+        fixture.shape = &circle;
+        fixture.density = volley.density;
+        fixture.friction = volley.friction;
+        bullet->CreateFixture(&fixture);
+        s.bodies.push_back(bullet);
+    };
+    return scene;
+}
+
 }  // namespace pivot::box2d

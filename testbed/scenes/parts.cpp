@@ -76,4 +76,15 @@ void addChains(World& world, int count) {
     }
 }
 
+void addRange(World& world) {
+    const BodyId walls = world.createBody(BodyDef{});
+    ShapeDef wall;
+    wall.density = 0.0f;
+    const float half = 0.5f * Volley::kWallHeight;
+    for (float side : {-1.0f, 1.0f}) {
+        world.createShape(walls, wall,
+                          Polygon::box(0.5f, half, {side * (Volley::kWallX + 0.5f), half}, 0.0f));
+    }
+}
+
 }  // namespace pivot::scenes

@@ -160,6 +160,40 @@ constexpr float kChainPitch = 32.0f;
 /// kChainPitch apart, over one shelf; joints made with RevoluteJointDef::atWorldAnchor.
 void addChains(World& world, int count);
 
+// --- bullets -------------------------------------------------------------------------------
+
+/// The shots of the `bullets` scene, in pivot2d and in its Box2D twin: 0.25 m balls of 20 kg/m^2
+/// (friction 0.6), flagged as bullets, fired from the left at 120 m/s (2 m a step at 60 Hz, the
+/// most a step may move a body, and further than a 1 m box plus the ball: without continuous
+/// collision against dynamic bodies a shot would pass through boxes).
+struct Volley {
+    int firstStep = 60;  ///< 1 s at 60 Hz: the pyramid has settled
+    int every = 30;      ///< steps between shots
+    int shots = 10;
+    float radius = 0.25f;
+    float density = 20.0f;
+    float friction = 0.6f;
+    float speed = 120.0f;  ///< m/s, along +x
+    float x = -25.0f;      ///< m, where a shot starts
+
+    /// The shot fired before `step`, or -1.
+    int shotAt(int step) const {
+        if (step < firstStep || (step - firstStep) % every != 0) return -1;
+        const int shot = (step - firstStep) / every;
+        return shot < shots ? shot : -1;
+    }
+    /// m, the height of shot k: through the pyramid's eight lower rows in turn.
+    float height(int shot) const { return 0.6f + 1.05f * static_cast<float>((shot * 3) % 8); }
+
+    /// The range's walls: static boxes 1 m thick and kWallHeight high, their inner faces at
+    /// x = +-kWallX, standing on the ground.
+    static constexpr float kWallX = 30.0f;
+    static constexpr float kWallHeight = 60.0f;
+};
+
+/// Adds the walls of Volley's range to the world (a static body).
+void addRange(World& world);
+
 /// Switches continuous collision off in a scene whose subject is the joints of bodies landing on
 /// thick ground at moderate speed: nothing there can tunnel, and the impact solve, which (as
 /// Box2D 2.4.1's) ignores joints, would stretch a landing body's joints 5 to 20 times more than

@@ -1477,14 +1477,29 @@ private:
     void sleepCalls() {
         Arg<BodyId> body = pickBody();
         bool flag = random_.chance(0.5f);
-        if (random_.chance(0.5f)) {
-            trace("setBodyAwake " + idText(body.value) + " " + std::to_string(flag));
-            attempt("World::setBodyAwake", verdict(body.bad),
-                    [&] { journal_.setBodyAwake(body.value, flag); });
-        } else {
-            trace("setBodySleepAllowed " + idText(body.value) + " " + std::to_string(flag));
-            attempt("World::setBodySleepAllowed", verdict(body.bad),
-                    [&] { journal_.setBodySleepAllowed(body.value, flag); });
+        switch (random_.below(4)) {
+            case 0:
+                trace("setBodyAwake " + idText(body.value) + " " + std::to_string(flag));
+                attempt("World::setBodyAwake", verdict(body.bad),
+                        [&] { journal_.setBodyAwake(body.value, flag); });
+                break;
+            case 1:
+                trace("setBodySleepAllowed " + idText(body.value) + " " + std::to_string(flag));
+                attempt("World::setBodySleepAllowed", verdict(body.bad),
+                        [&] { journal_.setBodySleepAllowed(body.value, flag); });
+                break;
+            case 2:
+                // Continuous collision's switches; bullets exercise impacts between dynamic
+                // bodies too.
+                trace("setBodyBullet " + idText(body.value) + " " + std::to_string(flag));
+                attempt("World::setBodyBullet", verdict(body.bad),
+                        [&] { journal_.setBodyBullet(body.value, flag); });
+                break;
+            default:
+                trace("setBodyContinuous " + idText(body.value) + " " + std::to_string(flag));
+                attempt("World::setBodyContinuous", verdict(body.bad),
+                        [&] { journal_.setBodyContinuous(body.value, flag); });
+                break;
         }
     }
 
@@ -1801,7 +1816,7 @@ private:
     }
 
     void worldSettings() {
-        switch (random_.below(4)) {
+        switch (random_.below(5)) {
             case 0: {
                 Arg<Vec2> g = random_.chance(0.5f) ? Arg<Vec2>{{0.0f, -10.0f}} : values_->gravity();
                 trace("setGravity " + text(g.value));
@@ -1828,11 +1843,18 @@ private:
                         [&] { journal_.setSubstepCount(n); });
                 break;
             }
-            default: {
+            case 3: {
                 bool on = random_.chance(0.7f);
                 trace("setSleepEnabled " + std::to_string(on));
                 attempt("World::setSleepEnabled", Verdict::Valid,
                         [&] { journal_.setSleepEnabled(on); });
+                break;
+            }
+            default: {
+                bool on = random_.chance(0.8f);
+                trace("setContinuousEnabled " + std::to_string(on));
+                attempt("World::setContinuousEnabled", Verdict::Valid,
+                        [&] { journal_.setContinuousEnabled(on); });
                 break;
             }
         }

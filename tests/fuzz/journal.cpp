@@ -289,6 +289,14 @@ void Journal::setBodySleepAllowed(BodyId id, bool allowed) {
     world_->setBodySleepAllowed(id, allowed);
     lines_.push_back("sleepAllowed " + nameOf('b', id) + " " + num(allowed));
 }
+void Journal::setBodyBullet(BodyId id, bool bullet) {
+    world_->setBodyBullet(id, bullet);
+    lines_.push_back("bullet " + nameOf('b', id) + " " + num(bullet));
+}
+void Journal::setBodyContinuous(BodyId id, bool continuous) {
+    world_->setBodyContinuous(id, continuous);
+    lines_.push_back("bodyContinuous " + nameOf('b', id) + " " + num(continuous));
+}
 void Journal::setBodyType(BodyId id, BodyType type) {
     world_->setBodyType(id, type);
     lines_.push_back("type " + nameOf('b', id) + " " + num(int(type)));
@@ -429,6 +437,10 @@ void Journal::setSubstepCount(int count) {
 void Journal::setSleepEnabled(bool enabled) {
     world_->setSleepEnabled(enabled);
     lines_.push_back("sleep " + num(enabled));
+}
+void Journal::setContinuousEnabled(bool enabled) {
+    world_->setContinuousEnabled(enabled);
+    lines_.push_back("continuous " + num(enabled));
 }
 void Journal::step(float dt, int velocityIterations, int positionIterations) {
     world_->step(dt, velocityIterations, positionIterations);
@@ -922,13 +934,18 @@ ReplayResult replay(std::istream& in) {
             } else {
                 call = [&w, b, v] { w.applyAngularImpulse(b, v); };
             }
-        } else if (command == "awake" || command == "sleepAllowed") {
+        } else if (command == "awake" || command == "sleepAllowed" || command == "bullet" ||
+                   command == "bodyContinuous") {
             BodyId b = body(f.word());
             bool v = f.b();
             if (command == "awake") {
                 call = [&w, b, v] { w.setBodyAwake(b, v); };
-            } else {
+            } else if (command == "sleepAllowed") {
                 call = [&w, b, v] { w.setBodySleepAllowed(b, v); };
+            } else if (command == "bullet") {
+                call = [&w, b, v] { w.setBodyBullet(b, v); };
+            } else {
+                call = [&w, b, v] { w.setBodyContinuous(b, v); };
             }
         } else if (command == "type") {
             BodyId b = body(f.word());
@@ -1029,6 +1046,9 @@ ReplayResult replay(std::istream& in) {
         } else if (command == "sleep") {
             bool on = f.b();
             call = [&w, on] { w.setSleepEnabled(on); };
+        } else if (command == "continuous") {
+            bool on = f.b();
+            call = [&w, on] { w.setContinuousEnabled(on); };
         } else if (command == "step") {
             // An optional fourth field repeats the step (hand-written reproductions).
             float dt = f.f();

@@ -56,6 +56,8 @@ public:
     void applyAngularImpulse(BodyId id, float impulse);
     void setBodyAwake(BodyId id, bool awake);
     void setBodySleepAllowed(BodyId id, bool allowed);
+    void setBodyBullet(BodyId id, bool bullet);
+    void setBodyContinuous(BodyId id, bool continuous);
     void setBodyType(BodyId id, BodyType type);
     void setShapeDensity(ShapeId id, float density);
     void setShapeFilter(ShapeId id, const Filter& filter);
@@ -88,6 +90,7 @@ public:
     void setContactCorrection(ContactCorrection correction);
     void setSubstepCount(int count);
     void setSleepEnabled(bool enabled);
+    void setContinuousEnabled(bool enabled);
     void step(float dt, int velocityIterations, int positionIterations);
 
 private:
