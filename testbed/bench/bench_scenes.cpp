@@ -11,6 +11,8 @@ namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 
+bool continuous = true;  // setContinuousCollision
+
 Stepper stepperOf(std::unique_ptr<World> world, const PivotSetup& setup) {
     std::shared_ptr<World> owned = std::move(world);
     const int velocity = setup.velocityIterations, position = setup.positionIterations;
@@ -29,12 +31,14 @@ WorldDef noSleep(const PivotSetup& setup, int workers) {
     def.contactCorrection = setup.contacts;
     def.substepCount = setup.substeps;
     def.workerCount = workers;
+    def.enableContinuous = continuous;
     return def;
 }
 
 std::unique_ptr<b2World> box2dWorld() {
     auto world = std::make_unique<b2World>(b2Vec2(0.0f, -10.0f));
     world->SetAllowSleeping(false);
+    world->SetContinuousPhysics(continuous);
     return world;
 }
 
@@ -101,14 +105,15 @@ BenchScene chainScene(const std::string& name, int steps, int count) {
     return scene;
 }
 
-// A testbed scene (with its script) as the bench steps it: sleeping off, continuous collision as
-// the scene has it.
+// A testbed scene (with its script) as the bench steps it: sleeping off, continuous collision
+// as setContinuousCollision says (the two scenes used have it on by default).
 Stepper sceneStepper(const char* name, const PivotSetup& setup, int workers) {
     scenes::SceneOptions options;
     options.solver = setup.solver;
     options.contactCorrection = setup.contacts;
     options.substepCount = setup.substeps;
     options.workerCount = workers;
+    options.continuous = continuous;
     auto scene =
         std::make_shared<scenes::Scene>(scenes::buildScene(*scenes::findScene(name), options));
     scene->world->setSleepEnabled(false);
@@ -119,7 +124,7 @@ Stepper sceneStepper(const char* name, const PivotSetup& setup, int workers) {
     };
 }
 
-// Its Box2D twin, built with continuous collision as the pivot2d scene has it.
+// Its Box2D twin, built with continuous collision as setContinuousCollision says.
 Stepper box2dSceneStepper(box2d::Box2dScene built) {
     auto scene = std::make_shared<box2d::Box2dScene>(std::move(built));
     scene->world->SetAllowSleeping(false);
@@ -130,6 +135,14 @@ Stepper box2dSceneStepper(box2d::Box2dScene built) {
 }
 
 }  // namespace
+
+void setContinuousCollision(bool on) {
+    continuous = on;
+}
+
+bool continuousCollision() {
+    return continuous;
+}
 
 const std::vector<PivotSetup>& pivotSetups() {
     static const std::vector<PivotSetup> setups = {
@@ -170,7 +183,7 @@ std::vector<BenchScene> benchScenes() {
     heavy.buildPivot = [](const PivotSetup& setup, int workers) {
         return sceneStepper("bridge_heavy", setup, workers);
     };
-    heavy.buildBox2d = [] { return box2dSceneStepper(box2d::buildBridgeHeavy(true)); };
+    heavy.buildBox2d = [] { return box2dSceneStepper(box2d::buildBridgeHeavy(continuous)); };
     scenes.push_back(heavy);
     BenchScene bullets;
     bullets.name = "bullets";
@@ -180,7 +193,7 @@ std::vector<BenchScene> benchScenes() {
     bullets.buildPivot = [](const PivotSetup& setup, int workers) {
         return sceneStepper("bullets", setup, workers);
     };
-    bullets.buildBox2d = [] { return box2dSceneStepper(box2d::buildBullets(true)); };
+    bullets.buildBox2d = [] { return box2dSceneStepper(box2d::buildBullets(continuous)); };
     scenes.push_back(bullets);
     // Scaling: cost per step as the work grows.
     scenes.push_back(chainScene("chains_1", 600, 1));

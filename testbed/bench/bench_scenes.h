@@ -42,6 +42,11 @@ struct BenchScene {
     std::function<Stepper()> buildBox2d;
 };
 
+/// Continuous collision in both engines, for the scenes built from now on: on (the default, as
+/// each engine's default and the testbed scenes have it) or off.
+void setContinuousCollision(bool on);
+bool continuousCollision();
+
 /// The scenes of the comparison, then the scaling series (chains and pyramids of growing size).
 std::vector<BenchScene> benchScenes();
 

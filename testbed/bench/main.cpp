@@ -201,6 +201,9 @@ int main(int argc, char** argv) {
             options.workersGiven = true;
         } else if (arg == "--scene" && i + 1 < argc) {
             options.only = argv[++i];
+        } else if (arg == "--continuous" && i + 1 < argc &&
+                   (std::string(argv[i + 1]) == "on" || std::string(argv[i + 1]) == "off")) {
+            bench::setContinuousCollision(std::string(argv[++i]) == "on");
         } else if (arg == "--profile" && i + 2 < argc) {
             options.profileEngine = argv[++i];
             options.profileSteps = std::max(0, std::atoi(argv[++i]));
@@ -211,15 +214,18 @@ int main(int argc, char** argv) {
             return 0;
         } else {
             std::cerr << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] "
-                         "[--scene NAME] [--list] [--profile ENGINE STEPS]\n"
-                         "  Times each scene in pivot2d and in Box2D 2.4.1, sleeping and\n"
-                         "  continuous collision off, 1/60 s steps, and prints the median\n"
+                         "[--scene NAME] [--continuous on|off] [--list] [--profile ENGINE "
+                         "STEPS]\n"
+                         "  Times each scene in pivot2d and in Box2D 2.4.1, sleeping off,\n"
+                         "  continuous collision on in both, 1/60 s steps, and prints the median\n"
                          "  milliseconds per step and the ratio box2d / pivot. pivot2d runs as\n"
                          "  full_ngs (8/3), baumgarte (8/3) and soft_step (4 substeps of 1/1,\n"
                          "  soft contacts), on one thread and on --workers threads (default: the\n"
                          "  machine's hardware threads); Box2D 2.4.1 is single-threaded, 8/3.\n"
                          "  --quick    a smoke run: a twentieth of the steps, one repeat\n"
                          "  --csv      print scene,engine,threads,pivot_ms,box2d_ms,speedup lines\n"
+                         "  --continuous off  continuous collision off in both engines (on by\n"
+                         "             default, as in both engines and in the testbed scenes)\n"
                          "  --list     name and describe the scenes\n"
                          "  --scene queries  only the query rows (ray casts and box queries in\n"
                          "             10^4 shapes), which a full run prints after the scenes\n"
@@ -272,12 +278,12 @@ int main(int argc, char** argv) {
         return 0;
     }
     std::printf(
-        "%s: median ms per step over %d run%s; sleeping and continuous collision off.\n"
+        "%s: median ms per step over %d run%s; sleeping off, continuous collision %s.\n"
         "Engines: full_ngs and baumgarte (8 velocity / 3 position iterations, NGS contacts),\n"
         "soft_step (soft-step joints and contacts, 4 substeps of 1 velocity / 1 relax\n"
         "iteration); Box2D 2.4.1 at 8/3, single-threaded, beside each. x box2d = box2d / pivot.\n",
         options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
-        options.repeats == 1 ? "" : "s");
+        options.repeats == 1 ? "" : "s", bench::continuousCollision() ? "on" : "off");
     std::printf("%-15s %-10s %7s %9s %9s %8s\n", "scene", "engine", "threads", "pivot", "box2d",
                 "x box2d");
     for (const Row& r : rows) {
