@@ -26,12 +26,21 @@ struct Circle {
 struct Polygon {
     std::array<Vec2, kMaxPolygonVertices> vertices{};
     int count = 0;
+    /// m, in [0, kMaxCoordinate]: a rounded polygon, every point within `radius` of the
+    /// polygon above (its corners become arcs, its edges move out by `radius`). Its mass
+    /// includes the rounding. It collides with the same thin skin beyond (kPolygonRadius) as
+    /// any polygon.
+    float radius = 0.0f;
 
     /// An axis-aligned box of the given half extents (m, in (0, kMaxCoordinate]), centred on the
     /// body origin. Other arguments throw pivot::Error.
     static Polygon box(float halfWidth, float halfHeight);
     /// A box of the given half extents, centred at `center` and turned by `angle` (rad).
     static Polygon box(float halfWidth, float halfHeight, Vec2 center, float angle);
+    /// A box whose corners are rounded by `radius`: its core has the half extents less the
+    /// radius, so the whole shape spans the given half extents (each must exceed the radius by
+    /// at least kLinearSlop / 2).
+    static Polygon roundedBox(float halfWidth, float halfHeight, float radius);
     /// A polygon from its vertices. More than kMaxPolygonVertices throws pivot::Error.
     static Polygon fromPoints(std::initializer_list<Vec2> points);
     /// The convex hull of a cloud of points (any number, any order), counter-clockwise, made

@@ -119,7 +119,10 @@ int clipSegmentToLine(ClipVertex out[2], const ClipVertex in[2], Vec2 normal, fl
 void collidePolygons(Manifold& manifold, const ConvexPolygon& polygonA, const Transform& xfA,
                      const ConvexPolygon& polygonB, const Transform& xfB) {
     manifold = Manifold{};
-    const float totalRadius = 2.0f * kPolygonRadius;
+    // Each polygon's skin beyond its rounding (for unrounded ones 2 kPolygonRadius exactly, as
+    // Box2D's sum of two polygon radii).
+    const float totalRadius =
+        (kPolygonRadius + polygonA.radius) + (kPolygonRadius + polygonB.radius);
 
     const FaceSeparation onA = maxFaceSeparation(polygonA, xfA, polygonB, xfB);
     if (onA.separation > totalRadius) return;

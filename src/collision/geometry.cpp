@@ -43,6 +43,23 @@ Polygon Polygon::box(float halfWidth, float halfHeight, Vec2 center, float angle
     return p;
 }
 
+Polygon Polygon::roundedBox(float halfWidth, float halfHeight, float radius) {
+    const char* call = "Polygon::roundedBox";
+    if (!std::isfinite(radius) || radius < 0.0f) {
+        fail(call, "radius must be finite and >= 0 (got " + formatFloat(radius) + ")");
+    }
+    const float coreWidth = halfWidth - radius;
+    const float coreHeight = halfHeight - radius;
+    if (!(coreWidth >= 0.5f * kLinearSlop && coreHeight >= 0.5f * kLinearSlop)) {
+        fail(call, "half extents " + formatFloat(halfWidth) + " x " + formatFloat(halfHeight) +
+                       " must each exceed the radius " + formatFloat(radius) +
+                       " by at least kLinearSlop / 2");
+    }
+    Polygon p = box(coreWidth, coreHeight);
+    p.radius = radius;
+    return p;
+}
+
 Polygon Polygon::fromPoints(std::initializer_list<Vec2> points) {
     if (points.size() > static_cast<std::size_t>(kMaxPolygonVertices)) {
         fail("Polygon::fromPoints", "points has " + std::to_string(points.size()) +
@@ -171,10 +188,20 @@ std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out) {
         }
     }
 
+    const float r = input.radius;
+    if (!std::isfinite(r) || r < 0.0f || r > kMaxCoordinate) {
+        return "polygon.radius must be in [0, kMaxCoordinate] (got " + formatFloat(r) + ")";
+    }
+    if (std::fpclassify(r) == FP_SUBNORMAL) {
+        return "polygon.radius must be 0 or a normal float, not a denormal (got " + formatFloat(r) +
+               ")";
+    }
+
     // Accept either winding; store counter-clockwise.
     const float area = signedArea(input);
     ConvexPolygon poly;
     poly.count = n;
+    poly.radius = r;
     for (int i = 0; i < n; ++i) {
         poly.vertices[i] = area >= 0.0f ? input.vertices[i] : input.vertices[n - 1 - i];
     }

@@ -15,6 +15,7 @@ struct ConvexPolygon {
     std::array<Vec2, kMaxPolygonVertices> vertices{};
     std::array<Vec2, kMaxPolygonVertices> normals{};
     int count = 0;
+    float radius = 0.0f;  // rounding (Polygon::radius); 0 for a segment
 };
 
 /// Checks a user polygon. Returns what is wrong with it as text, or an empty string and the

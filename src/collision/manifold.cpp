@@ -60,7 +60,7 @@ void collidePolygonAndCircle(Manifold& manifold, const ConvexPolygon& polygonA,
     manifold = Manifold{};
     // Work in A's frame: the polygon's vertices and normals are then used as stored.
     const Vec2 center = inverseTransformPoint(xfA, transformPoint(xfB, circleB.center));
-    const float radius = kPolygonRadius + circleB.radius;
+    const float radius = (kPolygonRadius + polygonA.radius) + circleB.radius;
     const int n = polygonA.count;
 
     // The face whose plane the centre is furthest in front of. If the centre is further than

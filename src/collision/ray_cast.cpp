@@ -26,8 +26,55 @@ std::optional<RayEntry> rayCastCircle(const Circle& circle, const Transform& xf,
     return entry;
 }
 
+namespace {
+
+// A rounded polygon is the union of the bands r deep outside its edges and the discs of radius
+// r at its corners (the core lies inside them): a ray from outside enters it where it first
+// enters one of those pieces.
+std::optional<RayEntry> rayCastRoundedPolygon(const ConvexPolygon& polygon, const Transform& xf,
+                                              Vec2 origin, Vec2 translation, float maxFraction) {
+    if (polygonContains(polygon, xf, origin)) return std::nullopt;
+    const float r = polygon.radius;
+    std::optional<RayEntry> first;
+    float limit = maxFraction;
+    auto keep = [&](std::optional<RayEntry> entry) {
+        if (entry && entry->fraction <= limit) {
+            first = entry;
+            limit = entry->fraction;
+        }
+    };
+    for (int i = 0; i < polygon.count; ++i) {
+        const Vec2 a = polygon.vertices[i];
+        const Vec2 b = polygon.vertices[(i + 1) % polygon.count];
+        const Vec2 out = r * polygon.normals[i];
+        ConvexPolygon band;  // counter-clockwise: a, a + out, b + out, b
+        band.count = 4;
+        band.vertices = {a, a + out, b + out, b};
+        for (int k = 0; k < 4; ++k) {
+            const Vec2 edge = band.vertices[(k + 1) % 4] - band.vertices[k];
+            band.normals[k] = (1.0f / length(edge)) * Vec2{edge.y, -edge.x};
+        }
+        keep(rayCastPolygon(band, xf, origin, translation, limit));
+        keep(rayCastCircle(Circle{a, r}, xf, origin, translation, limit));
+    }
+    return first;
+}
+
+// The distance from p to the segment a-b, squared.
+float distanceSquaredToSegment(Vec2 p, Vec2 a, Vec2 b) {
+    const Vec2 e = b - a;
+    const float t = std::fmin(std::fmax(dot(p - a, e) / dot(e, e), 0.0f), 1.0f);
+    const Vec2 d = p - (a + t * e);
+    return dot(d, d);
+}
+
+}  // namespace
+
 std::optional<RayEntry> rayCastPolygon(const ConvexPolygon& polygon, const Transform& xf,
                                        Vec2 origin, Vec2 translation, float maxFraction) {
+    if (polygon.radius > 0.0f) {
+        return rayCastRoundedPolygon(polygon, xf, origin, translation, maxFraction);
+    }
     const Vec2 p = inverseTransformPoint(xf, origin);
     const Vec2 d = inverseRotate(xf.q, translation);
     float enter = 0.0f;
@@ -85,10 +132,19 @@ bool circleContains(const Circle& circle, const Transform& xf, Vec2 point) {
 
 bool polygonContains(const ConvexPolygon& polygon, const Transform& xf, Vec2 point) {
     const Vec2 p = inverseTransformPoint(xf, point);
+    bool inCore = true;
     for (int i = 0; i < polygon.count; ++i) {
-        if (dot(polygon.normals[i], p - polygon.vertices[i]) > 0.0f) return false;
+        if (dot(polygon.normals[i], p - polygon.vertices[i]) > 0.0f) inCore = false;
     }
-    return true;
+    if (inCore || polygon.radius == 0.0f) return inCore;
+    // Outside the core, a rounded polygon holds the points within its radius of an edge.
+    const float rr = polygon.radius * polygon.radius;
+    for (int i = 0; i < polygon.count; ++i) {
+        const Vec2 a = polygon.vertices[i];
+        const Vec2 b = polygon.vertices[(i + 1) % polygon.count];
+        if (distanceSquaredToSegment(p, a, b) <= rr) return true;
+    }
+    return false;
 }
 
 }  // namespace pivot

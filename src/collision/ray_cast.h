@@ -9,7 +9,9 @@
 // Convex polygon: the ray, taken into the polygon's frame, is clipped by each edge's half plane
 // n . (x - v) <= 0 (Cyrus-Beck): an edge the ray crosses inwards (n . d < 0) raises the entry
 // fraction to (n . (v - origin)) / (n . d), one it crosses outwards lowers the exit fraction. The
-// entry edge gives the normal. A ray that starts inside enters through no edge: no hit.
+// entry edge gives the normal. A ray that starts inside enters through no edge: no hit. A
+// rounded polygon is the union of the bands its radius deep outside its edges and the discs at
+// its corners: the ray enters it where it first enters one of those.
 //
 // Segment (a to b, unit normal n): the ray crosses the segment's line at
 // t = n . (a - origin) / (n . d), where it must also lie between a and b; the normal faces the

@@ -58,6 +58,57 @@ OriginMass polygonMassAboutOrigin(const Vec2* vertices, int count, float density
     return m;
 }
 
+// A rounded polygon is its core polygon, plus a rectangle radius r deep outside each edge, plus
+// a sector of radius r at each corner (the corners' sectors turn through the exterior angles,
+// which sum to a whole turn). Each piece's area, first and second moments about the frame's
+// origin are exact and summed in double precision: with y measured from a piece's own corner
+// a, the moments about the origin are area |a|^2 + 2 a . S1 + S2, where S1 = integral of y and
+// S2 = integral of |y|^2 over the piece.
+//   rectangle on edge a -> b (length L, outward normal n): area L r,
+//       S1 = L r (b - a) / 2 + L r^2 n / 2,   S2 = L (L^2 r + r^3) / 3;
+//   sector at corner a turning theta from normal n1 to n2: area theta r^2 / 2,
+//       S1 = 2/3 r^3 sin(theta/2) u (u the unit bisector of n1 and n2),   S2 = theta r^4 / 4.
+OriginMass roundedPolygonMassAboutOrigin(const ConvexPolygon& polygon, float density) {
+    const OriginMass core = polygonMassAboutOrigin(polygon.vertices.data(), polygon.count, 1.0f);
+    const double r = polygon.radius;
+    double area = core.mass;  // density 1: the core's area
+    double mx = double(core.mass) * core.center.x;
+    double my = double(core.mass) * core.center.y;
+    double second = core.inertia;
+    auto addPiece = [&](Vec2 corner, double pieceArea, double s1x, double s1y, double s2) {
+        const double ax = corner.x, ay = corner.y;
+        area += pieceArea;
+        mx += pieceArea * ax + s1x;
+        my += pieceArea * ay + s1y;
+        second += pieceArea * (ax * ax + ay * ay) + 2.0 * (ax * s1x + ay * s1y) + s2;
+    };
+    const int n = polygon.count;
+    for (int i = 0; i < n; ++i) {
+        const Vec2 a = polygon.vertices[i];
+        const Vec2 b = polygon.vertices[(i + 1) % n];
+        const Vec2 normal = polygon.normals[i];
+        const double ex = double(b.x) - a.x, ey = double(b.y) - a.y;
+        const double L = std::sqrt(ex * ex + ey * ey);
+        addPiece(a, L * r, 0.5 * L * r * ex + 0.5 * L * r * r * normal.x,
+                 0.5 * L * r * ey + 0.5 * L * r * r * normal.y, L * (L * L * r + r * r * r) / 3.0);
+        const Vec2 before = polygon.normals[(i + n - 1) % n];
+        const double theta = std::atan2(double(cross(before, normal)), double(dot(before, normal)));
+        double ux = double(before.x) + normal.x, uy = double(before.y) + normal.y;
+        const double u = std::sqrt(ux * ux + uy * uy);
+        ux /= u;
+        uy /= u;
+        const double arm = 2.0 / 3.0 * r * r * r * std::sin(0.5 * theta);
+        addPiece(a, 0.5 * theta * r * r, arm * ux, arm * uy, 0.25 * theta * r * r * r * r);
+    }
+    OriginMass m;
+    m.mass = static_cast<float>(density * area);
+    m.center = {static_cast<float>(mx / area), static_cast<float>(my / area)};
+    m.inertia = static_cast<float>(density * second);
+    const double cx = mx / area, cy = my / area;
+    m.centroidInertia = static_cast<float>(density * (second - area * (cx * cx + cy * cy)));
+    return m;
+}
+
 OriginMass shapeMassAboutOrigin(const Shape& shape) {
     if (shape.type == ShapeType::Circle) return circleMassAboutOrigin(shape.circle, shape.density);
     if (shape.type == ShapeType::Segment) {
@@ -65,6 +116,8 @@ OriginMass shapeMassAboutOrigin(const Shape& shape) {
         m.center = 0.5f * (shape.polygon.vertices[0] + shape.polygon.vertices[1]);
         return m;
     }
+    if (shape.polygon.radius > 0.0f)
+        return roundedPolygonMassAboutOrigin(shape.polygon, shape.density);
     return polygonMassAboutOrigin(shape.polygon.vertices.data(), shape.polygon.count,
                                   shape.density);
 }
@@ -94,6 +147,7 @@ MassData computeMass(const Polygon& polygon, float density) {
     std::string problem = makeConvexPolygon(polygon, ccw);
     if (!problem.empty()) fail(call, problem);
     requireDensity(call, "density", density);
+    if (ccw.radius > 0.0f) return aboutCentroid(roundedPolygonMassAboutOrigin(ccw, density));
     return aboutCentroid(polygonMassAboutOrigin(ccw.vertices.data(), ccw.count, density));
 }
 
@@ -110,7 +164,8 @@ AABB computeShapeBox(const Shape& shape, const Transform& xf) {
         lower = {std::min(lower.x, v.x), std::min(lower.y, v.y)};
         upper = {std::max(upper.x, v.x), std::max(upper.y, v.y)};
     }
-    Vec2 r{kPolygonRadius, kPolygonRadius};
+    const float radius = collisionRadius(shape);
+    const Vec2 r{radius, radius};
     return {lower - r, upper + r};
 }
 

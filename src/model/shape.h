@@ -40,9 +40,10 @@ struct OriginMass {
 OriginMass shapeMassAboutOrigin(const Shape& shape);
 
 /// The radius a shape collides with: a circle's own, or the skin kPolygonRadius of polygons and
-/// segments.
+/// segments beyond a polygon's rounding.
 inline float collisionRadius(const Shape& shape) {
-    return shape.type == ShapeType::Circle ? shape.circle.radius : kPolygonRadius;
+    return shape.type == ShapeType::Circle ? shape.circle.radius
+                                           : kPolygonRadius + shape.polygon.radius;
 }
 
 /// The shape as GJK and the time of impact see it in contacts: its core and collision radius.

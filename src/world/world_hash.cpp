@@ -208,6 +208,8 @@ std::uint64_t World::stateHash() const {
         } else {
             h.add(s.polygon.count);
             for (int i = 0; i < s.polygon.count; ++i) h.add(s.polygon.vertices[i]);
+            // Only when rounded, so that hashes recorded before rounding existed still hold.
+            if (s.polygon.radius != 0.0f) h.add(s.polygon.radius);
         }
         h.add(s.density);
         h.add(s.friction);

@@ -13,8 +13,8 @@ namespace {
 
 using namespace queries;
 
-// Shapes as the distance routine sees them in a query: the core and, for a circle, its radius
-// (the skins of polygons and segments are not part of a query).
+// Shapes as the distance routine sees them in a query: the core and, for a circle, its radius,
+// for a polygon its rounding (the skins of polygons and segments are not part of a query).
 DistanceProxy proxyOf(const Circle& circle) {
     DistanceProxy proxy;
     proxy.count = 1;
@@ -27,12 +27,14 @@ DistanceProxy proxyOf(const ConvexPolygon& polygon) {
     DistanceProxy proxy;
     proxy.count = polygon.count;
     for (int i = 0; i < proxy.count; ++i) proxy.vertices[i] = polygon.vertices[i];
+    proxy.radius = polygon.radius;
     return proxy;
 }
 
 DistanceProxy proxyOf(const Shape& shape) {
     DistanceProxy proxy = contactProxy(shape);
-    if (shape.type != ShapeType::Circle) proxy.radius = 0.0f;  // no skin in a query
+    // No skin in a query: a polygon's rounding only.
+    if (shape.type != ShapeType::Circle) proxy.radius = shape.polygon.radius;
     return proxy;
 }
 

@@ -175,6 +175,7 @@ Polygon World::shapePolygon(ShapeId id) const {
     Polygon polygon;
     polygon.count = shape.polygon.count;
     for (int i = 0; i < polygon.count; ++i) polygon.vertices[i] = shape.polygon.vertices[i];
+    polygon.radius = shape.polygon.radius;
     return polygon;
 }
 

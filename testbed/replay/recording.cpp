@@ -2,6 +2,7 @@
 // four solvers start from identical worlds and differ only by what their joints do.
 #include "replay/recording.h"
 
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "scenes/metrics.h"
+#include "scenes/parts.h"
 
 namespace pivot::replay {
 
@@ -33,8 +35,7 @@ std::vector<Outline> outlinesOf(const World& world, BodyId body) {
             outline.vertices = {segment.point1, segment.point2};  // drawn as a closed line
         } else {
             Polygon polygon = world.shapePolygon(shape);
-            outline.vertices.assign(polygon.vertices.begin(),
-                                    polygon.vertices.begin() + polygon.count);
+            outline.vertices = scenes::polygonOutline(polygon);
         }
         outlines.push_back(std::move(outline));
     }

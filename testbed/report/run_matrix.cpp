@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scenes/parts.h"
+
 namespace pivot::report {
 
 const std::vector<std::string>& iterationSweepScenes() {
@@ -53,8 +55,8 @@ SnapshotFrame captureFrame(const World& world, const std::string& caption) {
                 Polygon p = world.shapePolygon(shape);
                 SnapshotFrame::PolygonShape outline;
                 outline.isStatic = isStatic;
-                for (int i = 0; i < p.count; ++i) {
-                    outline.vertices.push_back(transformPoint(xf, p.vertices[i]));
+                for (Vec2 v : scenes::polygonOutline(p)) {
+                    outline.vertices.push_back(transformPoint(xf, v));
                 }
                 frame.polygons.push_back(outline);
             }

@@ -1,5 +1,7 @@
 #include "parts.h"
 
+#include <cmath>
+
 namespace pivot::scenes {
 
 BodyId dynamicBodyAt(const World& world, Vec2 point) {
@@ -85,6 +87,27 @@ void addRange(World& world) {
         world.createShape(walls, wall,
                           Polygon::box(0.5f, half, {side * (Volley::kWallX + 0.5f), half}, 0.0f));
     }
+}
+
+std::vector<Vec2> polygonOutline(const Polygon& polygon) {
+    const int n = polygon.count;
+    if (polygon.radius == 0.0f) return {polygon.vertices.begin(), polygon.vertices.begin() + n};
+    constexpr int kChords = 6;
+    std::vector<Vec2> points;
+    for (int i = 0; i < n; ++i) {
+        const Vec2 v = polygon.vertices[i];
+        const Vec2 before = v - polygon.vertices[(i + n - 1) % n];
+        const Vec2 after = polygon.vertices[(i + 1) % n] - v;
+        // The outward normals of the edges meeting at v (counter-clockwise: on the right).
+        const float from = std::atan2(-before.x, before.y);
+        float to = std::atan2(-after.x, after.y);
+        if (to < from) to += 2.0f * kPi;
+        for (int k = 0; k <= kChords; ++k) {
+            const float angle = from + (to - from) * static_cast<float>(k) / kChords;
+            points.push_back(v + polygon.radius * Vec2{std::cos(angle), std::sin(angle)});
+        }
+    }
+    return points;
 }
 
 }  // namespace pivot::scenes

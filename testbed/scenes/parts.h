@@ -53,6 +53,10 @@ void layPyramid(const PyramidSpec& spec, AddBox&& addBox) {
     }
 }
 
+/// A polygon's outline in its body's frame, for drawing; a rounded polygon's with each corner's
+/// arc drawn as a few chords.
+std::vector<Vec2> polygonOutline(const Polygon& polygon);
+
 /// The dynamic body under `point`, found as a pointer finds it (World::queryPoint), or a null
 /// id when there is none; of several, the first the query reports.
 BodyId dynamicBodyAt(const World& world, Vec2 point);

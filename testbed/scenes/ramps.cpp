@@ -1,7 +1,7 @@
 // Segments as level geometry: a ramp, a floor with a bump of two segments on it, and a wall, all
-// segments of one static body. Balls and boxes slide and roll down the ramp, over the bump and
-// into a chain of five links hanging from a pin above the floor, which they push aside; the
-// chain's joints take the knocks.
+// segments of one static body. Balls and boxes (one rounded) slide and roll down the ramp, over the
+// bump and into a chain of five links hanging from a pin above the floor, which they push aside;
+// the chain's joints take the knocks.
 #include "scene.h"
 
 namespace pivot::scenes {
@@ -18,7 +18,8 @@ void buildRamps(Scene& scene, const SceneOptions& options) {
     world.createShape(ground, level, Segment{{3.0f, 0.3f}, {4.0f, 0.0f}});
     world.createShape(ground, level, Segment{{15.0f, 0.0f}, {15.0f, 8.0f}});
 
-    // Three balls and three boxes on the ramp, 1.5 m apart, the boxes first (lower).
+    // Three balls and three boxes on the ramp, 1.5 m apart, the boxes first (lower); the middle
+    // box has rounded corners.
     for (int i = 0; i < 6; ++i) {
         const float x = -5.0f - 1.5f * static_cast<float>(i);
         const float rampY = 12.0f * (x + 3.0f) / -11.0f;
@@ -30,6 +31,8 @@ void buildRamps(Scene& scene, const SceneOptions& options) {
         shape.friction = 0.1f;
         if (i % 2 == 1) {
             world.createShape(body, shape, Circle{{0.0f, 0.0f}, 0.4f});
+        } else if (i == 2) {
+            world.createShape(body, shape, Polygon::roundedBox(0.4f, 0.4f, 0.15f));
         } else {
             world.createShape(body, shape, Polygon::box(0.4f, 0.4f));
         }

@@ -343,7 +343,7 @@ private:
         if (hostile_ > 0.0f && kind < 35) {
             // Bad on purpose.
             p = Polygon::box(1.0f, 0.5f);
-            switch (random_.below(7)) {
+            switch (random_.below(8)) {
                 case 0: {
                     const int counts[] = {-1, 0, 1, 2, kMaxPolygonVertices + 1, 1000000};
                     p.count = counts[random_.below(6)];
@@ -357,6 +357,13 @@ private:
                 case 3: p.vertices[1] = {0.0f, 0.2f}; break;  // dent
                 case 4: p.vertices[random_.below(4)].x = values_->garbage(); break;
                 case 5: p.vertices[3] = {-1.0f, 2.0f * kMaxCoordinate}; break;
+                case 6: {  // a rounding that is negative, not finite or too big
+                    const float radii[] = {-0.1f, std::numeric_limits<float>::quiet_NaN(),
+                                           std::numeric_limits<float>::infinity(),
+                                           2.0f * kMaxCoordinate, 1e-40f};
+                    p.radius = radii[random_.below(5)];
+                    break;
+                }
                 default:  // all in a line
                     p = Polygon::fromPoints({{0, 0}, {1, 1}, {2, 2}, {3, 3}});
                     break;
@@ -384,6 +391,7 @@ private:
             Vec2 v{radius * sx * std::cos(a), radius * sy * std::sin(a)};
             p.vertices[i] = offset + rotate(turn, v);
         }
+        if (random_.chance(0.2f)) p.radius = random_.uniform(0.0f, 0.3f);  // rounded
         return {p, Verdict::Valid};
     }
 

@@ -89,6 +89,7 @@ ShapeId Journal::createShape(BodyId body, const ShapeDef& def, const Polygon& po
     std::string line = "polygon " + nameNew('s', id) + " " + nameOf('b', body) + " " +
                        shapeDefText(def) + " " + num(polygon.count);
     for (int i = 0; i < polygon.count; ++i) line += " " + num(polygon.vertices[i]);
+    if (polygon.radius != 0.0f) line += " " + num(polygon.radius);  // optional: rounded
     lines_.push_back(line);
     return id;
 }
@@ -613,6 +614,7 @@ ReplayResult replay(std::istream& in) {
                 Polygon p;
                 p.count = f.i();
                 for (int i = 0; i < p.count && i < kMaxPolygonVertices; ++i) p.vertices[i] = f.v();
+                p.radius = f.optionalFloat(0.0f);
                 call = [&w, &shapes, name, b, def, p] { shapes[name] = w.createShape(b, def, p); };
             }
         } else if (command == "joint") {

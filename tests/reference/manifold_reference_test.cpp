@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -312,7 +313,8 @@ bool twoBestTie(std::vector<double> values) {
 // the incident edge, the clip planes and the kept points' radius test.
 bool polygonPairIsTie(const ConvexPolygon& a, const Transform& xfA, const ConvexPolygon& b,
                       const Transform& xfB) {
-    const double totalRadius = 2.0 * kPolygonRadius;
+    const double totalRadius =
+        (double(kPolygonRadius) + a.radius) + (double(kPolygonRadius) + b.radius);
     const std::vector<double> sepA = faceSeparations(a, xfA, b, xfB);
     const std::vector<double> sepB = faceSeparations(b, xfB, a, xfA);
     const double bestA = *std::max_element(sepA.begin(), sepA.end());
@@ -355,7 +357,7 @@ bool polygonPairIsTie(const ConvexPolygon& a, const Transform& xfA, const Convex
 // boundary between a vertex region and a face region.
 bool polygonCirclePairIsTie(const ConvexPolygon& a, const Transform& xfA, const Circle& b,
                             const Transform& xfB) {
-    const double radius = double(kPolygonRadius) + b.radius;
+    const double radius = (double(kPolygonRadius) + a.radius) + b.radius;
     const double c = xfB.q.c, s = xfB.q.s;
     const DVec center{c * b.center.x - s * b.center.y + xfB.p.x,
                       s * b.center.x + c * b.center.y + xfB.p.y};
@@ -526,4 +528,58 @@ TEST(ManifoldReference, PolygonsMatchBox2d) {
     EXPECT_GT(tally.faceA, cases / 20);
     EXPECT_GT(tally.faceB, cases / 20);
     EXPECT_GT(tally.clippedIds, cases / 20);
+}
+
+// Rounded polygons: Box2D 2.4.1 has no rounding of its own but collides a polygon with its
+// m_radius, which pivot2d's rounded polygon sets to kPolygonRadius + Polygon::radius: the same
+// routines on the same radii, so the manifolds agree as the unrounded ones do.
+TEST(ManifoldReference, RoundedPolygonsMatchBox2d) {
+    Generator gen(5150u);
+    Tally tally;
+    const int cases = 10000;
+    for (int k = 0; k < cases; ++k) {
+        b2PolygonShape a = gen.polygon();
+        const float roundingA = gen.uniform(0.0f, 0.3f);
+        a.m_radius = kPolygonRadius + roundingA;
+        const bool withCircle = gen.integer(0, 2) == 0;
+        b2PolygonShape b = gen.polygon();
+        const float roundingB = gen.uniform(0.0f, 0.3f);
+        b.m_radius = kPolygonRadius + roundingB;
+        b2CircleShape c = gen.circle();
+        const b2Shape& other = withCircle ? static_cast<const b2Shape&>(c) : b;
+        b2Transform bxfA = gen.transform(b2Vec2(0.0f, 0.0f), 4.0f);
+        b2Transform bxfB;
+        gen.poseB(a, bxfA, other, bxfB, a.m_radius + other.m_radius);
+        const Transform xfA = toPivot(bxfA);
+        const Transform xfB = toPivot(bxfB);
+        ConvexPolygon polyA = toPivot(a);
+        polyA.radius = roundingA;
+        ConvexPolygon polyB = toPivot(b);
+        polyB.radius = roundingB;
+
+        b2Manifold theirs;
+        Manifold ours;
+        std::function<bool()> isTie;
+        if (withCircle) {
+            b2CollidePolygonAndCircle(&theirs, &a, bxfA, &c, bxfB);
+            collidePolygonAndCircle(ours, polyA, xfA, toPivot(c), xfB);
+            isTie = [&] { return polygonCirclePairIsTie(polyA, xfA, toPivot(c), xfB); };
+        } else {
+            b2CollidePolygons(&theirs, &a, bxfA, &b, bxfB);
+            collidePolygons(ours, polyA, xfA, polyB, xfB);
+            isTie = [&] { return polygonPairIsTie(polyA, xfA, polyB, xfB); };
+        }
+        const std::string at = where(withCircle ? "rounded-circle" : "rounded-polygons", k);
+        if (!decisionsAgreeOrTie(ours, theirs, tally, isTie, at)) continue;
+        count(tally, ours);
+        expectAgreement(ours, theirs, xfA, a.m_radius, xfB, other.m_radius, bxfA, bxfB, tally, at);
+    }
+    std::printf("rounded: %d compared, %d skipped ties, %d/%d/%d with 0/1/2 points\n",
+                tally.compared, tally.skippedTies, tally.zeroPoints, tally.onePoint,
+                tally.twoPoints);
+    EXPECT_EQ(tally.compared + tally.skippedTies, cases);
+    EXPECT_LE(tally.skippedTies, cases / 1000);
+    EXPECT_GT(tally.zeroPoints, cases / 10);
+    EXPECT_GT(tally.onePoint, cases / 20);
+    EXPECT_GT(tally.twoPoints, cases / 20);
 }

@@ -1,0 +1,211 @@
+// Rounded polygons (Polygon::radius): mass against numerical integration, resting heights, the
+// ray cast and point query against brute force, and validation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "pivot/pivot.h"
+
+using namespace pivot;
+
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+
+// The distance from p to the polygon's core (0 inside), in double precision.
+double coreDistance(const Polygon& polygon, double px, double py) {
+    bool inside = true;
+    double best = 1e300;
+    // Counter-clockwise or not, inside means on the same side of every edge.
+    double sign = 0.0;
+    for (int i = 0; i < polygon.count; ++i) {
+        const Vec2 a = polygon.vertices[i];
+        const Vec2 b = polygon.vertices[(i + 1) % polygon.count];
+        const double ex = double(b.x) - a.x, ey = double(b.y) - a.y;
+        const double qx = px - a.x, qy = py - a.y;
+        const double side = ex * qy - ey * qx;
+        if (sign == 0.0) sign = side > 0.0 ? 1.0 : -1.0;
+        if (side * sign < 0.0) inside = false;
+        double t = (qx * ex + qy * ey) / (ex * ex + ey * ey);
+        t = std::fmin(std::fmax(t, 0.0), 1.0);
+        const double dx = qx - t * ex, dy = qy - t * ey;
+        best = std::fmin(best, std::sqrt(dx * dx + dy * dy));
+    }
+    return inside ? 0.0 : best;
+}
+
+// Mass, centroid and inertia about the centroid of a rounded polygon of density 1 by
+// integration over a fine grid.
+MassData integrate(const Polygon& polygon) {
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (int i = 0; i < polygon.count; ++i) {
+        lo[0] = std::fmin(lo[0], polygon.vertices[i].x - polygon.radius);
+        lo[1] = std::fmin(lo[1], polygon.vertices[i].y - polygon.radius);
+        hi[0] = std::fmax(hi[0], polygon.vertices[i].x + polygon.radius);
+        hi[1] = std::fmax(hi[1], polygon.vertices[i].y + polygon.radius);
+    }
+    const int n = 1500;
+    const double hx = (hi[0] - lo[0]) / n, hy = (hi[1] - lo[1]) / n;
+    double area = 0, mx = 0, my = 0, second = 0;
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            const double x = lo[0] + (i + 0.5) * hx, y = lo[1] + (j + 0.5) * hy;
+            if (coreDistance(polygon, x, y) > polygon.radius) continue;
+            const double dA = hx * hy;
+            area += dA;
+            mx += x * dA;
+            my += y * dA;
+            second += (x * x + y * y) * dA;
+        }
+    }
+    MassData m;
+    m.mass = static_cast<float>(area);
+    const double cx = mx / area, cy = my / area;
+    m.center = {static_cast<float>(cx), static_cast<float>(cy)};
+    m.rotationalInertia = static_cast<float>(second - area * (cx * cx + cy * cy));
+    return m;
+}
+
+}  // namespace
+
+TEST(RoundedPolygon, MassIncludesTheRounding) {
+    // A rounded box has the core's area, a band of the radius along the perimeter and a disc.
+    const Polygon box = Polygon::roundedBox(1.0f, 0.5f, 0.2f);
+    const MassData m = computeMass(box, 2.0f);
+    const double area = 1.6 * 0.6 + 2.0 * (1.6 + 0.6) * 0.2 + 3.14159265358979 * 0.04;
+    EXPECT_NEAR(m.mass, 2.0 * area, 1e-5);
+    EXPECT_NEAR(m.center.x, 0.0f, 1e-6);
+    EXPECT_NEAR(m.center.y, 0.0f, 1e-6);
+    // Against integration, an off-centre irregular triangle and the box.
+    Polygon triangle = Polygon::fromPoints({{0.5f, 0.2f}, {2.0f, 0.4f}, {0.9f, 1.7f}});
+    triangle.radius = 0.3f;
+    for (const Polygon& p : {box, triangle}) {
+        const MassData exact = computeMass(p, 1.0f);
+        const MassData grid = integrate(p);
+        EXPECT_NEAR(exact.mass, grid.mass, 2e-3 * grid.mass);
+        EXPECT_NEAR(exact.center.x, grid.center.x, 2e-3);
+        EXPECT_NEAR(exact.center.y, grid.center.y, 2e-3);
+        EXPECT_NEAR(exact.rotationalInertia, grid.rotationalInertia, 3e-3 * grid.rotationalInertia);
+    }
+}
+
+TEST(RoundedPolygon, ARoundedBoxRestsOnItsRoundedFaceAndStaysPut) {
+    World world;
+    const BodyId ground = world.createBody(BodyDef{});
+    ShapeDef slab;
+    slab.density = 0.0f;
+    world.createShape(ground, slab, Polygon::box(20.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    def.position = {0.0f, 2.0f};
+    const BodyId body = world.createBody(def);
+    world.createShape(body, ShapeDef{}, Polygon::roundedBox(0.5f, 0.5f, 0.2f));
+    for (int i = 0; i < 180; ++i) world.step(kDt);
+    // Its flat bottom is 0.5 m below its centre; at rest the two skins (kPolygonRadius each)
+    // overlap by the slop.
+    EXPECT_NEAR(world.bodyPosition(body).y, 0.5f + 2.0f * kPolygonRadius - kLinearSlop,
+                0.5f * kLinearSlop);
+    EXPECT_NEAR(world.bodyAngle(body), 0.0f, 1e-3f);
+    EXPECT_LT(std::fabs(world.bodyLinearVelocity(body).x), 1e-3f);
+}
+
+TEST(RoundedPolygon, ACircleRestsOnTheRounding) {
+    World world;
+    const BodyId table = world.createBody(BodyDef{});
+    ShapeDef solid;
+    solid.density = 0.0f;
+    world.createShape(table, solid, Polygon::roundedBox(2.0f, 0.5f, 0.25f));
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    def.position = {0.0f, 2.0f};
+    const BodyId ball = world.createBody(def);
+    world.createShape(ball, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.3f});
+    for (int i = 0; i < 180; ++i) world.step(kDt);
+    // The table's rounded top is at 0.5 m; its skin overlaps the ball by the slop at rest.
+    EXPECT_NEAR(world.bodyPosition(ball).y, 0.5f + 0.3f + kPolygonRadius - kLinearSlop,
+                0.5f * kLinearSlop);
+}
+
+TEST(RoundedPolygon, RayCastsAndPointQueriesAgreeWithBruteForce) {
+    std::mt19937 rng(2024);
+    auto uniform = [&](float lo, float hi) {
+        return std::uniform_real_distribution<float>(lo, hi)(rng);
+    };
+    Polygon polygon =
+        Polygon::fromPoints({{-1.0f, -0.6f}, {1.2f, -0.4f}, {0.8f, 0.9f}, {-0.7f, 0.7f}});
+    polygon.radius = 0.35f;
+    const float angle = 0.7f;
+    const Transform xf{{0.4f, -0.3f}, Rot(angle)};
+    int hits = 0, misses = 0, inside = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const float ox = uniform(-4.0f, 4.0f);
+        const float oy = uniform(-4.0f, 4.0f);
+        const float tx = uniform(-8.0f, 8.0f);
+        const float ty = uniform(-8.0f, 8.0f);
+        const Vec2 origin{ox, oy};
+        const Vec2 translation{tx, ty};
+        // Brute force: march along the ray in the polygon's frame.
+        auto distanceAt = [&](double t) {
+            const Vec2 p = inverseTransformPoint(xf, origin + static_cast<float>(t) * translation);
+            return coreDistance(polygon, p.x, p.y) - polygon.radius;
+        };
+        const bool startsInside = distanceAt(0.0) <= 0.0;
+        EXPECT_EQ(testPoint(polygon, xf, origin), startsInside) << k;
+        double firstInside = -1.0;
+        const int samples = 2000;
+        for (int s = 0; s <= samples && !startsInside; ++s) {
+            if (distanceAt(double(s) / samples) < -1e-4) {
+                firstInside = double(s) / samples;
+                break;
+            }
+        }
+        const std::optional<RayHit> hit = rayCast(polygon, xf, origin, translation);
+        if (startsInside) {
+            ++inside;
+            EXPECT_FALSE(hit.has_value()) << k;
+            continue;
+        }
+        if (firstInside < 0.0) {
+            // No sample went in: at most a graze.
+            if (hit) {
+                EXPECT_NEAR(distanceAt(hit->fraction), 0.0, 1e-4) << k;
+            }
+            ++misses;
+            continue;
+        }
+        ASSERT_TRUE(hit.has_value()) << k;
+        ++hits;
+        EXPECT_NEAR(distanceAt(hit->fraction), 0.0, 1e-4) << k;  // on the surface
+        EXPECT_LE(hit->fraction, firstInside + 1e-6) << k;       // before any inside sample
+        // The normal points out of the surface: stepping along it leaves the shape.
+        const Vec2 out = hit->point + 0.01f * hit->normal;
+        const Vec2 local = inverseTransformPoint(xf, out);
+        EXPECT_GT(coreDistance(polygon, local.x, local.y), polygon.radius) << k;
+    }
+    EXPECT_GT(hits, 250);
+    EXPECT_GT(misses, 250);
+    EXPECT_GT(inside, 25);
+}
+
+TEST(RoundedPolygon, ABadRadiusIsRefusedAndChangesNothing) {
+    World world;
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    const BodyId body = world.createBody(def);
+    const std::uint64_t before = world.stateHash();
+    for (float radius : {-0.1f, std::numeric_limits<float>::quiet_NaN(),
+                         std::numeric_limits<float>::infinity(), 2.0f * kMaxCoordinate, 1e-40f}) {
+        Polygon p = Polygon::box(1.0f, 1.0f);
+        p.radius = radius;
+        EXPECT_THROW(world.createShape(body, ShapeDef{}, p), Error) << radius;
+        EXPECT_THROW(computeMass(p, 1.0f), Error) << radius;
+    }
+    EXPECT_EQ(world.stateHash(), before);
+    EXPECT_THROW(Polygon::roundedBox(0.5f, 0.5f, 0.5f), Error);  // no core left
+    EXPECT_THROW(Polygon::roundedBox(0.5f, 0.5f, -0.1f), Error);
+    const ShapeId shape =
+        world.createShape(body, ShapeDef{}, Polygon::roundedBox(0.5f, 0.4f, 0.1f));
+    EXPECT_FLOAT_EQ(world.shapePolygon(shape).radius, 0.1f);
+}
