@@ -12,6 +12,13 @@
 //  4. The incident edge is clipped against the two side planes through the ends of the
 //     reference face (moved outward by the total radius); the clipped points that lie within
 //     the total radius of the reference plane are the contact points.
+// Rounded polygons add one case (not in Box2D 2.4.1, whose polygon radius is only the skin):
+// when the cores are apart and their closest points are a corner of each, the rounded corners
+// meet as two discs would, at the corners' true distance, with one point along the line between
+// them (as Box2D v3 does). Measured along a face normal instead, two corners approaching
+// diagonally would touch up to sqrt(2) times too early: a rounded box would rest on another's
+// corner in mid-air. Between unrounded polygons nothing changes.
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -114,6 +121,65 @@ int clipSegmentToLine(ClipVertex out[2], const ClipVertex in[2], Vec2 normal, fl
     return count;
 }
 
+// The closest points of the segments p1-q1 and p2-q2, as the fractions s along the first and t
+// along the second (each in [0, 1]).
+void closestFractions(Vec2 p1, Vec2 q1, Vec2 p2, Vec2 q2, float& s, float& t) {
+    const Vec2 d1 = q1 - p1;
+    const Vec2 d2 = q2 - p2;
+    const Vec2 r = p1 - p2;
+    const float a = dot(d1, d1);
+    const float e = dot(d2, d2);
+    const float f = dot(d2, r);
+    const float c = dot(d1, r);
+    const float b = dot(d1, d2);
+    const float denominator = a * e - b * b;
+    auto unit = [](float x) { return std::fmin(std::fmax(x, 0.0f), 1.0f); };
+    // Parallel segments (denominator 0): any point of the first will do; take its start.
+    s = denominator > 0.0f ? unit((b * f - c * e) / denominator) : 0.0f;
+    t = (b * s + f) / e;
+    if (t < 0.0f) {
+        t = 0.0f;
+        s = unit(-c / a);
+    } else if (t > 1.0f) {
+        t = 1.0f;
+        s = unit((b - c) / a);
+    }
+}
+
+// Rounded polygons whose cores are apart with a corner of each closest: one point between the
+// two corners, as a contact of two discs (ManifoldType::Circles). Returns false (the manifold
+// untouched) in every other case.
+bool roundedCornersMeet(Manifold& manifold, const ConvexPolygon& poly1, const Transform& xf1,
+                        int face, const ClipVertex incident[2], const Transform& xf2,
+                        bool referenceOnB, float totalRadius) {
+    const int iv1 = face;
+    const int iv2 = face + 1 < poly1.count ? face + 1 : 0;
+    const Vec2 v1 = transformPoint(xf1, poly1.vertices[iv1]);
+    const Vec2 v2 = transformPoint(xf1, poly1.vertices[iv2]);
+    float s = 0.0f, t = 0.0f;
+    closestFractions(v1, v2, incident[0].point, incident[1].point, s, t);
+    const bool cornerOn1 = s == 0.0f || s == 1.0f;
+    const bool cornerOn2 = t == 0.0f || t == 1.0f;
+    if (!cornerOn1 || !cornerOn2) return false;
+    const Vec2 corner1 = s == 0.0f ? v1 : v2;
+    const ClipVertex& corner2 = t == 0.0f ? incident[0] : incident[1];
+    manifold = Manifold{};
+    if (lengthSquared(corner2.point - corner1) > totalRadius * totalRadius) return true;  // apart
+    const std::uint8_t index1 = static_cast<std::uint8_t>(s == 0.0f ? iv1 : iv2);
+    const Vec2 local1 = poly1.vertices[index1];
+    const Vec2 local2 = inverseTransformPoint(xf2, corner2.point);
+    manifold.type = ManifoldType::Circles;
+    manifold.localPoint = referenceOnB ? local2 : local1;  // shape A's corner, in A's frame
+    manifold.points[0] = ManifoldPoint{};
+    manifold.points[0].localPoint = referenceOnB ? local1 : local2;
+    manifold.points[0].id = referenceOnB ? makeFeatureId(corner2.incidentIndex, index1,
+                                                         FeatureType::Vertex, FeatureType::Vertex)
+                                         : makeFeatureId(index1, corner2.incidentIndex,
+                                                         FeatureType::Vertex, FeatureType::Vertex);
+    manifold.pointCount = 1;
+    return true;
+}
+
 }  // namespace
 
 void collidePolygons(Manifold& manifold, const ConvexPolygon& polygonA, const Transform& xfA,
@@ -139,6 +205,14 @@ void collidePolygons(Manifold& manifold, const ConvexPolygon& polygonA, const Tr
 
     ClipVertex incidentEdge[2];
     findIncidentEdge(incidentEdge, poly1, xf1, face, poly2, xf2);
+
+    const bool rounded = polygonA.radius > 0.0f || polygonB.radius > 0.0f;
+    const float coreSeparation = referenceOnB ? onB.separation : onA.separation;
+    if (rounded && coreSeparation > 0.1f * kLinearSlop &&
+        roundedCornersMeet(manifold, poly1, xf1, face, incidentEdge, xf2, referenceOnB,
+                           totalRadius)) {
+        return;
+    }
 
     const int iv1 = face;
     const int iv2 = face + 1 < poly1.count ? face + 1 : 0;

@@ -188,7 +188,7 @@ std::vector<BenchScene> benchScenes() {
     BenchScene bullets;
     bullets.name = "bullets";
     bullets.description =
-        "the testbed scene: a pyramid of 210 boxes shot at by ten bullets (continuous collision)";
+        "the testbed scene: a pyramid of 55 boxes shot at by ten bullets (continuous collision)";
     bullets.steps = 600;
     bullets.buildPivot = [](const PivotSetup& setup, int workers) {
         return sceneStepper("bullets", setup, workers);

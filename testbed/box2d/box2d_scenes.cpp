@@ -482,10 +482,7 @@ Box2dScene buildMassRatio(bool continuous) {
 Box2dScene buildBullets(bool continuous) {
     Box2dScene scene = emptyScene(continuous);
     ground(*scene.world);
-    scenes::PyramidSpec pyramid;
-    pyramid.rows = 20;
-    pyramid.pitchX = 1.05f;
-    scene.bodies = addPyramid(*scene.world, pyramid);
+    scene.bodies = addPyramid(*scene.world, scenes::Volley::pyramid());
     // As scenes::addRange (created after the pyramid, as there).
     b2Body* walls = staticBody(*scene.world);
     const float half = 0.5f * scenes::Volley::kWallHeight;

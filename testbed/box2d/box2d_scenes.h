@@ -45,7 +45,7 @@ Box2dScene buildGearTrain(bool continuous = false);
 /// them from pivot2d's 4 Hz and 0.7 on the effective mass of the suspension row at the start,
 /// the same spring while the chassis is level.
 Box2dScene buildCar(bool continuous = false);
-/// The `bullets` scene: the 20-row pyramid and scenes::Volley's shots, flagged as bullets.
+/// The `bullets` scene: scenes::Volley's pyramid, range and shots, flagged as bullets.
 Box2dScene buildBullets(bool continuous = true);
 
 }  // namespace pivot::box2d

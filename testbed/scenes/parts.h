@@ -189,6 +189,15 @@ struct Volley {
     /// m, the height of shot k: through the pyramid's eight lower rows in turn.
     float height(int shot) const { return 0.6f + 1.05f * static_cast<float>((shot * 3) % 8); }
 
+    /// The pyramid shot at: ten rows of 1 m boxes, 1.05 m apart (small, so that the soak of
+    /// every solver stays cheap under the sanitizers).
+    static PyramidSpec pyramid() {
+        PyramidSpec spec;
+        spec.rows = 10;
+        spec.pitchX = 1.05f;
+        return spec;
+    }
+
     /// The range's walls: static boxes 1 m thick and kWallHeight high, their inner faces at
     /// x = +-kWallX, standing on the ground.
     static constexpr float kWallX = 30.0f;

@@ -103,7 +103,7 @@ const std::vector<SceneInfo>& allScenes() {
          buildFarChain},
         {"ramps", "balls and boxes down a segment ramp, over a bump and into a hanging chain",
          buildRamps},
-        {"bullets", "the pyramid shot at by ten bullets at 120 m/s (continuous collision)",
+        {"bullets", "a pyramid shot at by ten bullets at 120 m/s (continuous collision)",
          buildBullets},
     };
     return scenes;

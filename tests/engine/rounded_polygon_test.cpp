@@ -6,6 +6,7 @@
 #include <limits>
 #include <random>
 
+#include "collision/manifold.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -88,6 +89,34 @@ TEST(RoundedPolygon, MassIncludesTheRounding) {
         EXPECT_NEAR(exact.center.x, grid.center.x, 2e-3);
         EXPECT_NEAR(exact.center.y, grid.center.y, 2e-3);
         EXPECT_NEAR(exact.rotationalInertia, grid.rotationalInertia, 3e-3 * grid.rotationalInertia);
+    }
+}
+
+TEST(RoundedPolygon, CornersMeetAtTheirTrueDistance) {
+    // Two rounded boxes corner to corner along the diagonal: their core corners are
+    // sqrt(2) (d - 0.4) apart for a centre offset of (d, d); they touch within 0.62 m (both
+    // roundings and skins). Measured along a face normal the gap would be only d - 0.4.
+    const Polygon rounded = Polygon::roundedBox(0.5f, 0.5f, 0.3f);
+    ConvexPolygon box;
+    ASSERT_TRUE(makeConvexPolygon(rounded, box).empty());
+    const float reach = 2.0f * (0.3f + kPolygonRadius);
+    const Transform xfA{{0.0f, 0.0f}, Rot(0.0f)};
+    for (float gap : {0.05f, -0.05f}) {
+        const float d = 0.4f + (reach + gap) / std::sqrt(2.0f);
+        const Transform xfB{{d, d}, Rot(0.0f)};
+        Manifold m;
+        collidePolygons(m, box, xfA, box, xfB);
+        if (gap > 0.0f) {
+            EXPECT_EQ(m.pointCount, 0) << "apart by " << gap << " m, yet touching";
+        } else {
+            ASSERT_EQ(m.pointCount, 1);
+            EXPECT_EQ(m.type, ManifoldType::Circles);
+            const WorldManifold wm =
+                computeWorldManifold(m, xfA, 0.3f + kPolygonRadius, xfB, 0.3f + kPolygonRadius);
+            EXPECT_NEAR(wm.separations[0], gap, 1e-4f);
+            EXPECT_NEAR(wm.normal.x, std::sqrt(0.5f), 1e-4f);
+            EXPECT_NEAR(wm.normal.y, std::sqrt(0.5f), 1e-4f);
+        }
     }
 }
 
