@@ -48,6 +48,10 @@ std::optional<RayHit> rayCast(const Polygon& polygon, const Transform& xf, Vec2 
 /// normal faces the side the ray comes from. A ray along the segment's line does not hit it.
 std::optional<RayHit> rayCast(const Segment& segment, const Transform& xf, Vec2 origin,
                               Vec2 translation);
+/// A ray against one chain segment (checked as World::createShape checks it): only from its
+/// solid side, the right of point1 -> point2; a ray from behind passes through.
+std::optional<RayHit> rayCast(const ChainSegment& segment, const Transform& xf, Vec2 origin,
+                              Vec2 translation);
 
 /// Whether a point (world coordinates) lies inside, or on the boundary of, a shape at `xf`. (A
 /// segment has no inside: World::queryPoint never reports one.)

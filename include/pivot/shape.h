@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <initializer_list>
+#include <vector>
 
 #include "pivot/body.h"
 #include "pivot/constants.h"
@@ -12,7 +13,7 @@
 
 namespace pivot {
 
-enum class ShapeType : std::uint8_t { Circle, Polygon, Segment };
+enum class ShapeType : std::uint8_t { Circle, Polygon, Segment, ChainSegment };
 
 /// A solid disc.
 struct Circle {
@@ -61,6 +62,31 @@ struct Polygon {
 struct Segment {
     Vec2 point1;
     Vec2 point2;
+};
+
+/// A one-sided segment with its neighbours: what a chain is made of (World::createChain), and
+/// what World::createShape makes on its own. It is solid only on its right looking from
+/// segment.point1 to segment.point2: a shape whose centre is behind it passes through. The
+/// ghosts are the chain's points before point1 and after point2; they are not part of the
+/// shape, but a body sliding across a join of two segments does not catch on the corner
+/// because each segment knows its neighbour's direction. Otherwise as a Segment: no mass, on a
+/// static or kinematic body, not colliding with other segments. Each point within
+/// kMaxCoordinate, each at least kLinearSlop from the next (ghost1, point1, point2, ghost2).
+struct ChainSegment {
+    Vec2 ghost1;
+    Segment segment;
+    Vec2 ghost2;
+};
+
+/// A polyline of one-sided segments, for terrain (World::createChain). Each segment is solid on
+/// its right looking along the chain: list a floor's points from right to left, a closed loop
+/// counter-clockwise to keep bodies outside it, clockwise to keep them inside.
+struct Chain {
+    std::vector<Vec2> points;
+    /// A closed loop joins the last point to the first: n points make n segments (n >= 3). An
+    /// open chain's first and last points are ghosts only, the directions its ends continue in
+    /// (a body slides off an end as off a join): n points make n - 3 segments (n >= 4).
+    bool loop = false;
 };
 
 /// Which shapes may touch. Two shapes collide when each one's category is in the other's mask,

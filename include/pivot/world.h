@@ -258,6 +258,16 @@ public:
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     /// On a static or kinematic body only (a segment has no mass).
     ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
+    /// One one-sided segment with its ghosts; on a static or kinematic body only.
+    ShapeId createShape(BodyId body, const ShapeDef& def, const ChainSegment& segment);
+    /// A chain (pivot::Chain) on a static or kinematic body: one ChainSegment shape per segment,
+    /// in chain order, each with `def`'s material, filter and user data (density is ignored:
+    /// segments have no mass). Every point is checked first (each finite, within
+    /// kMaxCoordinate, at least kLinearSlop from the next; at least 4 points for an open chain,
+    /// 3 for a loop); on any error pivot::Error is thrown and no shape is made. The segments
+    /// are separate shapes: each can be queried, filtered and destroyed on its own (its
+    /// neighbours keep their ghosts, so a body can then fall into the gap).
+    std::vector<ShapeId> createChain(BodyId body, const ShapeDef& def, const Chain& chain);
     /// Destroys the shape and its contacts and wakes its body.
     void destroyShape(ShapeId id);
     bool isValid(ShapeId id) const;
@@ -276,6 +286,7 @@ public:
     Circle shapeCircle(ShapeId id) const;
     Polygon shapePolygon(ShapeId id) const;
     Segment shapeSegment(ShapeId id) const;
+    ChainSegment shapeChainSegment(ShapeId id) const;
     /// Takes effect at the next step: existing contacts are re-filtered, new pairs found.
     void setShapeFilter(ShapeId id, const Filter& filter);
     /// The value of ShapeDef::userData, or the last one set; pivot2d never reads it.

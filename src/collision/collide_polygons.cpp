@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "collision/clipping.h"
 #include "collision/manifold.h"
 
 namespace pivot {
@@ -31,17 +32,6 @@ namespace {
 // Box2D's reference-face tolerance: B's face must beat A's by this much to become the
 // reference, so that two nearly equal faces do not swap every step (m).
 constexpr float kReferenceFaceTolerance = 0.1f * kLinearSlop;
-
-// The frame `to` as seen from the frame `from`: maps `to`-local points into `from`-local ones.
-// Written as one composed transform (rather than two transforms per point) so that the
-// arithmetic, and with it every near-tie decision, is that of the reference engine.
-Transform relativeTransform(const Transform& from, const Transform& to) {
-    Transform t;
-    t.q.s = from.q.c * to.q.s - from.q.s * to.q.c;
-    t.q.c = from.q.c * to.q.c + from.q.s * to.q.s;
-    t.p = inverseRotate(from.q, to.p - from.p);
-    return t;
-}
 
 struct FaceSeparation {
     int face = 0;
@@ -68,16 +58,6 @@ FaceSeparation maxFaceSeparation(const ConvexPolygon& poly1, const Transform& xf
     return best;
 }
 
-// A point of the incident edge during clipping, with the features that made it: the
-// reference polygon's face or vertex, and the incident polygon's vertex or face.
-struct ClipVertex {
-    Vec2 point;
-    std::uint8_t referenceIndex = 0;
-    std::uint8_t incidentIndex = 0;
-    FeatureType referenceType = FeatureType::Face;
-    FeatureType incidentType = FeatureType::Vertex;
-};
-
 // The incident edge (world frame) of poly2 against face `referenceFace` of poly1.
 void findIncidentEdge(ClipVertex edge[2], const ConvexPolygon& poly1, const Transform& xf1,
                       int referenceFace, const ConvexPolygon& poly2, const Transform& xf2) {
@@ -98,27 +78,6 @@ void findIncidentEdge(ClipVertex edge[2], const ConvexPolygon& poly1, const Tran
                FeatureType::Face, FeatureType::Vertex};
     edge[1] = {transformPoint(xf2, poly2.vertices[i2]), face, static_cast<std::uint8_t>(i2),
                FeatureType::Face, FeatureType::Vertex};
-}
-
-// Keeps the part of segment `in` behind the plane dot(normal, x) = offset (Sutherland-Hodgman
-// for one plane). A point made by the cut is where reference vertex `referenceVertex` meets the
-// incident face; the incident index is taken from in[0], whatever in[0] is, which is what the
-// reference does and what makes the ids agree. Returns the number of points written.
-int clipSegmentToLine(ClipVertex out[2], const ClipVertex in[2], Vec2 normal, float offset,
-                      int referenceVertex) {
-    int count = 0;
-    const float distance0 = dot(normal, in[0].point) - offset;
-    const float distance1 = dot(normal, in[1].point) - offset;
-    if (distance0 <= 0.0f) out[count++] = in[0];
-    if (distance1 <= 0.0f) out[count++] = in[1];
-    if (distance0 * distance1 < 0.0f) {
-        const float t = distance0 / (distance0 - distance1);
-        out[count] = {in[0].point + t * (in[1].point - in[0].point),
-                      static_cast<std::uint8_t>(referenceVertex), in[0].incidentIndex,
-                      FeatureType::Vertex, FeatureType::Face};
-        ++count;
-    }
-    return count;
 }
 
 // The closest points of the segments p1-q1 and p2-q2, as the fractions s along the first and t

@@ -237,41 +237,87 @@ std::string makeConvexPolygon(const Polygon& input, ConvexPolygon& out) {
             }
         }
     }
+    poly.centroid = polygonCentroid(poly.vertices.data(), poly.count);
     out = poly;
+    return {};
+}
+
+Vec2 polygonCentroid(const Vec2* vertices, int count) {
+    // Triangles fanned from the first vertex, measured from it (small numbers, little
+    // round-off); the sums in Box2D 2.4.1's order, so the one-sided segment routine's front test
+    // sees the same centroid as that engine's.
+    const Vec2 origin = vertices[0];
+    const float third = 1.0f / 3.0f;
+    Vec2 weighted{0.0f, 0.0f};
+    float area = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        const Vec2 p1 = vertices[0] - origin;
+        const Vec2 p2 = vertices[i] - origin;
+        const Vec2 p3 = i + 1 < count ? vertices[i + 1] - origin : vertices[0] - origin;
+        const float triangleArea = 0.5f * cross(p2 - p1, p3 - p1);
+        area += triangleArea;
+        weighted += triangleArea * third * (p1 + p2 + p3);
+    }
+    return (1.0f / area) * weighted + origin;
+}
+
+std::string checkPathPoint(const std::string& name, Vec2 point) {
+    if (!isFinite(point)) return name + " must be finite (got " + formatVec2(point) + ")";
+    if (std::fpclassify(point.x) == FP_SUBNORMAL || std::fpclassify(point.y) == FP_SUBNORMAL) {
+        return name + " must be 0 or a normal float, not a denormal (got " + formatVec2(point) +
+               ")";
+    }
+    if (std::fabs(point.x) > kMaxCoordinate || std::fabs(point.y) > kMaxCoordinate) {
+        return name + " must be within +-kMaxCoordinate (" + formatFloat(kMaxCoordinate) +
+               " m) (got " + formatVec2(point) + ")";
+    }
+    return {};
+}
+
+std::string checkPathStep(const std::string& from, Vec2 a, const std::string& to, Vec2 b) {
+    const float distance = length(b - a);
+    // Shorter than the slop a contact could not resolve it, as for a polygon's edges; and the
+    // segment routines take directions from these steps.
+    if (!(distance >= kLinearSlop)) {
+        return from + " and " + to + " must be at least kLinearSlop (" + formatFloat(kLinearSlop) +
+               " m) apart (got " + formatFloat(distance) + " m)" +
+               (distance == 0.0f ? " (repeated point)" : "");
+    }
     return {};
 }
 
 std::string makeSegmentPolygon(const Segment& input, ConvexPolygon& out) {
     const Vec2 points[2] = {input.point1, input.point2};
     for (int i = 0; i < 2; ++i) {
-        const char* name = i == 0 ? "segment.point1" : "segment.point2";
-        if (!isFinite(points[i])) {
-            return std::string(name) + " must be finite (got " + formatVec2(points[i]) + ")";
-        }
-        if (std::fpclassify(points[i].x) == FP_SUBNORMAL ||
-            std::fpclassify(points[i].y) == FP_SUBNORMAL) {
-            return std::string(name) + " must be 0 or a normal float, not a denormal (got " +
-                   formatVec2(points[i]) + ")";
-        }
-        if (std::fabs(points[i].x) > kMaxCoordinate || std::fabs(points[i].y) > kMaxCoordinate) {
-            return std::string(name) + " must be within +-kMaxCoordinate (" +
-                   formatFloat(kMaxCoordinate) + " m) (got " + formatVec2(points[i]) + ")";
-        }
+        std::string problem =
+            checkPathPoint(i == 0 ? "segment.point1" : "segment.point2", points[i]);
+        if (!problem.empty()) return problem;
     }
+    std::string problem = checkPathStep("segment.point1", points[0], "segment.point2", points[1]);
+    if (!problem.empty()) return problem;
     const Vec2 edge = points[1] - points[0];
     const float edgeLength = length(edge);
-    // Shorter than the slop a contact could not resolve it, as for a polygon's edges.
-    if (!(edgeLength >= kLinearSlop)) {
-        return "segment.point1 and segment.point2 must be at least kLinearSlop (" +
-               formatFloat(kLinearSlop) + " m) apart (got " + formatFloat(edgeLength) + " m)";
-    }
     out = ConvexPolygon{};
     out.count = 2;
     out.vertices[0] = points[0];
     out.vertices[1] = points[1];
     out.normals[0] = (1.0f / edgeLength) * cross(edge, 1.0f);
     out.normals[1] = -out.normals[0];
+    out.centroid = 0.5f * (points[0] + points[1]);
     return {};
+}
+
+std::string makeChainSegment(const ChainSegment& input, ConvexPolygon& out) {
+    std::string problem = checkPathPoint("ghost1", input.ghost1);
+    if (problem.empty()) problem = checkPathPoint("ghost2", input.ghost2);
+    if (problem.empty()) problem = makeSegmentPolygon(input.segment, out);
+    if (problem.empty()) {
+        problem = checkPathStep("ghost1", input.ghost1, "segment.point1", input.segment.point1);
+    }
+    if (problem.empty()) {
+        problem = checkPathStep("segment.point2", input.segment.point2, "ghost2", input.ghost2);
+    }
+    return problem;
 }
 
 void checkCircle(const char* call, const Circle& circle) {

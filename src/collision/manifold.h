@@ -11,6 +11,7 @@
 //    points in B's frame.
 //  - FaceB: as FaceA with the roles swapped: reference face on B (B's frame), points in A's
 //    frame; the world normal is then -(B's face normal).
+//  A segment's Circles manifold has its nearer end as localPoint (A's frame).
 // Radii: circles collide with their radius, polygons with kPolygonRadius.
 #pragma once
 
@@ -65,6 +66,21 @@ void collidePolygonAndCircle(Manifold& manifold, const ConvexPolygon& polygonA,
                              const Transform& xfA, const Circle& circleB, const Transform& xfB);
 void collidePolygons(Manifold& manifold, const ConvexPolygon& polygonA, const Transform& xfA,
                      const ConvexPolygon& polygonB, const Transform& xfB);
+
+/// A segment as the segment routines see it, in its body's frame: from v1 to v2, and for a
+/// one-sided segment (a chain's) the chain's points before v1 and after v2. A segment is always
+/// shape A of its contacts; its skin is kPolygonRadius.
+struct EdgeSegment {
+    Vec2 ghost1;
+    Vec2 v1;
+    Vec2 v2;
+    Vec2 ghost2;
+    bool oneSided = false;
+};
+void collideSegmentAndCircle(Manifold& manifold, const EdgeSegment& segmentA, const Transform& xfA,
+                             const Circle& circleB, const Transform& xfB);
+void collideSegmentAndPolygon(Manifold& manifold, const EdgeSegment& segmentA, const Transform& xfA,
+                              const ConvexPolygon& polygonB, const Transform& xfB);
 
 WorldManifold computeWorldManifold(const Manifold& manifold, const Transform& xfA, float radiusA,
                                    const Transform& xfB, float radiusB);

@@ -106,13 +106,15 @@ std::optional<RayEntry> rayCastPolygon(const ConvexPolygon& polygon, const Trans
 }
 
 std::optional<RayEntry> rayCastSegment(const ConvexPolygon& segment, const Transform& xf,
-                                       Vec2 origin, Vec2 translation, float maxFraction) {
+                                       Vec2 origin, Vec2 translation, float maxFraction,
+                                       bool oneSided) {
     const Vec2 p = inverseTransformPoint(xf, origin);
     const Vec2 d = inverseRotate(xf.q, translation);
     const Vec2 a = segment.vertices[0];
     const Vec2 n = segment.normals[0];
     const float approach = dot(n, d);
-    if (approach == 0.0f) return std::nullopt;  // along the line, or no translation
+    if (approach == 0.0f) return std::nullopt;             // along the line, or no translation
+    if (oneSided && approach > 0.0f) return std::nullopt;  // from behind
     const float t = dot(n, a - p) / approach;
     if (!(t >= 0.0f && t <= maxFraction)) return std::nullopt;
     const Vec2 e = segment.vertices[1] - a;

@@ -15,7 +15,8 @@
 //
 // Segment (a to b, unit normal n): the ray crosses the segment's line at
 // t = n . (a - origin) / (n . d), where it must also lie between a and b; the normal faces the
-// side the ray comes from. A ray along the line never crosses it.
+// side the ray comes from. A ray along the line never crosses it. A one-sided (chain) segment is
+// only hit from its front, the side n points to (n . d < 0).
 #pragma once
 
 #include <optional>
@@ -40,7 +41,8 @@ std::optional<RayEntry> rayCastPolygon(const ConvexPolygon& polygon, const Trans
 
 /// `segment` as makeSegmentPolygon stores it (vertices 0 and 1, normals[0] the unit normal).
 std::optional<RayEntry> rayCastSegment(const ConvexPolygon& segment, const Transform& xf,
-                                       Vec2 origin, Vec2 translation, float maxFraction);
+                                       Vec2 origin, Vec2 translation, float maxFraction,
+                                       bool oneSided = false);
 
 bool circleContains(const Circle& circle, const Transform& xf, Vec2 point);
 bool polygonContains(const ConvexPolygon& polygon, const Transform& xf, Vec2 point);

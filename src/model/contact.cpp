@@ -3,13 +3,18 @@
 namespace pivot {
 
 namespace {
-// Contacts are made with the polygon first whenever a polygon meets a circle (see
-// World::Impl::addPair), so these three cases are all there is. A segment is a polygon of two
-// vertices to the narrow phase (its skin is a polygon's too); two segments never meet (both
-// are on static or kinematic bodies).
+// Contacts are made with a segment first, and with a polygon before a circle (see
+// ContactManager::addPair), so these five cases are all there is; two segments never meet
+// (both are on static or kinematic bodies).
 void collide(Manifold& m, const Shape& a, const Transform& xfA, const Shape& b,
              const Transform& xfB) {
-    if (a.type != ShapeType::Circle) {
+    if (isSegmentLike(a.type)) {
+        if (b.type == ShapeType::Circle) {
+            collideSegmentAndCircle(m, edgeSegmentOf(a), xfA, b.circle, xfB);
+        } else {
+            collideSegmentAndPolygon(m, edgeSegmentOf(a), xfA, b.polygon, xfB);
+        }
+    } else if (a.type != ShapeType::Circle) {
         if (b.type != ShapeType::Circle) {
             collidePolygons(m, a.polygon, xfA, b.polygon, xfB);
         } else {

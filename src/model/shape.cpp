@@ -111,7 +111,7 @@ OriginMass roundedPolygonMassAboutOrigin(const ConvexPolygon& polygon, float den
 
 OriginMass shapeMassAboutOrigin(const Shape& shape) {
     if (shape.type == ShapeType::Circle) return circleMassAboutOrigin(shape.circle, shape.density);
-    if (shape.type == ShapeType::Segment) {
+    if (isSegmentLike(shape.type)) {
         OriginMass m;  // no area, no mass (segments sit on static and kinematic bodies)
         m.center = 0.5f * (shape.polygon.vertices[0] + shape.polygon.vertices[1]);
         return m;

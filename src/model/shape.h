@@ -7,6 +7,7 @@
 #include "collision/aabb.h"
 #include "collision/distance.h"
 #include "collision/geometry.h"
+#include "collision/manifold.h"
 #include "pivot/shape.h"
 
 namespace pivot {
@@ -15,7 +16,10 @@ struct Shape {
     std::int32_t body = -1;
     ShapeType type = ShapeType::Circle;
     Circle circle;
-    ConvexPolygon polygon;  // a polygon's, or a segment's as a two-sided polygon of two vertices
+    ConvexPolygon
+        polygon;  // a polygon's, or a segment's (either kind) as a polygon of two vertices
+    Vec2 ghost1;  // a chain segment's neighbouring chain points (ChainSegment)
+    Vec2 ghost2;
     float density = 0.0f;
     float friction = 0.0f;
     float restitution = 0.0f;
@@ -38,6 +42,22 @@ struct OriginMass {
     float centroidInertia = 0.0f;
 };
 OriginMass shapeMassAboutOrigin(const Shape& shape);
+
+/// Segments and chain segments: no area, no mass, always shape A of their contacts.
+inline bool isSegmentLike(ShapeType type) {
+    return type == ShapeType::Segment || type == ShapeType::ChainSegment;
+}
+
+/// A segment or chain segment as the segment routines see it.
+inline EdgeSegment edgeSegmentOf(const Shape& shape) {
+    EdgeSegment e;
+    e.v1 = shape.polygon.vertices[0];
+    e.v2 = shape.polygon.vertices[1];
+    e.oneSided = shape.type == ShapeType::ChainSegment;
+    e.ghost1 = shape.ghost1;
+    e.ghost2 = shape.ghost2;
+    return e;
+}
 
 /// The radius a shape collides with: a circle's own, or the skin kPolygonRadius of polygons and
 /// segments beyond a polygon's rounding.

@@ -25,9 +25,12 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     if (pairs_.find(key) != -1) return;
     if (!bodiesMayCollide(a.body, b.body)) return;
 
-    // The narrow phase has polygon-circle but not circle-polygon: put the polygon (or the
-    // segment, a polygon of two vertices to it) first.
-    if (a.type == ShapeType::Circle && b.type != ShapeType::Circle) std::swap(shapeA, shapeB);
+    // The narrow phase has segment-polygon, segment-circle and polygon-circle, not the
+    // reverse: segments first, then polygons, then circles.
+    auto order = [](ShapeType type) {
+        return isSegmentLike(type) ? 0 : type == ShapeType::Polygon ? 1 : 2;
+    };
+    if (order(a.type) > order(b.type)) std::swap(shapeA, shapeB);
 
     Contact contact;
     contact.shapeA = shapeA;

@@ -93,7 +93,7 @@ void World::setBodyType(BodyId id, BodyType type) {
     if (type == BodyType::Dynamic) {
         // The rule createShape enforces, so a dynamic body's mass always comes from its shapes.
         for (std::int32_t s = body.shapeList; s != -1; s = w.shapes[s].next) {
-            if (w.shapes[s].type == ShapeType::Segment) {
+            if (isSegmentLike(w.shapes[s].type)) {
                 fail(call, "a dynamic body cannot carry a segment, which has no mass, and shape " +
                                std::to_string(s) + " is one (destroy it first)");
             }

@@ -210,6 +210,10 @@ std::uint64_t World::stateHash() const {
             for (int i = 0; i < s.polygon.count; ++i) h.add(s.polygon.vertices[i]);
             // Only when rounded, so that hashes recorded before rounding existed still hold.
             if (s.polygon.radius != 0.0f) h.add(s.polygon.radius);
+            if (s.type == ShapeType::ChainSegment) {
+                h.add(s.ghost1);
+                h.add(s.ghost2);
+            }
         }
         h.add(s.density);
         h.add(s.friction);

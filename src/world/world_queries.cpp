@@ -22,16 +22,19 @@ std::optional<RayEntry> castOnShape(const Shape& shape, const Transform& xf, Vec
             return rayCastPolygon(shape.polygon, xf, origin, translation, maxFraction);
         case ShapeType::Segment:
             return rayCastSegment(shape.polygon, xf, origin, translation, maxFraction);
+        case ShapeType::ChainSegment:
+            return rayCastSegment(shape.polygon, xf, origin, translation, maxFraction, true);
     }
     return std::nullopt;
 }
 
-/// A segment has no inside: it contains no point.
+/// A segment (of either kind) has no inside: it contains no point.
 bool shapeContains(const Shape& shape, const Transform& xf, Vec2 point) {
     switch (shape.type) {
         case ShapeType::Circle: return circleContains(shape.circle, xf, point);
         case ShapeType::Polygon: return polygonContains(shape.polygon, xf, point);
-        case ShapeType::Segment: return false;
+        case ShapeType::Segment:
+        case ShapeType::ChainSegment: return false;
     }
     return false;
 }
@@ -152,6 +155,17 @@ std::optional<RayHit> rayCast(const Segment& segment, const Transform& xf, Vec2 
     checkTransform(call, xf);
     checkRay(call, origin, translation);
     return asHit(ShapeId{}, rayCastSegment(checked, xf, origin, translation, 1.0f));
+}
+
+std::optional<RayHit> rayCast(const ChainSegment& segment, const Transform& xf, Vec2 origin,
+                              Vec2 translation) {
+    const char* call = "pivot::rayCast";
+    ConvexPolygon checked;
+    const std::string problem = makeChainSegment(segment, checked);
+    if (!problem.empty()) fail(call, problem);
+    checkTransform(call, xf);
+    checkRay(call, origin, translation);
+    return asHit(ShapeId{}, rayCastSegment(checked, xf, origin, translation, 1.0f, true));
 }
 
 bool testPoint(const Circle& circle, const Transform& xf, Vec2 point) {

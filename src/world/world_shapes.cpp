@@ -90,21 +90,95 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& po
     return attachShape(call, *impl_, bodyIndex, def, shape);
 }
 
-ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Segment& segment) {
-    const char* call = "World::createShape";
-    impl_->requireNoQuery(call);
-    std::int32_t bodyIndex = impl_->bodyIndex(call, bodyId);
-    if (impl_->bodies[bodyIndex].type == BodyType::Dynamic) {
+namespace {
+
+std::int32_t segmentBody(const char* call, World::Impl& w, BodyId bodyId, const ShapeDef& def) {
+    w.requireNoQuery(call);
+    std::int32_t bodyIndex = w.bodyIndex(call, bodyId);
+    if (w.bodies[bodyIndex].type == BodyType::Dynamic) {
         fail(call,
              "a segment has no area and so no mass: it goes on a static or kinematic "
              "body, not a dynamic one");
     }
-    checkShapeDef(call, def, impl_->bodies[bodyIndex]);
+    checkShapeDef(call, def, w.bodies[bodyIndex]);
+    return bodyIndex;
+}
+
+}  // namespace
+
+ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Segment& segment) {
+    const char* call = "World::createShape";
+    const std::int32_t bodyIndex = segmentBody(call, *impl_, bodyId, def);
     Shape shape;
     shape.type = ShapeType::Segment;
     std::string problem = makeSegmentPolygon(segment, shape.polygon);
     if (!problem.empty()) fail(call, problem);
     return attachShape(call, *impl_, bodyIndex, def, shape);
+}
+
+ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ChainSegment& segment) {
+    const char* call = "World::createShape";
+    const std::int32_t bodyIndex = segmentBody(call, *impl_, bodyId, def);
+    Shape shape;
+    shape.type = ShapeType::ChainSegment;
+    std::string problem = makeChainSegment(segment, shape.polygon);
+    if (!problem.empty()) fail(call, problem);
+    shape.ghost1 = segment.ghost1;
+    shape.ghost2 = segment.ghost2;
+    return attachShape(call, *impl_, bodyIndex, def, shape);
+}
+
+std::vector<ShapeId> World::createChain(BodyId bodyId, const ShapeDef& def, const Chain& chain) {
+    const char* call = "World::createChain";
+    const std::int32_t bodyIndex = segmentBody(call, *impl_, bodyId, def);
+    const std::vector<Vec2>& p = chain.points;
+    const int n = static_cast<int>(p.size());
+    const int fewest = chain.loop ? 3 : 4;
+    if (n < fewest) {
+        fail(call, std::string(chain.loop ? "a loop" : "an open chain") + " needs at least " +
+                       std::to_string(fewest) + " points (got " + std::to_string(n) + ")");
+    }
+    auto name = [](int i) { return "chain.points[" + std::to_string(i) + "]"; };
+    for (int i = 0; i < n; ++i) {
+        std::string problem = checkPathPoint(name(i), p[i]);
+        if (!problem.empty()) fail(call, problem);
+    }
+    const int steps = chain.loop ? n : n - 1;
+    for (int i = 0; i < steps; ++i) {
+        const int j = (i + 1) % n;
+        std::string problem = checkPathStep(name(i), p[i], name(j), p[j]);
+        if (!problem.empty()) fail(call, problem);
+    }
+    // Segment k runs from point k to point k + 1 (a loop's last one back to point 0; an open
+    // chain's first and last points are ghosts only).
+    const int first = chain.loop ? 0 : 1;
+    const int segments = chain.loop ? n : n - 3;
+    auto at = [&](int i) { return p[static_cast<std::size_t>((i + n) % n)]; };
+    std::vector<Shape> made;
+    made.reserve(static_cast<std::size_t>(segments));
+    for (int k = first; k < first + segments; ++k) {
+        Shape shape;
+        shape.type = ShapeType::ChainSegment;
+        const ChainSegment segment{at(k - 1), Segment{at(k), at(k + 1)}, at(k + 2)};
+        std::string problem = makeChainSegment(segment, shape.polygon);
+        if (!problem.empty()) fail(call, problem);  // checked above; kept as a guard
+        shape.ghost1 = segment.ghost1;
+        shape.ghost2 = segment.ghost2;
+        made.push_back(shape);
+    }
+    std::vector<ShapeId> ids;
+    ids.reserve(made.size());
+    try {
+        for (const Shape& shape : made) {
+            ids.push_back(attachShape(call, *impl_, bodyIndex, def, shape));
+        }
+    } catch (...) {
+        // All or nothing: a chain cut short would be a chain the caller did not ask for.
+        for (ShapeId id : ids) impl_->removeShape(impl_->shapeIndex(call, id));
+        updateBodyMass(impl_->bodies[bodyIndex], impl_->shapes);
+        throw;
+    }
+    return ids;
 }
 
 void World::destroyShape(ShapeId id) {
@@ -146,6 +220,7 @@ const char* shapeTypeName(ShapeType type) {
         case ShapeType::Circle: return "a circle";
         case ShapeType::Polygon: return "a polygon";
         case ShapeType::Segment: return "a segment";
+        case ShapeType::ChainSegment: return "a chain segment";
     }
     return "unknown";
 }
@@ -168,6 +243,13 @@ Circle World::shapeCircle(ShapeId id) const {
 Segment World::shapeSegment(ShapeId id) const {
     const Shape& shape = shapeOfType("World::shapeSegment", *impl_, id, ShapeType::Segment);
     return Segment{shape.polygon.vertices[0], shape.polygon.vertices[1]};
+}
+
+ChainSegment World::shapeChainSegment(ShapeId id) const {
+    const Shape& shape =
+        shapeOfType("World::shapeChainSegment", *impl_, id, ShapeType::ChainSegment);
+    return ChainSegment{shape.ghost1, Segment{shape.polygon.vertices[0], shape.polygon.vertices[1]},
+                        shape.ghost2};
 }
 
 Polygon World::shapePolygon(ShapeId id) const {

@@ -33,6 +33,11 @@ std::vector<Outline> outlinesOf(const World& world, BodyId body) {
         } else if (outline.type == ShapeType::Segment) {
             const Segment segment = world.shapeSegment(shape);
             outline.vertices = {segment.point1, segment.point2};  // drawn as a closed line
+        } else if (outline.type == ShapeType::ChainSegment) {
+            // Drawn as a segment: the replay shows where shapes are, not which side is solid.
+            const Segment segment = world.shapeChainSegment(shape).segment;
+            outline.type = ShapeType::Segment;
+            outline.vertices = {segment.point1, segment.point2};
         } else {
             Polygon polygon = world.shapePolygon(shape);
             outline.vertices = scenes::polygonOutline(polygon);

@@ -45,8 +45,11 @@ SnapshotFrame captureFrame(const World& world, const std::string& caption) {
                 Circle c = world.shapeCircle(shape);
                 frame.circles.push_back(
                     {transformPoint(xf, c.center), c.radius, world.bodyAngle(body), isStatic});
-            } else if (world.shapeType(shape) == ShapeType::Segment) {
-                const Segment s = world.shapeSegment(shape);
+            } else if (world.shapeType(shape) == ShapeType::Segment ||
+                       world.shapeType(shape) == ShapeType::ChainSegment) {
+                const Segment s = world.shapeType(shape) == ShapeType::Segment
+                                      ? world.shapeSegment(shape)
+                                      : world.shapeChainSegment(shape).segment;
                 SnapshotFrame::PolygonShape outline;  // two points: drawn as a line
                 outline.isStatic = isStatic;
                 outline.vertices = {transformPoint(xf, s.point1), transformPoint(xf, s.point2)};

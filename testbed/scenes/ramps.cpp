@@ -1,7 +1,8 @@
-// Segments as level geometry: a ramp, a floor with a bump of two segments on it, and a wall, all
-// segments of one static body. Balls and boxes (one rounded) slide and roll down the ramp, over the
-// bump and into a chain of five links hanging from a pin above the floor, which they push aside;
-// the chain's joints take the knocks.
+// Segments as level geometry: a ramp, a floor with a bump on it (one chain shape, one-sided,
+// solid from above) and a wall (a two-sided segment), on one static body. Balls and boxes (one
+// rounded) slide and roll down the ramp, over the joins and the bump and into a chain of five
+// links hanging from a pin above the floor, which they push aside; the chain's joints take the
+// knocks.
 #include "scene.h"
 
 namespace pivot::scenes {
@@ -12,10 +13,18 @@ void buildRamps(Scene& scene, const SceneOptions& options) {
     ShapeDef level;
     level.density = 0.0f;
     level.friction = 0.1f;
-    world.createShape(ground, level, Segment{{-14.0f, 12.0f}, {-3.0f, 0.0f}});
-    world.createShape(ground, level, Segment{{-15.0f, 0.0f}, {15.0f, 0.0f}});
-    world.createShape(ground, level, Segment{{1.0f, 0.0f}, {3.0f, 0.3f}});
-    world.createShape(ground, level, Segment{{3.0f, 0.3f}, {4.0f, 0.0f}});
+    // Right to left, so that each segment's solid side (its right) faces up; the first and last
+    // points are ghosts: the floor runs on into the wall, the ramp on upwards.
+    world.createChain(ground, level,
+                      Chain{{{16.0f, 0.0f},
+                             {15.0f, 0.0f},
+                             {4.0f, 0.0f},
+                             {3.0f, 0.3f},
+                             {1.0f, 0.0f},
+                             {-3.0f, 0.0f},
+                             {-14.0f, 12.0f},
+                             {-15.0f, 13.1f}},
+                            false});
     world.createShape(ground, level, Segment{{15.0f, 0.0f}, {15.0f, 8.0f}});
 
     // Three balls and three boxes on the ramp, 1.5 m apart, the boxes first (lower); the middle

@@ -101,7 +101,7 @@ const std::vector<SceneInfo>& allScenes() {
          buildOverlapRecovery},
         {"far_chain", "the chain 30 km from the origin, where floats are 2 mm apart",
          buildFarChain},
-        {"ramps", "balls and boxes down a segment ramp, over a bump and into a hanging chain",
+        {"ramps", "balls and boxes down a chain-shape ramp, over a bump and into a hanging chain",
          buildRamps},
         {"bullets", "a pyramid shot at by ten bullets at 120 m/s (continuous collision)",
          buildBullets},

@@ -123,8 +123,20 @@ struct RandomWorld {
         const int shapeKind = static_cast<int>(uniform(0.0f, 4.0f));
         if (shapeKind == 3 && def.type != BodyType::Dynamic) {
             const float length = uniform(0.5f, 6.0f);
-            world.createShape(body, shapeDef,
-                              Segment{{-0.5f * length, 0.0f}, {0.5f * length, 0.3f}});
+            if (bodies.size() % 2 == 0) {
+                world.createShape(body, shapeDef,
+                                  Segment{{-0.5f * length, 0.0f}, {0.5f * length, 0.3f}});
+            } else {
+                // A zigzag chain (one-sided: rays from behind pass through it).
+                const float rise = uniform(-0.5f, 0.5f);
+                world.createChain(body, shapeDef,
+                                  Chain{{{length, 0.0f},
+                                         {0.5f * length, rise},
+                                         {0.0f, 0.0f},
+                                         {-0.5f * length, rise},
+                                         {-length, 0.0f}},
+                                        false});
+            }
         } else if (shapeKind == 0) {
             world.createShape(body, shapeDef,
                               Circle{{uniform(-0.5f, 0.5f), 0.0f}, uniform(0.2f, 1.5f)});
@@ -175,7 +187,10 @@ bool sees(const QueryFilter& filter, const Filter& shape) {
 
 bool contains(const World& world, ShapeId shape, Vec2 point) {
     const Transform xf = world.bodyTransform(world.shapeBody(shape));
-    if (world.shapeType(shape) == ShapeType::Segment) return false;  // no inside
+    if (world.shapeType(shape) == ShapeType::Segment ||
+        world.shapeType(shape) == ShapeType::ChainSegment) {
+        return false;  // no inside
+    }
     return world.shapeType(shape) == ShapeType::Circle
                ? testPoint(world.shapeCircle(shape), xf, point)
                : testPoint(world.shapePolygon(shape), xf, point);
@@ -419,8 +434,11 @@ double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
 std::vector<Vec2> outlineOf(const World& world, ShapeId shape) {
     const Transform xf = world.bodyTransform(world.shapeBody(shape));
     std::vector<Vec2> out;
-    if (world.shapeType(shape) == ShapeType::Segment) {
-        const Segment s = world.shapeSegment(shape);
+    if (world.shapeType(shape) == ShapeType::Segment ||
+        world.shapeType(shape) == ShapeType::ChainSegment) {
+        const Segment s = world.shapeType(shape) == ShapeType::Segment
+                              ? world.shapeSegment(shape)
+                              : world.shapeChainSegment(shape).segment;
         return {transformPoint(xf, s.point1), transformPoint(xf, s.point2)};
     }
     const Polygon p = world.shapePolygon(shape);

@@ -640,6 +640,16 @@ TEST(Validation, EveryCallChecksItsIds) {
     std::vector<std::function<void()>> bodyCalls = {
         [&] { f.world.destroyBody(body); },
         [&] { f.world.bodyShapes(body); },
+        [&] { f.world.createShape(body, ShapeDef{}, Circle{}); },
+        [&] {
+            f.world.createShape(body, ShapeDef{}, Segment{{0, 0}, {1, 0}});
+        },
+        [&] {
+            f.world.createShape(body, ShapeDef{}, ChainSegment{{2, 0}, {{1, 0}, {0, 0}}, {-1, 0}});
+        },
+        [&] {
+            f.world.createChain(body, ShapeDef{}, Chain{{{0, 0}, {1, 0}, {2, 0}, {3, 0}}, false});
+        },
         [&] { f.world.bodyType(body); },
         [&] { f.world.setBodyType(body, BodyType::Static); },
         [&] { f.world.bodyPosition(body); },
@@ -696,6 +706,8 @@ TEST(Validation, EveryCallChecksItsIds) {
         [&] { f.world.shapeType(shape); },
         [&] { f.world.shapeCircle(shape); },
         [&] { f.world.shapePolygon(shape); },
+        [&] { f.world.shapeSegment(shape); },
+        [&] { f.world.shapeChainSegment(shape); },
         [&] { f.world.setShapeFilter(shape, Filter{}); },
         [&] { f.world.shapeDensity(shape); },
         [&] { f.world.setShapeDensity(shape, 1.0f); },

@@ -440,7 +440,8 @@ private:
 
     bool hasSegment(BodyId body) const {
         for (ShapeId s : world_->bodyShapes(body)) {
-            if (world_->shapeType(s) == ShapeType::Segment) return true;
+            const ShapeType type = world_->shapeType(s);
+            if (type == ShapeType::Segment || type == ShapeType::ChainSegment) return true;
         }
         return false;
     }
@@ -480,6 +481,7 @@ private:
             {6, &Driver::createCircle},
             {8, &Driver::createPolygon},
             {3, &Driver::createSegment},
+            {2, &Driver::createChain},
             {7, &Driver::createJoint},
             {3, &Driver::createDistanceJoint},
             {2, &Driver::createPulleyJoint},
@@ -593,7 +595,7 @@ private:
         Arg<ShapeDef> def = shapeDef(!isDynamic(body));
         Verdict v = geometryVerdict;
         if (body.bad || def.bad) v = Verdict::Bad;
-        if constexpr (std::is_same_v<Shape, Segment>) {
+        if constexpr (std::is_same_v<Shape, Segment> || std::is_same_v<Shape, ChainSegment>) {
             if (isDynamic(body)) v = Verdict::Bad;  // a segment has no mass
         }
         if (!body.bad) v = afterMassChange(body.value, v);
@@ -628,6 +630,71 @@ private:
         const bool bad = point1.bad || point2.bad || !isFinite(d) || !(length(d) >= kLinearSlop);
         const Segment segment{point1.value, point2.value};
         createShape(segment, verdict(bad), "segment");
+    }
+
+    // A short chain of one-sided segments (an open one of 4 to 6 points, or a loop of 3), mostly
+    // valid, now and then with a repeated point or a bad coordinate; or now and then a lone
+    // chain segment. createChain makes all of its segments or none.
+    void createChain() {
+        Arg<Vec2> start = values_->coordinate(10.0f);
+        Chain chain;
+        chain.loop = random_.chance(0.3f);
+        const int count = chain.loop ? 3 : random_.between(4, 6);
+        chain.points.push_back(start.value);
+        for (int i = 1; i < count; ++i) {
+            const float angle = random_.uniform(-kPi, kPi);
+            const float step = random_.uniform(0.3f, 3.0f);
+            Vec2 next = chain.points.back() + step * Vec2{std::cos(angle), std::sin(angle)};
+            if (random_.chance(0.03f)) next = chain.points.back();  // a repeated point
+            chain.points.push_back(next);
+        }
+        // Whether the first n points (closed into a loop or not) are refused: a bad start, a
+        // point out of range, or a step shorter than the slop (a repeated point; or round-off at
+        // the edge of the coordinate range bringing two together).
+        auto refused = [&](int n, bool closed) {
+            if (start.bad) return true;
+            for (int i = 0; i < n; ++i) {
+                const Vec2 p = chain.points[i];
+                if (!isFinite(p) || std::fabs(p.x) > kMaxCoordinate ||
+                    std::fabs(p.y) > kMaxCoordinate) {
+                    return true;
+                }
+            }
+            for (int i = 1; i < n + (closed ? 1 : 0); ++i) {
+                if (!(length(chain.points[i % n] - chain.points[i - 1]) >= kLinearSlop))
+                    return true;
+            }
+            return false;
+        };
+        if (random_.chance(0.3f) && count >= 4) {
+            const ChainSegment one{
+                chain.points[0], {chain.points[1], chain.points[2]}, chain.points[3]};
+            createShape(one, verdict(refused(4, false)), "chain segment");
+            return;
+        }
+        const bool bad = refused(count, chain.loop);
+        Arg<BodyId> body = pickBody();
+        const int made = chain.loop ? count : count - 3;
+        if (!body.bad &&
+            static_cast<int>(world_->bodyShapes(body.value).size()) + made > kMaxShapesPerBody) {
+            destroyShape();
+            return;
+        }
+        Arg<ShapeDef> def = shapeDef(true);
+        Verdict v = verdict(bad || body.bad || def.bad || isDynamic(body));
+        trace("createChain body=" + idText(body.value) + " points=" + std::to_string(count) +
+              " loop=" + std::to_string(chain.loop));
+        attempt("World::createChain", v, [&] {
+            const std::vector<ShapeId> ids = journal_.createChain(body.value, def.value, chain);
+            if (static_cast<int>(ids.size()) != made) failure("createChain: wrong segment count");
+            for (ShapeId id : ids) {
+                noteTag(id);
+                shapes_.remember(id);
+                if (world_->shapeType(id) != ShapeType::ChainSegment) {
+                    failure("createChain made another type");
+                }
+            }
+        });
     }
 
     void createPolygon() {
@@ -2042,7 +2109,7 @@ private:
             }
             case 3: {
                 const ShapeType type = shape.bad ? ShapeType::Circle : w.shapeType(shape.value);
-                const int ask = random_.below(3);
+                const int ask = random_.below(4);
                 if (ask == 0) {
                     attempt("World::shapeCircle", verdict(shape.bad || type != ShapeType::Circle),
                             [&] { w.shapeCircle(shape.value); });
@@ -2051,6 +2118,13 @@ private:
                             [&] {
                                 // What comes back must be accepted again as a segment.
                                 const Segment g = w.shapeSegment(shape.value);
+                                rayCast(g, Transform{{0.0f, 0.0f}, Rot(0.0f)}, {}, {1.0f, 1.0f});
+                            });
+                } else if (ask == 3) {
+                    attempt("World::shapeChainSegment",
+                            verdict(shape.bad || type != ShapeType::ChainSegment), [&] {
+                                // What comes back must be accepted again as a chain segment.
+                                const ChainSegment g = w.shapeChainSegment(shape.value);
                                 rayCast(g, Transform{{0.0f, 0.0f}, Rot(0.0f)}, {}, {1.0f, 1.0f});
                             });
                 } else {

@@ -101,6 +101,26 @@ ShapeId Journal::createShape(BodyId body, const ShapeDef& def, const Segment& se
     return id;
 }
 
+ShapeId Journal::createShape(BodyId body, const ShapeDef& def, const ChainSegment& segment) {
+    ShapeId id = world_->createShape(body, def, segment);
+    lines_.push_back("chainsegment " + nameNew('s', id) + " " + nameOf('b', body) + " " +
+                     shapeDefText(def) + " " + num(segment.ghost1) + " " +
+                     num(segment.segment.point1) + " " + num(segment.segment.point2) + " " +
+                     num(segment.ghost2));
+    return id;
+}
+
+std::vector<ShapeId> Journal::createChain(BodyId body, const ShapeDef& def, const Chain& chain) {
+    std::vector<ShapeId> ids = world_->createChain(body, def, chain);
+    // The shapes' names last: how many there are follows from the points and the loop flag.
+    std::string line = "chain " + nameOf('b', body) + " " + shapeDefText(def) + " " +
+                       num(chain.loop) + " " + num(static_cast<int>(chain.points.size()));
+    for (Vec2 p : chain.points) line += " " + num(p);
+    for (ShapeId id : ids) line += " " + nameNew('s', id);
+    lines_.push_back(line);
+    return ids;
+}
+
 JointId Journal::createJoint(const RevoluteJointDef& def) {
     JointId id = world_->createJoint(def);
     lines_.push_back(
@@ -617,6 +637,32 @@ ReplayResult replay(std::istream& in) {
                 p.radius = f.optionalFloat(0.0f);
                 call = [&w, &shapes, name, b, def, p] { shapes[name] = w.createShape(b, def, p); };
             }
+        } else if (command == "chainsegment") {
+            std::string name = f.word();
+            BodyId b = body(f.word());
+            ShapeDef def = f.shapeDef();
+            ChainSegment g;
+            g.ghost1 = f.v();
+            g.segment.point1 = f.v();
+            g.segment.point2 = f.v();
+            g.ghost2 = f.v();
+            call = [&w, &shapes, name, b, def, g] { shapes[name] = w.createShape(b, def, g); };
+        } else if (command == "chain") {
+            BodyId b = body(f.word());
+            ShapeDef def = f.shapeDef();
+            Chain chain;
+            chain.loop = f.b();
+            const int count = f.i();
+            for (int i = 0; i < count && i < 1000; ++i) chain.points.push_back(f.v());
+            std::vector<std::string> names;
+            const int made = chain.loop ? count : count - 3;
+            for (int i = 0; i < made && i < 1000; ++i) names.push_back(f.word());
+            call = [&w, &shapes, names, b, def, chain] {
+                const std::vector<ShapeId> ids = w.createChain(b, def, chain);
+                for (std::size_t i = 0; i < ids.size() && i < names.size(); ++i) {
+                    shapes[names[i]] = ids[i];
+                }
+            };
         } else if (command == "joint") {
             std::string name = f.word();
             RevoluteJointDef def;

@@ -32,6 +32,8 @@ public:
     ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const ChainSegment& segment);
+    std::vector<ShapeId> createChain(BodyId body, const ShapeDef& def, const Chain& chain);
     JointId createJoint(const RevoluteJointDef& def);
     JointId createJoint(const DistanceJointDef& def);
     JointId createJoint(const PulleyJointDef& def);

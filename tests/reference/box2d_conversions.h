@@ -31,6 +31,7 @@ inline ConvexPolygon toPivot(const b2PolygonShape& shape) {
         p.vertices[i] = toPivot(shape.m_vertices[i]);
         p.normals[i] = toPivot(shape.m_normals[i]);
     }
+    p.centroid = toPivot(shape.m_centroid);
     return p;
 }
 
