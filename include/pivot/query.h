@@ -48,6 +48,9 @@ std::optional<RayHit> rayCast(const Polygon& polygon, const Transform& xf, Vec2 
 /// normal faces the side the ray comes from. A ray along the segment's line does not hit it.
 std::optional<RayHit> rayCast(const Segment& segment, const Transform& xf, Vec2 origin,
                               Vec2 translation);
+/// A ray against one capsule (checked as World::createShape checks it).
+std::optional<RayHit> rayCast(const Capsule& capsule, const Transform& xf, Vec2 origin,
+                              Vec2 translation);
 /// A ray against one chain segment (checked as World::createShape checks it): only from its
 /// solid side, the right of point1 -> point2; a ray from behind passes through.
 std::optional<RayHit> rayCast(const ChainSegment& segment, const Transform& xf, Vec2 origin,
@@ -57,6 +60,7 @@ std::optional<RayHit> rayCast(const ChainSegment& segment, const Transform& xf, 
 /// segment has no inside: World::queryPoint never reports one.)
 bool testPoint(const Circle& circle, const Transform& xf, Vec2 point);
 bool testPoint(const Polygon& polygon, const Transform& xf, Vec2 point);
+bool testPoint(const Capsule& capsule, const Transform& xf, Vec2 point);
 
 /// A non-owning reference to a callable, so a query can take a lambda without allocating
 /// (std::function may). It must not outlive the callable it refers to: pass it straight on.

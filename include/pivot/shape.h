@@ -13,12 +13,23 @@
 
 namespace pivot {
 
-enum class ShapeType : std::uint8_t { Circle, Polygon, Segment, ChainSegment };
+enum class ShapeType : std::uint8_t { Circle, Polygon, Segment, ChainSegment, Capsule };
 
 /// A solid disc.
 struct Circle {
     Vec2 center;          ///< m, in the body frame
     float radius = 0.5f;  ///< m, in [kLinearSlop, kMaxCoordinate]
+};
+
+/// A solid capsule: every point within `radius` of the segment from center1 to center2 (a
+/// rectangle with a half disc at each end); for limbs, characters, rounded rods. Centres within
+/// kMaxCoordinate and at least kLinearSlop apart (closer, make it a Circle), radius in
+/// [kLinearSlop, kMaxCoordinate]. It collides with its radius plus the polygons' thin skin
+/// (kPolygonRadius), like a rounded polygon.
+struct Capsule {
+    Vec2 center1;
+    Vec2 center2;
+    float radius = 0.25f;
 };
 
 /// A solid convex polygon of 3 to kMaxPolygonVertices vertices in the body frame, in either
@@ -115,6 +126,9 @@ struct ShapeDef {
 /// Mass properties of a circle of the given density (kg/m^2). A circle or density that
 /// World::createShape would refuse throws pivot::Error.
 MassData computeMass(const Circle& circle, float density);
+/// Mass properties of a capsule of the given density (kg/m^2). A capsule or density that
+/// World::createShape would refuse throws pivot::Error.
+MassData computeMass(const Capsule& capsule, float density);
 /// Mass properties of a convex polygon (either winding) of the given density (kg/m^2). A
 /// polygon or density that World::createShape would refuse throws pivot::Error.
 MassData computeMass(const Polygon& polygon, float density);

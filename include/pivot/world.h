@@ -256,6 +256,7 @@ public:
     /// Attaches a shape and updates the body's mass.
     ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
     /// On a static or kinematic body only (a segment has no mass).
     ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
     /// One one-sided segment with its ghosts; on a static or kinematic body only.
@@ -287,6 +288,7 @@ public:
     Polygon shapePolygon(ShapeId id) const;
     Segment shapeSegment(ShapeId id) const;
     ChainSegment shapeChainSegment(ShapeId id) const;
+    Capsule shapeCapsule(ShapeId id) const;
     /// Takes effect at the next step: existing contacts are re-filtered, new pairs found.
     void setShapeFilter(ShapeId id, const Filter& filter);
     /// The value of ShapeDef::userData, or the last one set; pivot2d never reads it.

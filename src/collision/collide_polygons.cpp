@@ -80,31 +80,6 @@ void findIncidentEdge(ClipVertex edge[2], const ConvexPolygon& poly1, const Tran
                FeatureType::Face, FeatureType::Vertex};
 }
 
-// The closest points of the segments p1-q1 and p2-q2, as the fractions s along the first and t
-// along the second (each in [0, 1]).
-void closestFractions(Vec2 p1, Vec2 q1, Vec2 p2, Vec2 q2, float& s, float& t) {
-    const Vec2 d1 = q1 - p1;
-    const Vec2 d2 = q2 - p2;
-    const Vec2 r = p1 - p2;
-    const float a = dot(d1, d1);
-    const float e = dot(d2, d2);
-    const float f = dot(d2, r);
-    const float c = dot(d1, r);
-    const float b = dot(d1, d2);
-    const float denominator = a * e - b * b;
-    auto unit = [](float x) { return std::fmin(std::fmax(x, 0.0f), 1.0f); };
-    // Parallel segments (denominator 0): any point of the first will do; take its start.
-    s = denominator > 0.0f ? unit((b * f - c * e) / denominator) : 0.0f;
-    t = (b * s + f) / e;
-    if (t < 0.0f) {
-        t = 0.0f;
-        s = unit(-c / a);
-    } else if (t > 1.0f) {
-        t = 1.0f;
-        s = unit((b - c) / a);
-    }
-}
-
 // Rounded polygons whose cores are apart with a corner of each closest: one point between the
 // two corners, as a contact of two discs (ManifoldType::Circles). Returns false (the manifold
 // untouched) in every other case.

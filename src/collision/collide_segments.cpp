@@ -22,9 +22,15 @@
 // Segment against polygon is a separating-axis test with two candidate axes from the segment
 // (+n and -n) and one per polygon face, the polygon's axis preferred only when it separates by
 // clearly more (0.98 relative, 1 mm absolute hysteresis), then clipping as for two polygons.
+// One case is added (not in Box2D 2.4.1, whose polygons have only the thin skin): where the
+// clip leaves nothing because a rounded polygon is past an end of the segment, its rounding may
+// still reach the segment; one point then joins the cores' closest points (unless, at a chain's
+// join, it is the neighbour's, as for a circle). Capsules have a routine of their own
+// (collide_capsules.cpp).
 #include <limits>
 
 #include "collision/clipping.h"
+#include "collision/distance.h"
 #include "collision/manifold.h"
 
 namespace pivot {
@@ -94,6 +100,55 @@ Axis polygonAxis(const ConvexPolygon& polygon, Vec2 v1, Vec2 v2) {
         if (s > best.separation) best = {Axis::Owner::Polygon, i, s, n};
     }
     return best;
+}
+
+// A rounded polygon past an end of the segment: the clip found nothing, but the rounding may
+// still reach the segment. GJK gives the cores' closest points; within reach, one point between
+// them: as two discs (ManifoldType::Circles) where they are the segment's end and a corner,
+// along the line between them otherwise (FaceA). At a chain segment's end the point is the
+// neighbour's when the polygon's closest point is in that segment's face region, as for a
+// circle. Leaves the manifold empty otherwise.
+void roundedPolygonReachesEnd(Manifold& manifold, const EdgeSegment& edge,
+                              const ConvexPolygon& polygonB, const Transform& xf, float radius) {
+    manifold = Manifold{};
+    DistanceProxy segmentCore;
+    segmentCore.count = 2;
+    segmentCore.vertices[0] = edge.v1;
+    segmentCore.vertices[1] = edge.v2;
+    DistanceProxy polygonCore;
+    polygonCore.count = polygonB.count;
+    for (int i = 0; i < polygonB.count; ++i) polygonCore.vertices[i] = polygonB.vertices[i];
+    const DistanceResult d = shapeDistance(segmentCore, Transform{}, polygonCore, xf, false);
+    if (d.overlap || d.distance > radius || !(d.distance > 0.0f)) return;
+    const Vec2 onSegment = d.pointA;  // in the segment's frame (its transform was the identity)
+    const Vec2 onPolygon = d.pointB;
+    const int end = onSegment == edge.v1 ? 0 : (onSegment == edge.v2 ? 1 : -1);
+    if (edge.oneSided && end == 0 && dot(edge.v1 - edge.ghost1, edge.v1 - onPolygon) > 0.0f) return;
+    if (edge.oneSided && end == 1 && dot(edge.ghost2 - edge.v2, onPolygon - edge.v2) > 0.0f) return;
+    const Vec2 local = inverseTransformPoint(xf, onPolygon);
+    int corner = -1;
+    for (int i = 0; i < polygonB.count; ++i) {
+        if (polygonB.vertices[i] == local) corner = i;
+    }
+    manifold.points[0] = ManifoldPoint{};
+    manifold.pointCount = 1;
+    if (end >= 0 && corner >= 0) {
+        manifold.type = ManifoldType::Circles;
+        manifold.localPoint = onSegment;
+        manifold.points[0].localPoint = polygonB.vertices[corner];
+        manifold.points[0].id =
+            makeFeatureId(static_cast<std::uint8_t>(end), static_cast<std::uint8_t>(corner),
+                          FeatureType::Vertex, FeatureType::Vertex);
+        return;
+    }
+    manifold.type = ManifoldType::FaceA;
+    manifold.localNormal = (1.0f / d.distance) * (onPolygon - onSegment);
+    manifold.localPoint = onSegment;
+    manifold.points[0].localPoint = local;
+    manifold.points[0].id = makeFeatureId(static_cast<std::uint8_t>(end >= 0 ? end : 0),
+                                          static_cast<std::uint8_t>(corner >= 0 ? corner : 0),
+                                          end >= 0 ? FeatureType::Vertex : FeatureType::Face,
+                                          corner >= 0 ? FeatureType::Vertex : FeatureType::Face);
 }
 
 }  // namespace
@@ -239,8 +294,15 @@ void collideSegmentAndPolygon(Manifold& manifold, const EdgeSegment& edge, const
 
     ClipVertex clipped1[2];
     ClipVertex clipped2[2];
-    if (clipSegmentToLine(clipped1, incident, side1, dot(side1, refV1), refI1) < 2) return;
-    if (clipSegmentToLine(clipped2, clipped1, side2, dot(side2, refV2), refI2) < 2) return;
+    // Fewer than two points left: the polygon is past an end of the reference face. Box2D
+    // reports nothing, right for its thin skin; a rounded polygon may still reach the segment.
+    if (clipSegmentToLine(clipped1, incident, side1, dot(side1, refV1), refI1) < 2 ||
+        clipSegmentToLine(clipped2, clipped1, side2, dot(side2, refV2), refI2) < 2) {
+        if (polygonB.radius > 0.0f) {
+            roundedPolygonReachesEnd(manifold, edge, polygonB, xf, radius);
+        }
+        return;
+    }
 
     if (primary.owner == Axis::Owner::Segment) {
         manifold.localNormal = refNormal;

@@ -307,6 +307,25 @@ std::string makeSegmentPolygon(const Segment& input, ConvexPolygon& out) {
     return {};
 }
 
+std::string makeCapsulePolygon(const Capsule& input, ConvexPolygon& out) {
+    std::string problem = checkPathPoint("capsule.center1", input.center1);
+    if (problem.empty()) problem = checkPathPoint("capsule.center2", input.center2);
+    if (problem.empty()) {
+        problem = checkPathStep("capsule.center1", input.center1, "capsule.center2", input.center2);
+        if (!problem.empty()) problem += "; a shorter capsule is a Circle";
+    }
+    if (problem.empty() && !(input.radius >= kLinearSlop && input.radius <= kMaxCoordinate)) {
+        problem = "capsule.radius must be in [kLinearSlop, kMaxCoordinate] = [" +
+                  formatFloat(kLinearSlop) + ", " + formatFloat(kMaxCoordinate) + "] m (got " +
+                  formatFloat(input.radius) + ")";
+    }
+    if (!problem.empty()) return problem;
+    // The core is a two-sided segment; the radius rounds it into the capsule.
+    problem = makeSegmentPolygon(Segment{input.center1, input.center2}, out);
+    out.radius = input.radius;
+    return problem;
+}
+
 std::string makeChainSegment(const ChainSegment& input, ConvexPolygon& out) {
     std::string problem = checkPathPoint("ghost1", input.ghost1);
     if (problem.empty()) problem = checkPathPoint("ghost2", input.ghost2);

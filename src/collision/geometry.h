@@ -39,6 +39,10 @@ std::string makeChainSegment(const ChainSegment& input, ConvexPolygon& out);
 /// empty string.
 std::string checkPathPoint(const std::string& name, Vec2 point);
 std::string checkPathStep(const std::string& from, Vec2 a, const std::string& to, Vec2 b);
+/// Checks a user capsule (centres as a segment's points, radius in [kLinearSlop,
+/// kMaxCoordinate]) and makes it the rounded polygon of two vertices the narrow phase sees.
+/// Returns what is wrong, or an empty string.
+std::string makeCapsulePolygon(const Capsule& input, ConvexPolygon& out);
 /// Checks a user circle (centre within kMaxCoordinate, radius in [kLinearSlop,
 /// kMaxCoordinate]); throws pivot::Error naming `call`.
 void checkCircle(const char* call, const Circle& circle);

@@ -67,6 +67,10 @@ void collidePolygonAndCircle(Manifold& manifold, const ConvexPolygon& polygonA,
 void collidePolygons(Manifold& manifold, const ConvexPolygon& polygonA, const Transform& xfA,
                      const ConvexPolygon& polygonB, const Transform& xfB);
 
+/// Two capsules, each as makeCapsulePolygon stores it (a rounded polygon of two vertices).
+void collideCapsules(Manifold& manifold, const ConvexPolygon& capsuleA, const Transform& xfA,
+                     const ConvexPolygon& capsuleB, const Transform& xfB);
+
 /// A segment as the segment routines see it, in its body's frame: from v1 to v2, and for a
 /// one-sided segment (a chain's) the chain's points before v1 and after v2. A segment is always
 /// shape A of its contacts; its skin is kPolygonRadius.
@@ -79,6 +83,8 @@ struct EdgeSegment {
 };
 void collideSegmentAndCircle(Manifold& manifold, const EdgeSegment& segmentA, const Transform& xfA,
                              const Circle& circleB, const Transform& xfB);
+void collideSegmentAndCapsule(Manifold& manifold, const EdgeSegment& segmentA, const Transform& xfA,
+                              const ConvexPolygon& capsuleB, const Transform& xfB);
 void collideSegmentAndPolygon(Manifold& manifold, const EdgeSegment& segmentA, const Transform& xfA,
                               const ConvexPolygon& polygonB, const Transform& xfB);
 

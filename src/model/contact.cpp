@@ -3,19 +3,25 @@
 namespace pivot {
 
 namespace {
-// Contacts are made with a segment first, and with a polygon before a circle (see
-// ContactManager::addPair), so these five cases are all there is; two segments never meet
-// (both are on static or kinematic bodies).
+// Contacts are made with a segment first, and with a polygon or capsule before a circle (see
+// ContactManager::addPair), so these cases are all there is; two segments never meet (both are
+// on static or kinematic bodies). To the segment, polygon and circle routines a capsule is a
+// rounded polygon of two vertices.
 void collide(Manifold& m, const Shape& a, const Transform& xfA, const Shape& b,
              const Transform& xfB) {
     if (isSegmentLike(a.type)) {
         if (b.type == ShapeType::Circle) {
             collideSegmentAndCircle(m, edgeSegmentOf(a), xfA, b.circle, xfB);
+        } else if (b.type == ShapeType::Capsule) {
+            collideSegmentAndCapsule(m, edgeSegmentOf(a), xfA, b.polygon, xfB);
         } else {
             collideSegmentAndPolygon(m, edgeSegmentOf(a), xfA, b.polygon, xfB);
         }
     } else if (a.type != ShapeType::Circle) {
-        if (b.type != ShapeType::Circle) {
+        if (a.type == ShapeType::Capsule && b.type == ShapeType::Capsule) {
+            collideCapsules(m, a.polygon, xfA, b.polygon, xfB);
+        } else if (b.type != ShapeType::Circle) {
+            // A capsule is a rounded polygon of two vertices to the polygon routine.
             collidePolygons(m, a.polygon, xfA, b.polygon, xfB);
         } else {
             collidePolygonAndCircle(m, a.polygon, xfA, b.circle, xfB);

@@ -109,6 +109,34 @@ OriginMass roundedPolygonMassAboutOrigin(const ConvexPolygon& polygon, float den
     return m;
 }
 
+// A capsule of core length L and radius r: a rectangle L x 2r and two half discs. In double,
+// about the core's midpoint c:
+//   mass  m = rho (2 r L + pi r^2),
+//   I_c = rho [2 r L (L^2 + 4 r^2) / 12                      (the rectangle)
+//             + pi r^2 (r^2 / 2 - d^2) + pi r^2 (L/2 + d)^2]  (the half discs, d = 4 r / (3 pi)
+//                                                              their centroids past the ends)
+// and about the origin I = I_c + m |c|^2.
+OriginMass capsuleMassAboutOrigin(const ConvexPolygon& capsule, float density) {
+    const Vec2 a = capsule.vertices[0], b = capsule.vertices[1];
+    const double r = capsule.radius;
+    const double ex = double(b.x) - a.x, ey = double(b.y) - a.y;
+    const double L = std::sqrt(ex * ex + ey * ey);
+    const double cx = 0.5 * (double(a.x) + b.x), cy = 0.5 * (double(a.y) + b.y);
+    const double rectangle = 2.0 * r * L;
+    const double discs = kPi * r * r;  // the two halves together
+    const double d = 4.0 * r / (3.0 * kPi);
+    const double unitCentroidInertia = rectangle * (L * L + 4.0 * r * r) / 12.0 +
+                                       discs * (0.5 * r * r - d * d) +
+                                       discs * (0.5 * L + d) * (0.5 * L + d);
+    const double mass = density * (rectangle + discs);
+    OriginMass m;
+    m.mass = static_cast<float>(mass);
+    m.center = {static_cast<float>(cx), static_cast<float>(cy)};
+    m.centroidInertia = static_cast<float>(density * unitCentroidInertia);
+    m.inertia = static_cast<float>(density * unitCentroidInertia + mass * (cx * cx + cy * cy));
+    return m;
+}
+
 OriginMass shapeMassAboutOrigin(const Shape& shape) {
     if (shape.type == ShapeType::Circle) return circleMassAboutOrigin(shape.circle, shape.density);
     if (isSegmentLike(shape.type)) {
@@ -116,6 +144,8 @@ OriginMass shapeMassAboutOrigin(const Shape& shape) {
         m.center = 0.5f * (shape.polygon.vertices[0] + shape.polygon.vertices[1]);
         return m;
     }
+    if (shape.type == ShapeType::Capsule)
+        return capsuleMassAboutOrigin(shape.polygon, shape.density);
     if (shape.polygon.radius > 0.0f)
         return roundedPolygonMassAboutOrigin(shape.polygon, shape.density);
     return polygonMassAboutOrigin(shape.polygon.vertices.data(), shape.polygon.count,
@@ -149,6 +179,15 @@ MassData computeMass(const Polygon& polygon, float density) {
     requireDensity(call, "density", density);
     if (ccw.radius > 0.0f) return aboutCentroid(roundedPolygonMassAboutOrigin(ccw, density));
     return aboutCentroid(polygonMassAboutOrigin(ccw.vertices.data(), ccw.count, density));
+}
+
+MassData computeMass(const Capsule& capsule, float density) {
+    const char* call = "computeMass";
+    ConvexPolygon checked;
+    std::string problem = makeCapsulePolygon(capsule, checked);
+    if (!problem.empty()) fail(call, problem);
+    requireDensity(call, "density", density);
+    return aboutCentroid(capsuleMassAboutOrigin(checked, density));
 }
 
 AABB computeShapeBox(const Shape& shape, const Transform& xf) {

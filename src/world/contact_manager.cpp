@@ -25,10 +25,10 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     if (pairs_.find(key) != -1) return;
     if (!bodiesMayCollide(a.body, b.body)) return;
 
-    // The narrow phase has segment-polygon, segment-circle and polygon-circle, not the
-    // reverse: segments first, then polygons, then circles.
+    // The narrow phase has segment-polygon, segment-circle and polygon-circle (capsules go as
+    // polygons), not the reverse: segments first, then polygons and capsules, then circles.
     auto order = [](ShapeType type) {
-        return isSegmentLike(type) ? 0 : type == ShapeType::Polygon ? 1 : 2;
+        return isSegmentLike(type) ? 0 : type == ShapeType::Circle ? 2 : 1;
     };
     if (order(a.type) > order(b.type)) std::swap(shapeA, shapeB);
 

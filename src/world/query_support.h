@@ -37,6 +37,13 @@ inline ConvexPolygon checkedPolygon(const char* call, const Polygon& polygon) {
     return checked;
 }
 
+inline ConvexPolygon checkedCapsule(const char* call, const Capsule& capsule) {
+    ConvexPolygon checked;
+    const std::string problem = makeCapsulePolygon(capsule, checked);
+    if (!problem.empty()) fail(call, problem);
+    return checked;
+}
+
 inline ConvexPolygon checkedSegment(const char* call, const Segment& segment) {
     ConvexPolygon checked;
     const std::string problem = makeSegmentPolygon(segment, checked);

@@ -19,6 +19,7 @@ std::optional<RayEntry> castOnShape(const Shape& shape, const Transform& xf, Vec
         case ShapeType::Circle:
             return rayCastCircle(shape.circle, xf, origin, translation, maxFraction);
         case ShapeType::Polygon:
+        case ShapeType::Capsule:
             return rayCastPolygon(shape.polygon, xf, origin, translation, maxFraction);
         case ShapeType::Segment:
             return rayCastSegment(shape.polygon, xf, origin, translation, maxFraction);
@@ -32,7 +33,8 @@ std::optional<RayEntry> castOnShape(const Shape& shape, const Transform& xf, Vec
 bool shapeContains(const Shape& shape, const Transform& xf, Vec2 point) {
     switch (shape.type) {
         case ShapeType::Circle: return circleContains(shape.circle, xf, point);
-        case ShapeType::Polygon: return polygonContains(shape.polygon, xf, point);
+        case ShapeType::Polygon:
+        case ShapeType::Capsule: return polygonContains(shape.polygon, xf, point);
         case ShapeType::Segment:
         case ShapeType::ChainSegment: return false;
     }
@@ -166,6 +168,23 @@ std::optional<RayHit> rayCast(const ChainSegment& segment, const Transform& xf, 
     checkTransform(call, xf);
     checkRay(call, origin, translation);
     return asHit(ShapeId{}, rayCastSegment(checked, xf, origin, translation, 1.0f, true));
+}
+
+std::optional<RayHit> rayCast(const Capsule& capsule, const Transform& xf, Vec2 origin,
+                              Vec2 translation) {
+    const char* call = "pivot::rayCast";
+    const ConvexPolygon checked = checkedCapsule(call, capsule);
+    checkTransform(call, xf);
+    checkRay(call, origin, translation);
+    return asHit(ShapeId{}, rayCastPolygon(checked, xf, origin, translation, 1.0f));
+}
+
+bool testPoint(const Capsule& capsule, const Transform& xf, Vec2 point) {
+    const char* call = "pivot::testPoint";
+    const ConvexPolygon checked = checkedCapsule(call, capsule);
+    checkTransform(call, xf);
+    requireCoordinate(call, "point", point);
+    return polygonContains(checked, xf, point);
 }
 
 bool testPoint(const Circle& circle, const Transform& xf, Vec2 point) {

@@ -78,16 +78,32 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Circle& cir
     return attachShape(call, *impl_, bodyIndex, def, shape);
 }
 
-ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& polygon) {
+namespace {
+
+// A polygon or capsule: checked by `make` into the two-vertex-or-more polygon collision sees.
+template <typename Geometry>
+ShapeId createPolygonal(World::Impl& w, BodyId bodyId, const ShapeDef& def, ShapeType type,
+                        const Geometry& geometry,
+                        std::string (*make)(const Geometry&, ConvexPolygon&)) {
     const char* call = "World::createShape";
-    impl_->requireNoQuery(call);
-    std::int32_t bodyIndex = impl_->bodyIndex(call, bodyId);
-    checkShapeDef(call, def, impl_->bodies[bodyIndex]);
+    w.requireNoQuery(call);
+    std::int32_t bodyIndex = w.bodyIndex(call, bodyId);
+    checkShapeDef(call, def, w.bodies[bodyIndex]);
     Shape shape;
-    shape.type = ShapeType::Polygon;
-    std::string problem = makeConvexPolygon(polygon, shape.polygon);
+    shape.type = type;
+    std::string problem = make(geometry, shape.polygon);
     if (!problem.empty()) fail(call, problem);
-    return attachShape(call, *impl_, bodyIndex, def, shape);
+    return attachShape(call, w, bodyIndex, def, shape);
+}
+
+}  // namespace
+
+ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& polygon) {
+    return createPolygonal(*impl_, bodyId, def, ShapeType::Polygon, polygon, makeConvexPolygon);
+}
+
+ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Capsule& capsule) {
+    return createPolygonal(*impl_, bodyId, def, ShapeType::Capsule, capsule, makeCapsulePolygon);
 }
 
 namespace {
@@ -221,6 +237,7 @@ const char* shapeTypeName(ShapeType type) {
         case ShapeType::Polygon: return "a polygon";
         case ShapeType::Segment: return "a segment";
         case ShapeType::ChainSegment: return "a chain segment";
+        case ShapeType::Capsule: return "a capsule";
     }
     return "unknown";
 }
@@ -243,6 +260,11 @@ Circle World::shapeCircle(ShapeId id) const {
 Segment World::shapeSegment(ShapeId id) const {
     const Shape& shape = shapeOfType("World::shapeSegment", *impl_, id, ShapeType::Segment);
     return Segment{shape.polygon.vertices[0], shape.polygon.vertices[1]};
+}
+
+Capsule World::shapeCapsule(ShapeId id) const {
+    const Shape& shape = shapeOfType("World::shapeCapsule", *impl_, id, ShapeType::Capsule);
+    return Capsule{shape.polygon.vertices[0], shape.polygon.vertices[1], shape.polygon.radius};
 }
 
 ChainSegment World::shapeChainSegment(ShapeId id) const {

@@ -38,6 +38,10 @@ std::vector<Outline> outlinesOf(const World& world, BodyId body) {
             const Segment segment = world.shapeChainSegment(shape).segment;
             outline.type = ShapeType::Segment;
             outline.vertices = {segment.point1, segment.point2};
+        } else if (outline.type == ShapeType::Capsule) {
+            outline.type = ShapeType::Polygon;  // drawn as its outline, as a rounded polygon
+            outline.vertices =
+                scenes::polygonOutline(scenes::capsuleAsPolygon(world.shapeCapsule(shape)));
         } else {
             Polygon polygon = world.shapePolygon(shape);
             outline.vertices = scenes::polygonOutline(polygon);

@@ -55,7 +55,9 @@ SnapshotFrame captureFrame(const World& world, const std::string& caption) {
                 outline.vertices = {transformPoint(xf, s.point1), transformPoint(xf, s.point2)};
                 frame.polygons.push_back(outline);
             } else {
-                Polygon p = world.shapePolygon(shape);
+                Polygon p = world.shapeType(shape) == ShapeType::Capsule
+                                ? scenes::capsuleAsPolygon(world.shapeCapsule(shape))
+                                : world.shapePolygon(shape);
                 SnapshotFrame::PolygonShape outline;
                 outline.isStatic = isStatic;
                 for (Vec2 v : scenes::polygonOutline(p)) {

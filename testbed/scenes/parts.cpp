@@ -89,6 +89,15 @@ void addRange(World& world) {
     }
 }
 
+Polygon capsuleAsPolygon(const Capsule& capsule) {
+    Polygon polygon;
+    polygon.count = 2;
+    polygon.vertices[0] = capsule.center1;
+    polygon.vertices[1] = capsule.center2;
+    polygon.radius = capsule.radius;
+    return polygon;
+}
+
 std::vector<Vec2> polygonOutline(const Polygon& polygon) {
     const int n = polygon.count;
     if (polygon.radius == 0.0f) return {polygon.vertices.begin(), polygon.vertices.begin() + n};

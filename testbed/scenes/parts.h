@@ -56,6 +56,9 @@ void layPyramid(const PyramidSpec& spec, AddBox&& addBox) {
 /// A polygon's outline in its body's frame, for drawing; a rounded polygon's with each corner's
 /// arc drawn as a few chords.
 std::vector<Vec2> polygonOutline(const Polygon& polygon);
+/// A capsule as a rounded polygon of two vertices, for polygonOutline (drawing only: World
+/// takes no two-vertex polygon).
+Polygon capsuleAsPolygon(const Capsule& capsule);
 
 /// The dynamic body under `point`, found as a pointer finds it (World::queryPoint), or a null
 /// id when there is none; of several, the first the query reports.

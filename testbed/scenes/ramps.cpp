@@ -1,8 +1,8 @@
 // Segments as level geometry: a ramp, a floor with a bump on it (one chain shape, one-sided,
-// solid from above) and a wall (a two-sided segment), on one static body. Balls and boxes (one
-// rounded) slide and roll down the ramp, over the joins and the bump and into a chain of five
-// links hanging from a pin above the floor, which they push aside; the chain's joints take the
-// knocks.
+// solid from above) and a wall (a two-sided segment), on one static body. Balls, boxes (one
+// rounded) and a capsule slide and roll down the ramp, over the joins and the bump and into a
+// chain of five links hanging from a pin above the floor, which they push aside; the chain's
+// joints take the knocks.
 #include "scene.h"
 
 namespace pivot::scenes {
@@ -27,8 +27,8 @@ void buildRamps(Scene& scene, const SceneOptions& options) {
                             false});
     world.createShape(ground, level, Segment{{15.0f, 0.0f}, {15.0f, 8.0f}});
 
-    // Three balls and three boxes on the ramp, 1.5 m apart, the boxes first (lower); the middle
-    // box has rounded corners.
+    // Three balls and three other bodies on the ramp, 1.5 m apart, alternating, a box first
+    // (lowest), then a box with rounded corners, then a capsule.
     for (int i = 0; i < 6; ++i) {
         const float x = -5.0f - 1.5f * static_cast<float>(i);
         const float rampY = 12.0f * (x + 3.0f) / -11.0f;
@@ -42,6 +42,8 @@ void buildRamps(Scene& scene, const SceneOptions& options) {
             world.createShape(body, shape, Circle{{0.0f, 0.0f}, 0.4f});
         } else if (i == 2) {
             world.createShape(body, shape, Polygon::roundedBox(0.4f, 0.4f, 0.15f));
+        } else if (i == 4) {
+            world.createShape(body, shape, Capsule{{-0.3f, 0.0f}, {0.3f, 0.0f}, 0.3f});
         } else {
             world.createShape(body, shape, Polygon::box(0.4f, 0.4f));
         }

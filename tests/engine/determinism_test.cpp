@@ -90,7 +90,7 @@ const RecordedHashes kRecorded[] = {
     {"heavy_stack",       {0xe1e39b52cb6e9abfull, 0x8e942e7e5adfdbeeull, 0x2917bf6b8cefbeadull, 0x054147ab7c5e81fcull, 0x59e5d479d30aad33ull, 0xe1d1bf6ae81730b2ull}},
     {"overlap_recovery",  {0x413cd254a8b353fbull, 0xbdebe35648852092ull, 0x0ef3a4e1510852d5ull, 0xa2733892ca634b6cull, 0x0ec3f48ba0c38047ull, 0xdba1e56cdd64f4feull}},
     {"far_chain",         {0xa0879e71a5500d68ull, 0xbc48b2fc3db4596full, 0x8a427675fff14b8aull, 0xf0c68d276757f908ull, 0x21009b1aebb5cd8bull, 0x1ad3d1605e7eb0c0ull}},
-    {"ramps",             {0x6ca59ef416f39e5dull, 0x7841cef25a4c9388ull, 0xa8122a7ff9ee307cull, 0x8d1b3e8a09cadaa6ull, 0x4f8da9b881b59403ull, 0x8c35bf8b579937ffull}},
+    {"ramps",             {0x77696e4ee1700d4eull, 0xdf77d5d2e2dc6664ull, 0x2a83fb4909f74ec5ull, 0x99a274168e8bc548ull, 0xc19056b45dbb5aeaull, 0xef35fb1ed2cbd672ull}},
     {"bullets",           {0xd94cbeec7495673bull, 0x4df689cec678386eull, 0x21ebd19edd5a3f85ull, 0x37042a7da98d3728ull, 0x492553a3b34a8a97ull, 0x7138e9e07828d58aull}},
 };
 // clang-format on

@@ -137,6 +137,10 @@ struct RandomWorld {
                                          {-length, 0.0f}},
                                         false});
             }
+        } else if (shapeKind == 0 && bodies.size() % 3 == 0) {
+            const float half = uniform(0.1f, 1.5f);
+            world.createShape(body, shapeDef,
+                              Capsule{{-half, 0.0f}, {half, 0.2f}, uniform(0.1f, 0.8f)});
         } else if (shapeKind == 0) {
             world.createShape(body, shapeDef,
                               Circle{{uniform(-0.5f, 0.5f), 0.0f}, uniform(0.2f, 1.5f)});
@@ -190,6 +194,9 @@ bool contains(const World& world, ShapeId shape, Vec2 point) {
     if (world.shapeType(shape) == ShapeType::Segment ||
         world.shapeType(shape) == ShapeType::ChainSegment) {
         return false;  // no inside
+    }
+    if (world.shapeType(shape) == ShapeType::Capsule) {
+        return testPoint(world.shapeCapsule(shape), xf, point);
     }
     return world.shapeType(shape) == ShapeType::Circle
                ? testPoint(world.shapeCircle(shape), xf, point)
@@ -472,6 +479,15 @@ double distanceTo(const std::vector<Vec2>& outline, Vec2 p) {
     return best;
 }
 
+// Distance between two convex outlines (0 when they overlap).
+double distanceBetween(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+    if (!separates(a, b) && !separates(b, a)) return 0.0;
+    double best = 1e30;
+    for (Vec2 p : a) best = std::min(best, distanceTo(b, p));
+    for (Vec2 p : b) best = std::min(best, distanceTo(a, p));
+    return best;
+}
+
 }  // namespace
 
 TEST(WorldQueries, ShapeOverlapsAgreeWithBruteForce) {
@@ -502,6 +518,15 @@ TEST(WorldQueries, ShapeOverlapsAgreeWithBruteForce) {
                         transformPoint(r.world.bodyTransform(r.world.shapeBody(shape)), c.center);
                     gap = circleQuery ? double(length(center - at)) - circle.radius - c.radius
                                       : distanceTo(boxOutline, center) - c.radius;
+                } else if (r.world.shapeType(shape) == ShapeType::Capsule) {
+                    // Its core segment, rounded.
+                    const Capsule c = r.world.shapeCapsule(shape);
+                    const Transform bodyXf = r.world.bodyTransform(r.world.shapeBody(shape));
+                    const std::vector<Vec2> core{transformPoint(bodyXf, c.center1),
+                                                 transformPoint(bodyXf, c.center2)};
+                    gap = (circleQuery ? distanceTo(core, at) - circle.radius
+                                       : distanceBetween(core, boxOutline)) -
+                          c.radius;
                 } else {
                     const std::vector<Vec2> outline = outlineOf(r.world, shape);
                     if (circleQuery) {

@@ -482,6 +482,7 @@ private:
             {8, &Driver::createPolygon},
             {3, &Driver::createSegment},
             {2, &Driver::createChain},
+            {3, &Driver::createCapsule},
             {7, &Driver::createJoint},
             {3, &Driver::createDistanceJoint},
             {2, &Driver::createPulleyJoint},
@@ -618,6 +619,20 @@ private:
         Arg<float> radius = values_->radius();
         createShape(Circle{center.value, radius.value}, verdict(center.bad || radius.bad),
                     "circle r=" + text(radius.value));
+    }
+
+    // Mostly a valid capsule, now and then one whose centres are too close (a circle) or whose
+    // radius or points are bad.
+    void createCapsule() {
+        Arg<Vec2> center1 = values_->coordinate(3.0f);
+        Arg<Vec2> center2 = values_->coordinate(3.0f);
+        Arg<float> radius = values_->radius();
+        if (random_.chance(0.05f)) center2.value = center1.value + Vec2{0.5f * kLinearSlop, 0.0f};
+        const Vec2 d = center2.value - center1.value;
+        const bool bad =
+            center1.bad || center2.bad || radius.bad || !isFinite(d) || !(length(d) >= kLinearSlop);
+        createShape(Capsule{center1.value, center2.value, radius.value}, verdict(bad),
+                    "capsule r=" + text(radius.value));
     }
 
     // Mostly a valid segment, now and then a degenerate one (too short, or a bad point). The
@@ -2109,7 +2124,7 @@ private:
             }
             case 3: {
                 const ShapeType type = shape.bad ? ShapeType::Circle : w.shapeType(shape.value);
-                const int ask = random_.below(4);
+                const int ask = random_.below(5);
                 if (ask == 0) {
                     attempt("World::shapeCircle", verdict(shape.bad || type != ShapeType::Circle),
                             [&] { w.shapeCircle(shape.value); });
@@ -2119,6 +2134,12 @@ private:
                                 // What comes back must be accepted again as a segment.
                                 const Segment g = w.shapeSegment(shape.value);
                                 rayCast(g, Transform{{0.0f, 0.0f}, Rot(0.0f)}, {}, {1.0f, 1.0f});
+                            });
+                } else if (ask == 4) {
+                    attempt("World::shapeCapsule", verdict(shape.bad || type != ShapeType::Capsule),
+                            [&] {
+                                // What comes back must be accepted again as a capsule.
+                                computeMass(w.shapeCapsule(shape.value), 1.0f);
                             });
                 } else if (ask == 3) {
                     attempt("World::shapeChainSegment",

@@ -110,6 +110,14 @@ ShapeId Journal::createShape(BodyId body, const ShapeDef& def, const ChainSegmen
     return id;
 }
 
+ShapeId Journal::createShape(BodyId body, const ShapeDef& def, const Capsule& capsule) {
+    ShapeId id = world_->createShape(body, def, capsule);
+    lines_.push_back("capsule " + nameNew('s', id) + " " + nameOf('b', body) + " " +
+                     shapeDefText(def) + " " + num(capsule.center1) + " " + num(capsule.center2) +
+                     " " + num(capsule.radius));
+    return id;
+}
+
 std::vector<ShapeId> Journal::createChain(BodyId body, const ShapeDef& def, const Chain& chain) {
     std::vector<ShapeId> ids = world_->createChain(body, def, chain);
     // The shapes' names last: how many there are follows from the points and the loop flag.
@@ -637,6 +645,15 @@ ReplayResult replay(std::istream& in) {
                 p.radius = f.optionalFloat(0.0f);
                 call = [&w, &shapes, name, b, def, p] { shapes[name] = w.createShape(b, def, p); };
             }
+        } else if (command == "capsule") {
+            std::string name = f.word();
+            BodyId b = body(f.word());
+            ShapeDef def = f.shapeDef();
+            Capsule c;
+            c.center1 = f.v();
+            c.center2 = f.v();
+            c.radius = f.f();
+            call = [&w, &shapes, name, b, def, c] { shapes[name] = w.createShape(b, def, c); };
         } else if (command == "chainsegment") {
             std::string name = f.word();
             BodyId b = body(f.word());

@@ -33,6 +33,7 @@ public:
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
     ShapeId createShape(BodyId body, const ShapeDef& def, const ChainSegment& segment);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
     std::vector<ShapeId> createChain(BodyId body, const ShapeDef& def, const Chain& chain);
     JointId createJoint(const RevoluteJointDef& def);
     JointId createJoint(const DistanceJointDef& def);
