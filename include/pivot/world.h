@@ -322,26 +322,32 @@ public:
     /// skin does not; a segment contains none), in the tree's order; the callback returns false
     /// to stop. What the testbed's drags use to pick the body under the pointer.
     void queryPoint(Vec2 point, const QueryFilter& filter, ShapeCallback callback) const;
-    /// Every shape the filter sees that overlaps a circle or polygon placed at `xf` (touching
-    /// counts; polygon and segment skins do not), in the tree's order; the callback returns
-    /// false to stop. The shape is checked as World::createShape checks it.
+    /// Every shape the filter sees that overlaps a circle, capsule or polygon placed at `xf`
+    /// (touching counts; polygon and segment skins do not), in the tree's order; the callback
+    /// returns false to stop. The shape is checked as World::createShape checks it.
     void queryShape(const Circle& circle, const Transform& xf, const QueryFilter& filter,
                     ShapeCallback callback) const;
     void queryShape(const Polygon& polygon, const Transform& xf, const QueryFilter& filter,
                     ShapeCallback callback) const;
-    /// Every shape the filter sees that a circle or polygon at `xf`, moved by `translation`
-    /// without turning, would touch on the way, as castRay reports rays: RayHit::fraction is
-    /// where it first comes within a quarter of kLinearSlop of the shape, point the shape's
-    /// closest point then and normal its outward normal there; a shape it overlaps at the start
-    /// is hit at fraction 0 with a zero normal. The callback steers it as castRay's does.
+    void queryShape(const Capsule& capsule, const Transform& xf, const QueryFilter& filter,
+                    ShapeCallback callback) const;
+    /// Every shape the filter sees that a circle, capsule or polygon at `xf`, moved by
+    /// `translation` without turning, would touch on the way, as castRay reports rays:
+    /// RayHit::fraction is where it first comes within a quarter of kLinearSlop of the shape, point
+    /// the shape's closest point then and normal its outward normal there; a shape it overlaps at
+    /// the start is hit at fraction 0 with a zero normal. The callback steers it as castRay's does.
     void castShape(const Circle& circle, const Transform& xf, Vec2 translation,
                    const QueryFilter& filter, RayCallback callback) const;
     void castShape(const Polygon& polygon, const Transform& xf, Vec2 translation,
                    const QueryFilter& filter, RayCallback callback) const;
-    /// The first shape the moving circle or polygon would touch, if any.
+    void castShape(const Capsule& capsule, const Transform& xf, Vec2 translation,
+                   const QueryFilter& filter, RayCallback callback) const;
+    /// The first shape the moving circle, capsule or polygon would touch, if any.
     std::optional<RayHit> castShapeClosest(const Circle& circle, const Transform& xf,
                                            Vec2 translation, const QueryFilter& filter = {}) const;
     std::optional<RayHit> castShapeClosest(const Polygon& polygon, const Transform& xf,
+                                           Vec2 translation, const QueryFilter& filter = {}) const;
+    std::optional<RayHit> castShapeClosest(const Capsule& capsule, const Transform& xf,
                                            Vec2 translation, const QueryFilter& filter = {}) const;
 
     // --- contacts ---------------------------------------------------------------------------

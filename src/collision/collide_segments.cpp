@@ -126,9 +126,10 @@ void roundedPolygonReachesEnd(Manifold& manifold, const EdgeSegment& edge,
     if (edge.oneSided && end == 0 && dot(edge.v1 - edge.ghost1, edge.v1 - onPolygon) > 0.0f) return;
     if (edge.oneSided && end == 1 && dot(edge.ghost2 - edge.v2, onPolygon - edge.v2) > 0.0f) return;
     const Vec2 local = inverseTransformPoint(xf, onPolygon);
+    // A corner when the witness point is one (up to the round trip through the transform).
     int corner = -1;
     for (int i = 0; i < polygonB.count; ++i) {
-        if (polygonB.vertices[i] == local) corner = i;
+        if (lengthSquared(polygonB.vertices[i] - local) < 1e-12f) corner = i;
     }
     manifold.points[0] = ManifoldPoint{};
     manifold.pointCount = 1;

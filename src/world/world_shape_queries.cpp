@@ -1,4 +1,5 @@
-// The World facade, part five: shapes as queries. queryShape finds what a circle or polygon placed
+// The World facade, part five: shapes as queries. queryShape finds what a circle, capsule or
+// polygon placed
 // anywhere overlaps, castShape where one moving in a straight line first touches something; both
 // walk the broad phase's tree and measure with GJK (collision/distance.h, shape_cast.h).
 #include <algorithm>
@@ -72,6 +73,10 @@ DistanceProxy checkedProxy(const char* call, const Polygon& polygon) {
     return proxyOf(checkedPolygon(call, polygon));
 }
 
+DistanceProxy checkedProxy(const char* call, const Capsule& capsule) {
+    return proxyOf(checkedCapsule(call, capsule));
+}
+
 void castShapeNamed(const char* call, const World::Impl& w, const DistanceProxy& mover,
                     const Transform& xf, Vec2 translation, const QueryFilter& filter,
                     RayCallback callback) {
@@ -121,6 +126,18 @@ void World::castShape(const Polygon& polygon, const Transform& xf, Vec2 translat
     castShapeNamed(call, *impl_, checkedProxy(call, polygon), xf, translation, filter, callback);
 }
 
+void World::castShape(const Capsule& capsule, const Transform& xf, Vec2 translation,
+                      const QueryFilter& filter, RayCallback callback) const {
+    const char* call = "World::castShape";
+    castShapeNamed(call, *impl_, checkedProxy(call, capsule), xf, translation, filter, callback);
+}
+
+std::optional<RayHit> World::castShapeClosest(const Capsule& capsule, const Transform& xf,
+                                              Vec2 translation, const QueryFilter& filter) const {
+    return castShapeClosestNamed("World::castShapeClosest", *impl_, capsule, xf, translation,
+                                 filter);
+}
+
 std::optional<RayHit> World::castShapeClosest(const Circle& circle, const Transform& xf,
                                               Vec2 translation, const QueryFilter& filter) const {
     return castShapeClosestNamed("World::castShapeClosest", *impl_, circle, xf, translation,
@@ -137,6 +154,14 @@ void World::queryShape(const Circle& circle, const Transform& xf, const QueryFil
                        ShapeCallback callback) const {
     const char* call = "World::queryShape";
     const DistanceProxy query = checkedProxy(call, circle);
+    checkTransform(call, xf);
+    queryOverlaps(*impl_, query, xf, filter, callback);
+}
+
+void World::queryShape(const Capsule& capsule, const Transform& xf, const QueryFilter& filter,
+                       ShapeCallback callback) const {
+    const char* call = "World::queryShape";
+    const DistanceProxy query = checkedProxy(call, capsule);
     checkTransform(call, xf);
     queryOverlaps(*impl_, query, xf, filter, callback);
 }

@@ -479,9 +479,13 @@ double distanceTo(const std::vector<Vec2>& outline, Vec2 p) {
     return best;
 }
 
-// Distance between two convex outlines (0 when they overlap).
+// Distance between two convex outlines, -1 when they overlap (by an unknown depth); an outline
+// may be one point.
 double distanceBetween(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
-    if (!separates(a, b) && !separates(b, a)) return 0.0;
+    if (a.size() == 1 && b.size() == 1) return length(b[0] - a[0]);
+    if (a.size() == 1) return distanceTo(b, a[0]);
+    if (b.size() == 1) return distanceTo(a, b[0]);
+    if (!separates(a, b) && !separates(b, a)) return -1.0;
     double best = 1e30;
     for (Vec2 p : a) best = std::min(best, distanceTo(b, p));
     for (Vec2 p : b) best = std::min(best, distanceTo(a, p));
@@ -499,44 +503,46 @@ TEST(WorldQueries, ShapeOverlapsAgreeWithBruteForce) {
         for (int q = 0; q < 200; ++q) {
             const Vec2 at{r.uniform(-35.0f, 35.0f), r.uniform(-3.0f, 35.0f)};
             const float angle = r.uniform(-3.0f, 3.0f);
-            const bool circleQuery = q % 2 == 0;
+            const int kind = q % 3;  // a circle, a box or a capsule
             const Circle circle{{0.0f, 0.0f}, r.uniform(0.2f, 3.0f)};
             const float halfWidth = r.uniform(0.2f, 3.0f);
             const Polygon box = Polygon::box(halfWidth, r.uniform(0.2f, 3.0f));
+            const Capsule capsule{{-halfWidth, 0.0f}, {halfWidth, 0.5f}, r.uniform(0.1f, 1.0f)};
             const Transform xf{at, Rot(angle)};
-            std::vector<Vec2> boxOutline;
-            for (int i = 0; i < box.count; ++i)
-                boxOutline.push_back(transformPoint(xf, box.vertices[i]));
+            // The query as a core (a point, an outline or a segment) and a radius.
+            std::vector<Vec2> queryCore;
+            float queryRadius = 0.0f;
+            if (kind == 0) {
+                queryCore = {at};
+                queryRadius = circle.radius;
+            } else if (kind == 1) {
+                for (int i = 0; i < box.count; ++i)
+                    queryCore.push_back(transformPoint(xf, box.vertices[i]));
+            } else {
+                queryCore = {transformPoint(xf, capsule.center1),
+                             transformPoint(xf, capsule.center2)};
+                queryRadius = capsule.radius;
+            }
 
             std::set<std::uint64_t> expected, margin;
             for (ShapeId shape : shapes) {
-                // The brute-force answer, and whether it sits within 1e-4 m of changing.
-                double gap;  // > 0 apart, <= 0 overlapping (as a distance where one is known)
+                // The brute-force answer, and whether it sits within 1e-4 m of changing: the
+                // distance of the two cores less the two radii.
+                const Transform bodyXf = r.world.bodyTransform(r.world.shapeBody(shape));
+                std::vector<Vec2> core;
+                float radius = 0.0f;
                 if (r.world.shapeType(shape) == ShapeType::Circle) {
                     const Circle c = r.world.shapeCircle(shape);
-                    const Vec2 center =
-                        transformPoint(r.world.bodyTransform(r.world.shapeBody(shape)), c.center);
-                    gap = circleQuery ? double(length(center - at)) - circle.radius - c.radius
-                                      : distanceTo(boxOutline, center) - c.radius;
+                    core = {transformPoint(bodyXf, c.center)};
+                    radius = c.radius;
                 } else if (r.world.shapeType(shape) == ShapeType::Capsule) {
-                    // Its core segment, rounded.
                     const Capsule c = r.world.shapeCapsule(shape);
-                    const Transform bodyXf = r.world.bodyTransform(r.world.shapeBody(shape));
-                    const std::vector<Vec2> core{transformPoint(bodyXf, c.center1),
-                                                 transformPoint(bodyXf, c.center2)};
-                    gap = (circleQuery ? distanceTo(core, at) - circle.radius
-                                       : distanceBetween(core, boxOutline)) -
-                          c.radius;
+                    core = {transformPoint(bodyXf, c.center1), transformPoint(bodyXf, c.center2)};
+                    radius = c.radius;
                 } else {
-                    const std::vector<Vec2> outline = outlineOf(r.world, shape);
-                    if (circleQuery) {
-                        gap = distanceTo(outline, at) - circle.radius;
-                    } else {
-                        const bool apart =
-                            separates(outline, boxOutline) || separates(boxOutline, outline);
-                        gap = apart ? 1.0 : -1.0;  // SAT decides; no distance needed
-                    }
+                    core = outlineOf(r.world, shape);
                 }
+                const double gap = distanceBetween(core, queryCore) - radius - queryRadius;
                 if (std::abs(gap) < 1e-4) margin.insert(key(shape));
                 if (gap <= 0.0) expected.insert(key(shape));
             }
@@ -545,10 +551,12 @@ TEST(WorldQueries, ShapeOverlapsAgreeWithBruteForce) {
                 got.insert(key(shape));
                 return true;
             };
-            if (circleQuery) {
+            if (kind == 0) {
                 r.world.queryShape(circle, xf, QueryFilter{}, collect);
-            } else {
+            } else if (kind == 1) {
                 r.world.queryShape(box, xf, QueryFilter{}, collect);
+            } else {
+                r.world.queryShape(capsule, xf, QueryFilter{}, collect);
             }
             for (std::uint64_t k : margin) {  // round-off may tip a grazing shape either way
                 expected.erase(k);
@@ -607,17 +615,26 @@ TEST(WorldQueries, ShapeCastsAgreeWithOverlapQueriesAlongThePath) {
             const Vec2 translation{r.uniform(-15.0f, 15.0f), r.uniform(-15.0f, 15.0f)};
             const float halfWidth = r.uniform(0.2f, 1.0f);
             const Polygon box = Polygon::box(halfWidth, r.uniform(0.2f, 1.0f));
+            // Every other cast moves a capsule.
+            const bool capsuleCast = q % 2 == 1;
+            const Capsule capsule{{-halfWidth, 0.0f}, {halfWidth, 0.0f}, 0.3f};
             auto overlapsAt = [&](float fraction, ShapeId only) {
                 bool any = false;
-                r.world.queryShape(box, Transform{at + fraction * translation, xf.q}, {},
-                                   [&](ShapeId s) {
-                                       if (only.isNull() || s == only) any = true;
-                                       return !any;
-                                   });
+                const Transform there{at + fraction * translation, xf.q};
+                auto note = [&](ShapeId s) {
+                    if (only.isNull() || s == only) any = true;
+                    return !any;
+                };
+                if (capsuleCast) {
+                    r.world.queryShape(capsule, there, {}, note);
+                } else {
+                    r.world.queryShape(box, there, {}, note);
+                }
                 return any;
             };
             if (overlapsAt(0.0f, ShapeId{})) continue;  // starts touching: not this test's case
-            const auto hit = r.world.castShapeClosest(box, xf, translation);
+            const auto hit = capsuleCast ? r.world.castShapeClosest(capsule, xf, translation)
+                                         : r.world.castShapeClosest(box, xf, translation);
             if (!hit) {
                 for (int k = 0; k <= 20; ++k) EXPECT_FALSE(overlapsAt(k / 20.0f, ShapeId{})) << q;
                 continue;
