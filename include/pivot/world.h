@@ -181,6 +181,10 @@ public:
     std::vector<BodyId> bodyIds() const;
     /// The body's shapes, newest first.
     std::vector<ShapeId> bodyShapes(BodyId id) const;
+    /// The joints attached to the body (mouse joints aside), newest first.
+    std::vector<JointId> bodyJoints(BodyId id) const;
+    /// The body's touching contacts, as World::contacts reports them.
+    std::vector<ContactData> bodyContacts(BodyId id) const;
 
     BodyType bodyType(BodyId id) const;
     /// Changes the body's type between steps. Mass, centre of mass and inertia are recomputed
@@ -210,6 +214,17 @@ public:
     float bodyRotationalInertia(BodyId id) const;
     /// BodyDef::fixedRotation: the body never turns.
     bool bodyFixedRotation(BodyId id) const;
+    /// Fixing the rotation stops the body's spin and drops its pending torque; either way its
+    /// rotational inertia is recomputed (its centre of mass stays) and it is woken.
+    void setBodyFixedRotation(BodyId id, bool fixedRotation);
+    /// BodyDef::linearDamping, angularDamping (1/s, >= 0) and gravityScale (within
+    /// +-kMaxGravityScale); the setters wake the body.
+    float bodyLinearDamping(BodyId id) const;
+    void setBodyLinearDamping(BodyId id, float damping);
+    float bodyAngularDamping(BodyId id) const;
+    void setBodyAngularDamping(BodyId id, float damping);
+    float bodyGravityScale(BodyId id) const;
+    void setBodyGravityScale(BodyId id, float scale);
     Vec2 bodyWorldPoint(BodyId id, Vec2 localPoint) const;
     Vec2 bodyLocalPoint(BodyId id, Vec2 worldPoint) const;
 
@@ -218,6 +233,7 @@ public:
     void setBodyAwake(BodyId id, bool awake);
     /// Whether the body may sleep; forbidding it wakes the body.
     void setBodySleepAllowed(BodyId id, bool allowed);
+    bool isBodySleepAllowed(BodyId id) const;
     /// BodyDef::continuous and BodyDef::bullet; take effect at the next step.
     bool isBodyContinuous(BodyId id) const;
     void setBodyContinuous(BodyId id, bool continuous);
@@ -276,6 +292,13 @@ public:
     BodyId shapeBody(ShapeId id) const;
     Filter shapeFilter(ShapeId id) const;
     float shapeDensity(ShapeId id) const;  ///< kg/m^2
+    /// ShapeDef::friction (in [0, kMaxFriction]) and restitution (in [0, 1]). A change is mixed
+    /// into the shape's contacts at once (they keep the mix, as ShapeDef describes) and wakes
+    /// the body.
+    float shapeFriction(ShapeId id) const;
+    void setShapeFriction(ShapeId id, float friction);
+    float shapeRestitution(ShapeId id) const;
+    void setShapeRestitution(ShapeId id, float restitution);
     /// Changes the shape's density (0, or in [kMinDensity, kMaxDensity]) and recomputes its
     /// body's mass, centre of mass and inertia, keeping the body's motion; wakes the body. A
     /// shape on a dynamic body needs density > 0. Static and kinematic bodies keep the density

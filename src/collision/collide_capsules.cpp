@@ -42,8 +42,8 @@ void featureAt(float f, std::uint8_t& index, FeatureType& type) {
 }
 
 // The two-point manifold of nearly parallel cores, if they overlap along A by more than the
-// slop and B's clipped core lies on one side of A's. Everything in A's frame; xf is B's frame
-// in A's.
+// slop and B's clipped core lies on one side of A's. p2, q2 (B's core) and towardB are in A's
+// frame.
 bool parallelCores(Manifold& manifold, const ConvexPolygon& capsuleA, const ConvexPolygon& capsuleB,
                    Vec2 p2, Vec2 q2, Vec2 towardB, float totalRadius) {
     const Vec2 p1 = capsuleA.vertices[0];

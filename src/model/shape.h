@@ -16,8 +16,9 @@ struct Shape {
     std::int32_t body = -1;
     ShapeType type = ShapeType::Circle;
     Circle circle;
-    ConvexPolygon
-        polygon;  // a polygon's, or a segment's (either kind) as a polygon of two vertices
+    // A polygon's; a capsule's core, rounded by its radius; a segment's (either kind): two
+    // vertices each.
+    ConvexPolygon polygon;
     Vec2 ghost1;  // a chain segment's neighbouring chain points (ChainSegment)
     Vec2 ghost2;
     float density = 0.0f;
@@ -60,7 +61,7 @@ inline EdgeSegment edgeSegmentOf(const Shape& shape) {
 }
 
 /// The radius a shape collides with: a circle's own, or the skin kPolygonRadius of polygons and
-/// segments beyond a polygon's rounding.
+/// segments beyond a polygon's rounding or a capsule's radius.
 inline float collisionRadius(const Shape& shape) {
     return shape.type == ShapeType::Circle ? shape.circle.radius
                                            : kPolygonRadius + shape.polygon.radius;

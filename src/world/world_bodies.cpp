@@ -180,6 +180,61 @@ void World::setBodyAwake(BodyId id, bool awake) {
     }
 }
 
+bool World::isBodySleepAllowed(BodyId id) const {
+    return impl_->bodies[impl_->bodyIndex("World::isBodySleepAllowed", id)].allowSleep;
+}
+
+float World::bodyLinearDamping(BodyId id) const {
+    return impl_->bodies[impl_->bodyIndex("World::bodyLinearDamping", id)].linearDamping;
+}
+
+void World::setBodyLinearDamping(BodyId id, float damping) {
+    const char* call = "World::setBodyLinearDamping";
+    Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
+    requireNonNegative(call, "damping", damping);
+    b.linearDamping = damping;
+    wakeUp(b);
+}
+
+float World::bodyAngularDamping(BodyId id) const {
+    return impl_->bodies[impl_->bodyIndex("World::bodyAngularDamping", id)].angularDamping;
+}
+
+void World::setBodyAngularDamping(BodyId id, float damping) {
+    const char* call = "World::setBodyAngularDamping";
+    Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
+    requireNonNegative(call, "damping", damping);
+    b.angularDamping = damping;
+    wakeUp(b);
+}
+
+float World::bodyGravityScale(BodyId id) const {
+    return impl_->bodies[impl_->bodyIndex("World::bodyGravityScale", id)].gravityScale;
+}
+
+void World::setBodyGravityScale(BodyId id, float scale) {
+    const char* call = "World::setBodyGravityScale";
+    Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
+    requireWithin(call, "scale", scale, kMaxGravityScale, "kMaxGravityScale");
+    b.gravityScale = scale;
+    wakeUp(b);
+}
+
+void World::setBodyFixedRotation(BodyId id, bool fixedRotation) {
+    Impl& w = *impl_;
+    Body& b = w.bodies[w.bodyIndex("World::setBodyFixedRotation", id)];
+    if (b.fixedRotation == fixedRotation) return;
+    b.fixedRotation = fixedRotation;
+    if (fixedRotation) {
+        // A body that never turns keeps no spin and no torque to turn it later.
+        b.angularVelocity = 0.0f;
+        b.torque = 0.0f;
+    }
+    // The inertia comes and goes with the flag; the centre of mass stays where it is.
+    updateBodyMass(b, w.shapes);
+    wakeUp(b);
+}
+
 void World::setBodySleepAllowed(BodyId id, bool allowed) {
     Body& b = impl_->bodies[impl_->bodyIndex("World::setBodySleepAllowed", id)];
     b.allowSleep = allowed;
@@ -383,6 +438,16 @@ std::vector<BodyId> World::bodyIds() const {
     std::vector<BodyId> ids;
     impl_->bodies.forEach(
         [&](std::int32_t index, const Body&) { ids.push_back(impl_->bodyId(index)); });
+    return ids;
+}
+
+std::vector<JointId> World::bodyJoints(BodyId id) const {
+    const Body& body = impl_->bodies[impl_->bodyIndex("World::bodyJoints", id)];
+    std::vector<JointId> ids;
+    for (std::int32_t key = body.jointList; key != -1;) {
+        ids.push_back(impl_->jointId(edgeOwner(key)));
+        key = impl_->joints[edgeOwner(key)].edges[edgeSide(key)].nextKey;
+    }
     return ids;
 }
 

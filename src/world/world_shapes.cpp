@@ -1,4 +1,5 @@
 // The World facade, part three: shapes.
+#include "model/body_edge.h"
 #include "world/world_checks.h"
 #include "world/world_impl.h"
 
@@ -281,6 +282,54 @@ Polygon World::shapePolygon(ShapeId id) const {
     for (int i = 0; i < polygon.count; ++i) polygon.vertices[i] = shape.polygon.vertices[i];
     polygon.radius = shape.polygon.radius;
     return polygon;
+}
+
+float World::shapeFriction(ShapeId id) const {
+    return impl_->shapes[impl_->shapeIndex("World::shapeFriction", id)].friction;
+}
+
+float World::shapeRestitution(ShapeId id) const {
+    return impl_->shapes[impl_->shapeIndex("World::shapeRestitution", id)].restitution;
+}
+
+namespace {
+
+// Contacts keep their shapes' mixed friction and restitution; a change of either is mixed
+// into every contact of the shape at once, so the next step uses it.
+void remixContacts(World::Impl& w, std::int32_t shapeIndex) {
+    const Body& body = w.bodies[w.shapes[shapeIndex].body];
+    for (std::int32_t key = body.contactList; key != -1;) {
+        Contact& c = w.contacts[edgeOwner(key)];
+        key = c.edges[edgeSide(key)].nextKey;
+        if (c.shapeA != shapeIndex && c.shapeB != shapeIndex) continue;
+        const Shape& a = w.shapes[c.shapeA];
+        const Shape& b = w.shapes[c.shapeB];
+        c.friction = mixFriction(a.friction, b.friction);
+        c.restitution = mixRestitution(a.restitution, b.restitution);
+    }
+}
+
+}  // namespace
+
+void World::setShapeFriction(ShapeId id, float friction) {
+    const char* call = "World::setShapeFriction";
+    Impl& w = *impl_;
+    const std::int32_t index = w.shapeIndex(call, id);
+    requireWithin(call, "friction", friction, kMaxFriction, "kMaxFriction");
+    requireNonNegative(call, "friction", friction);
+    w.shapes[index].friction = friction;
+    remixContacts(w, index);
+    wakeUp(w.bodies[w.shapes[index].body]);
+}
+
+void World::setShapeRestitution(ShapeId id, float restitution) {
+    const char* call = "World::setShapeRestitution";
+    Impl& w = *impl_;
+    const std::int32_t index = w.shapeIndex(call, id);
+    requireInRange(call, "restitution", restitution, 0.0f, 1.0f);
+    w.shapes[index].restitution = restitution;
+    remixContacts(w, index);
+    wakeUp(w.bodies[w.shapes[index].body]);
 }
 
 float World::shapeDensity(ShapeId id) const {

@@ -640,6 +640,16 @@ TEST(Validation, EveryCallChecksItsIds) {
     std::vector<std::function<void()>> bodyCalls = {
         [&] { f.world.destroyBody(body); },
         [&] { f.world.bodyShapes(body); },
+        [&] { f.world.bodyJoints(body); },
+        [&] { f.world.bodyContacts(body); },
+        [&] { f.world.bodyLinearDamping(body); },
+        [&] { f.world.setBodyLinearDamping(body, 1.0f); },
+        [&] { f.world.bodyAngularDamping(body); },
+        [&] { f.world.setBodyAngularDamping(body, 1.0f); },
+        [&] { f.world.bodyGravityScale(body); },
+        [&] { f.world.setBodyGravityScale(body, 1.0f); },
+        [&] { f.world.setBodyFixedRotation(body, true); },
+        [&] { f.world.isBodySleepAllowed(body); },
         [&] { f.world.createShape(body, ShapeDef{}, Circle{}); },
         [&] {
             f.world.createShape(body, ShapeDef{}, Segment{{0, 0}, {1, 0}});
@@ -710,6 +720,10 @@ TEST(Validation, EveryCallChecksItsIds) {
         [&] { f.world.shapeChainSegment(shape); },
         [&] { f.world.setShapeFilter(shape, Filter{}); },
         [&] { f.world.shapeDensity(shape); },
+        [&] { f.world.shapeFriction(shape); },
+        [&] { f.world.setShapeFriction(shape, 0.5f); },
+        [&] { f.world.shapeRestitution(shape); },
+        [&] { f.world.setShapeRestitution(shape, 0.5f); },
         [&] { f.world.setShapeDensity(shape, 1.0f); },
         [&] { f.world.shapeUserData(shape); },
         [&] { f.world.setShapeUserData(shape, 1); },

@@ -502,6 +502,8 @@ private:
             {3, &Driver::setBodyType},
             {2, &Driver::setShapeDensity},
             {2, &Driver::setShapeFilter},
+            {2, &Driver::setShapeMaterial},
+            {3, &Driver::setBodyProperties},
             {5, &Driver::changeJoint},
             {2, &Driver::moveMouse},
             {1, &Driver::worldSettings},
@@ -1629,6 +1631,55 @@ private:
         attempt("World::setShapeDensity",
                 afterMassChange(shape.value, verdict(shape.bad || density.bad)),
                 [&] { journal_.setShapeDensity(shape.value, density.value); });
+    }
+
+    void setShapeMaterial() {
+        Arg<ShapeId> shape = pickShape();
+        if (random_.chance(0.5f)) {
+            Arg<float> friction = values_->nonNegativeUpTo(1.0f, kMaxFriction);
+            trace("setShapeFriction " + idText(shape.value) + " " + text(friction.value));
+            attempt("World::setShapeFriction", verdict(shape.bad || friction.bad),
+                    [&] { journal_.setShapeFriction(shape.value, friction.value); });
+        } else {
+            Arg<float> restitution = values_->fraction();
+            trace("setShapeRestitution " + idText(shape.value) + " " + text(restitution.value));
+            attempt("World::setShapeRestitution", verdict(shape.bad || restitution.bad),
+                    [&] { journal_.setShapeRestitution(shape.value, restitution.value); });
+        }
+    }
+
+    void setBodyProperties() {
+        Arg<BodyId> body = pickBody();
+        switch (random_.below(4)) {
+            case 0: {
+                const bool flag = random_.chance(0.5f);
+                trace("setBodyFixedRotation " + idText(body.value) + " " + std::to_string(flag));
+                attempt("World::setBodyFixedRotation", verdict(body.bad),
+                        [&] { journal_.setBodyFixedRotation(body.value, flag); });
+                break;
+            }
+            case 1: {
+                Arg<float> damping = values_->nonNegative(1.0f);
+                trace("setBodyLinearDamping " + idText(body.value) + " " + text(damping.value));
+                attempt("World::setBodyLinearDamping", verdict(body.bad || damping.bad),
+                        [&] { journal_.setBodyLinearDamping(body.value, damping.value); });
+                break;
+            }
+            case 2: {
+                Arg<float> damping = values_->nonNegative(1.0f);
+                trace("setBodyAngularDamping " + idText(body.value) + " " + text(damping.value));
+                attempt("World::setBodyAngularDamping", verdict(body.bad || damping.bad),
+                        [&] { journal_.setBodyAngularDamping(body.value, damping.value); });
+                break;
+            }
+            default: {
+                Arg<float> scale = values_->gravityScale();
+                trace("setBodyGravityScale " + idText(body.value) + " " + text(scale.value));
+                attempt("World::setBodyGravityScale", verdict(body.bad || scale.bad),
+                        [&] { journal_.setBodyGravityScale(body.value, scale.value); });
+                break;
+            }
+        }
     }
 
     void setShapeFilter() {

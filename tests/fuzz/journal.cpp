@@ -330,6 +330,30 @@ void Journal::setBodyType(BodyId id, BodyType type) {
     world_->setBodyType(id, type);
     lines_.push_back("type " + nameOf('b', id) + " " + num(int(type)));
 }
+void Journal::setShapeFriction(ShapeId id, float friction) {
+    world_->setShapeFriction(id, friction);
+    lines_.push_back("shapeFriction " + nameOf('s', id) + " " + num(friction));
+}
+void Journal::setShapeRestitution(ShapeId id, float restitution) {
+    world_->setShapeRestitution(id, restitution);
+    lines_.push_back("shapeRestitution " + nameOf('s', id) + " " + num(restitution));
+}
+void Journal::setBodyFixedRotation(BodyId id, bool fixedRotation) {
+    world_->setBodyFixedRotation(id, fixedRotation);
+    lines_.push_back("fixedRotation " + nameOf('b', id) + " " + num(fixedRotation));
+}
+void Journal::setBodyLinearDamping(BodyId id, float damping) {
+    world_->setBodyLinearDamping(id, damping);
+    lines_.push_back("linearDamping " + nameOf('b', id) + " " + num(damping));
+}
+void Journal::setBodyAngularDamping(BodyId id, float damping) {
+    world_->setBodyAngularDamping(id, damping);
+    lines_.push_back("angularDamping " + nameOf('b', id) + " " + num(damping));
+}
+void Journal::setBodyGravityScale(BodyId id, float scale) {
+    world_->setBodyGravityScale(id, scale);
+    lines_.push_back("gravityScale " + nameOf('b', id) + " " + num(scale));
+}
 void Journal::setShapeDensity(ShapeId id, float density) {
     world_->setShapeDensity(id, density);
     lines_.push_back("density " + nameOf('s', id) + " " + num(density));
@@ -999,11 +1023,32 @@ ReplayResult replay(std::istream& in) {
             } else {
                 call = [&w, b, v] { w.applyAngularImpulse(b, v); };
             }
+        } else if (command == "shapeFriction" || command == "shapeRestitution") {
+            ShapeId s = shape(f.word());
+            float v = f.f();
+            if (command == "shapeFriction") {
+                call = [&w, s, v] { w.setShapeFriction(s, v); };
+            } else {
+                call = [&w, s, v] { w.setShapeRestitution(s, v); };
+            }
+        } else if (command == "linearDamping" || command == "angularDamping" ||
+                   command == "gravityScale") {
+            BodyId b = body(f.word());
+            float v = f.f();
+            if (command == "linearDamping") {
+                call = [&w, b, v] { w.setBodyLinearDamping(b, v); };
+            } else if (command == "angularDamping") {
+                call = [&w, b, v] { w.setBodyAngularDamping(b, v); };
+            } else {
+                call = [&w, b, v] { w.setBodyGravityScale(b, v); };
+            }
         } else if (command == "awake" || command == "sleepAllowed" || command == "bullet" ||
-                   command == "bodyContinuous") {
+                   command == "bodyContinuous" || command == "fixedRotation") {
             BodyId b = body(f.word());
             bool v = f.b();
-            if (command == "awake") {
+            if (command == "fixedRotation") {
+                call = [&w, b, v] { w.setBodyFixedRotation(b, v); };
+            } else if (command == "awake") {
                 call = [&w, b, v] { w.setBodyAwake(b, v); };
             } else if (command == "sleepAllowed") {
                 call = [&w, b, v] { w.setBodySleepAllowed(b, v); };

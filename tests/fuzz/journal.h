@@ -63,6 +63,12 @@ public:
     void setBodyContinuous(BodyId id, bool continuous);
     void setBodyType(BodyId id, BodyType type);
     void setShapeDensity(ShapeId id, float density);
+    void setShapeFriction(ShapeId id, float friction);
+    void setShapeRestitution(ShapeId id, float restitution);
+    void setBodyFixedRotation(BodyId id, bool fixedRotation);
+    void setBodyLinearDamping(BodyId id, float damping);
+    void setBodyAngularDamping(BodyId id, float damping);
+    void setBodyGravityScale(BodyId id, float scale);
     void setShapeFilter(ShapeId id, const Filter& filter);
     void setJointLimit(JointId id, const JointLimit& limit);
     void setDistanceJointRestLength(JointId id, float length);
