@@ -121,6 +121,12 @@ struct ShapeDef {
     float restitution = 0.0f;
     Filter filter;
     std::uint64_t userData = 0;
+    /// A sensor detects overlaps and never pushes: it reports World::sensorBeginEvents and
+    /// sensorEndEvents for the shapes it overlaps (on any body type, as long as one of the two
+    /// bodies is not static; filtering applies; two sensors do not detect each other), and
+    /// takes no part in contacts, islands or continuous collision. Its density still counts in
+    /// its body's mass.
+    bool isSensor = false;
 };
 
 /// Mass properties of a circle of the given density (kg/m^2). A circle or density that

@@ -87,6 +87,13 @@ struct ContactData {
     ContactPoint points[2];
 };
 
+/// A sensor shape and a shape it started or stopped overlapping during the last step (or when
+/// a shape was destroyed or stopped being a sensor).
+struct SensorEvent {
+    ShapeId sensor;
+    ShapeId visitor;
+};
+
 /// Two shapes that started or stopped touching during the last step.
 struct ContactEvent {
     ShapeId shapeA;
@@ -299,6 +306,10 @@ public:
     void setShapeFriction(ShapeId id, float friction);
     float shapeRestitution(ShapeId id) const;
     void setShapeRestitution(ShapeId id, float restitution);
+    /// ShapeDef::isSensor. Switching it drops the shape's contacts or sensor overlaps (with end
+    /// events for those that touched) and finds its pairs again at the next step.
+    bool isShapeSensor(ShapeId id) const;
+    void setShapeSensor(ShapeId id, bool sensor);
     /// Changes the shape's density (0, or in [kMinDensity, kMaxDensity]) and recomputes its
     /// body's mass, centre of mass and inertia, keeping the body's motion; wakes the body. A
     /// shape on a dynamic body needs density > 0. Static and kinematic bodies keep the density
@@ -384,6 +395,11 @@ public:
     /// the list: the event's shape ids are then already stale.
     std::vector<ContactEvent> contactBeginEvents() const;
     std::vector<ContactEvent> contactEndEvents() const;
+    /// Sensor overlaps that began and ended during the last step (ShapeDef::isSensor), in
+    /// contact order; an end is also reported, at once, when a sensor or the shape it overlaps
+    /// is destroyed or the sensor flag is switched off.
+    std::vector<SensorEvent> sensorBeginEvents() const;
+    std::vector<SensorEvent> sensorEndEvents() const;
     /// The bodies held at the edge of the world during the last step, in the order the step
     /// reached them (the same for every worker count). Cleared when the next step starts.
     std::vector<WorldEdgeEvent> worldEdgeEvents() const;

@@ -22,6 +22,9 @@ struct Contact {
     float restitution = 0.0f;
     bool touching = false;
     bool needsFiltering = false;  // re-check the filter before the next update
+    // A sensor overlap (one shape is a sensor): "touching" means overlapping; it never reaches
+    // islands, the solver or continuous collision, and reports sensor events.
+    bool sensor = false;
 
     // Continuous collision (world/continuous_solver.h): the order contacts were made in (the
     // newest wins a tie between times of impact), and this step's time of impact, when known.

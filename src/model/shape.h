@@ -26,6 +26,7 @@ struct Shape {
     float restitution = 0.0f;
     Filter filter;
     std::uint64_t userData = 0;
+    bool sensor = false;        // ShapeDef::isSensor
     std::int32_t proxyId = -1;  // broad-phase proxy
     AABB box;  // the shape's box at its body's current transform (kept by the broad-phase sync)
     // The body's shapes form a doubly linked list through the shape pool.

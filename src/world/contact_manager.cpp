@@ -16,6 +16,29 @@ bool ContactManager::bodiesMayCollide(std::int32_t a, std::int32_t b) const {
     return true;
 }
 
+bool ContactManager::mayPair(const Shape& a, const Shape& b) const {
+    if (!a.sensor && !b.sensor) return bodiesMayCollide(a.body, b.body);
+    if (a.sensor && b.sensor) return false;
+    if (isSegmentLike(a.type) && isSegmentLike(b.type)) return false;  // no routine for it
+    return bodies_[a.body].type != BodyType::Static || bodies_[b.body].type != BodyType::Static;
+}
+
+void ContactManager::reportTouch(const Contact& contact, bool began) {
+    if (contact.sensor) {
+        // A sensor pushes nothing, so its overlaps wake nothing either.
+        const bool aIsSensor = shapes_[contact.shapeA].sensor;
+        const SensorEvent event{shapeId(aIsSensor ? contact.shapeA : contact.shapeB),
+                                shapeId(aIsSensor ? contact.shapeB : contact.shapeA)};
+        (began ? sensorBeginEvents_ : sensorEndEvents_).push_back(event);
+        return;
+    }
+    // Whatever rested on the contact, or is pushed by it now, must notice.
+    wakeUp(bodies_[contact.bodyA()]);
+    wakeUp(bodies_[contact.bodyB()]);
+    (began ? beginEvents_ : endEvents_)
+        .push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
+}
+
 void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     const Shape& a = shapes_[shapeA];
     const Shape& b = shapes_[shapeB];
@@ -23,7 +46,7 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     if (a.body == b.body || !filtersAllowContact(a.filter, b.filter)) return;
     std::uint64_t key = PairMap::key(shapeA, shapeB);
     if (pairs_.find(key) != -1) return;
-    if (!bodiesMayCollide(a.body, b.body)) return;
+    if (!mayPair(a, b)) return;
 
     // The narrow phase has segment-polygon, segment-circle and polygon-circle (capsules go as
     // polygons), not the reverse: segments first, then polygons and capsules, then circles.
@@ -40,6 +63,7 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     contact.friction = mixFriction(shapes_[shapeA].friction, shapes_[shapeB].friction);
     contact.restitution = mixRestitution(shapes_[shapeA].restitution, shapes_[shapeB].restitution);
     contact.serial = ++contactsMade_;
+    contact.sensor = a.sensor || b.sensor;
     std::int32_t index = contacts_.insert(contact);
     linkEdges(contacts_, bodies_, &Body::contactList, index);
     pairs_.insert(key, index);
@@ -47,12 +71,7 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
 
 void ContactManager::destroyContact(std::int32_t index) {
     Contact& contact = contacts_[index];
-    if (contact.touching) {
-        endEvents_.push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
-        // Whatever rested on the contact must notice it is gone.
-        wakeUp(bodies_[contact.bodyA()]);
-        wakeUp(bodies_[contact.bodyB()]);
-    }
+    if (contact.touching) reportTouch(contact, false);
     unlinkEdges(contacts_, bodies_, &Body::contactList, index);
     pairs_.erase(PairMap::key(contact.shapeA, contact.shapeB));
     contacts_.erase(index);
@@ -70,6 +89,8 @@ void ContactManager::updateContacts() {
     // before does not allocate (only a grown contact pool does).
     beginEvents_.reserve(2 * static_cast<std::size_t>(contacts_.capacity()));
     endEvents_.reserve(2 * static_cast<std::size_t>(contacts_.capacity()));
+    sensorBeginEvents_.reserve(static_cast<std::size_t>(contacts_.capacity()));
+    sensorEndEvents_.reserve(static_cast<std::size_t>(contacts_.capacity()));
     pool_.parallelFor(contacts_.capacity(), 512, [&](int begin, int end, int) {
         for (std::int32_t index = begin; index < end; ++index) {
             std::uint8_t& outcome = contactOutcomes_[index];
@@ -79,7 +100,7 @@ void ContactManager::updateContacts() {
             const Shape& shapeA = shapes_[contact.shapeA];
             const Shape& shapeB = shapes_[contact.shapeB];
             if (contact.needsFiltering) {
-                if (!bodiesMayCollide(contact.bodyA(), contact.bodyB()) ||
+                if (!mayPair(shapeA, shapeB) ||
                     !filtersAllowContact(shapeA.filter, shapeB.filter)) {
                     outcome = kDestroy;
                     continue;
@@ -105,15 +126,7 @@ void ContactManager::updateContacts() {
             case kKeep: break;
             case kDestroy: destroyContact(index); break;
             case kBegan:
-            case kEnded: {
-                const Contact& contact = contacts_[index];
-                wakeUp(bodies_[contact.bodyA()]);
-                wakeUp(bodies_[contact.bodyB()]);
-                std::vector<ContactEvent>& events =
-                    contactOutcomes_[index] == kBegan ? beginEvents_ : endEvents_;
-                events.push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
-                break;
-            }
+            case kEnded: reportTouch(contacts_[index], contactOutcomes_[index] == kBegan); break;
         }
     }
 }
@@ -124,18 +137,15 @@ bool ContactManager::updateContactNow(std::int32_t index) {
     const bool touching =
         updateContact(contact, shapes_[contact.shapeA], bodies_[contact.bodyA()].xf,
                       shapes_[contact.shapeB], bodies_[contact.bodyB()].xf);
-    if (touching != wasTouching) {
-        wakeUp(bodies_[contact.bodyA()]);
-        wakeUp(bodies_[contact.bodyB()]);
-        (touching ? beginEvents_ : endEvents_)
-            .push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
-    }
+    if (touching != wasTouching) reportTouch(contact, touching);
     return touching;
 }
 
 void ContactManager::update() {
     beginEvents_.clear();
     endEvents_.clear();
+    sensorBeginEvents_.clear();
+    sensorEndEvents_.clear();
     if (newShapes_) {
         findNewContacts();
         newShapes_ = false;

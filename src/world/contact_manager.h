@@ -75,6 +75,8 @@ public:
     /// Touching began and ended since the last step began (shape destruction included).
     const std::vector<ContactEvent>& beginEvents() const { return beginEvents_; }
     const std::vector<ContactEvent>& endEvents() const { return endEvents_; }
+    const std::vector<SensorEvent>& sensorBeginEvents() const { return sensorBeginEvents_; }
+    const std::vector<SensorEvent>& sensorEndEvents() const { return sensorEndEvents_; }
 
 private:
     /// A broad-phase pair: makes a contact unless one exists or the pair may not collide.
@@ -86,6 +88,11 @@ private:
     /// Whether two bodies may collide at all: one must be dynamic, and no joint between them
     /// may forbid it.
     bool bodiesMayCollide(std::int32_t bodyA, std::int32_t bodyB) const;
+    // Whether two shapes may make a contact (their filters aside): bodiesMayCollide, or for a
+    // sensor pair one sensor and one body that is not static (and not two segments).
+    bool mayPair(const Shape& a, const Shape& b) const;
+    // A touching contact's begin or end, as a contact event or a sensor event.
+    void reportTouch(const Contact& contact, bool began);
     std::uint16_t presentCategories() const;
     ShapeId shapeId(std::int32_t index) const {
         return {index, shapes_.generation(index), worldId_};
@@ -105,6 +112,8 @@ private:
     std::uint64_t contactsMade_ = 0;  // Contact::serial of the last contact made
     std::vector<ContactEvent> beginEvents_;
     std::vector<ContactEvent> endEvents_;
+    std::vector<SensorEvent> sensorBeginEvents_;
+    std::vector<SensorEvent> sensorEndEvents_;
     std::vector<std::uint8_t> contactOutcomes_;  // updateContacts' first phase, per contact slot
     struct ShapeMove {
         AABB swept;

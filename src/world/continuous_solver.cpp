@@ -75,6 +75,7 @@ bool optedOut(const Body& b) {
 // Whether the contact can be an impact: something moves, and one side is static, kinematic or
 // a bullet (two ordinary dynamic bodies are left to the discrete step).
 bool mayImpact(const Contact& c, const SlotPool<Body>& bodies) {
+    if (c.sensor) return false;  // a sensor stops nothing
     const Body& a = bodies[c.bodyA()];
     const Body& b = bodies[c.bodyB()];
     if (!isActive(a) && !isActive(b)) return false;
@@ -181,7 +182,7 @@ void ContinuousSolver::buildIsland(std::int32_t contactIndex, float alpha, SlotP
             const std::int32_t index = edgeOwner(key);
             const int side = edgeSide(key);
             key = contacts[index].edges[side].nextKey;
-            if (inIsland_[index]) continue;
+            if (inIsland_[index] || contacts[index].sensor) continue;
             const std::int32_t otherIndex = contacts[index].edges[1 - side].body;
             Body& other = bodies[otherIndex];
             // Only what can stop the body: static, kinematic and bullet bodies (a bullet's

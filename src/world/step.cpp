@@ -110,7 +110,7 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     });
     contacts.forEach([this](std::int32_t, const Contact& c) {
         ++stats.contactCount;
-        if (c.touching) ++stats.touchingCount;
+        if (c.touching && !c.sensor) ++stats.touchingCount;
     });
     previousInvDt = context.invDt;
 }

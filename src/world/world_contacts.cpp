@@ -29,7 +29,7 @@ std::vector<ContactData> World::contacts() const {
     const Impl& w = *impl_;
     std::vector<ContactData> result;
     w.contacts.forEach([&](std::int32_t, const Contact& c) {
-        if (c.touching) result.push_back(contactData(w, c));
+        if (c.touching && !c.sensor) result.push_back(contactData(w, c));
     });
     return result;
 }
@@ -40,7 +40,7 @@ std::vector<ContactData> World::bodyContacts(BodyId id) const {
     std::vector<ContactData> result;
     for (std::int32_t key = body.contactList; key != -1;) {
         const Contact& c = w.contacts[edgeOwner(key)];
-        if (c.touching) result.push_back(contactData(w, c));
+        if (c.touching && !c.sensor) result.push_back(contactData(w, c));
         key = c.edges[edgeSide(key)].nextKey;
     }
     return result;
@@ -51,6 +51,12 @@ std::vector<ContactEvent> World::contactBeginEvents() const {
 }
 std::vector<ContactEvent> World::contactEndEvents() const {
     return impl_->contactManager.endEvents();
+}
+std::vector<SensorEvent> World::sensorBeginEvents() const {
+    return impl_->contactManager.sensorBeginEvents();
+}
+std::vector<SensorEvent> World::sensorEndEvents() const {
+    return impl_->contactManager.sensorEndEvents();
 }
 
 }  // namespace pivot

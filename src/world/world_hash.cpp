@@ -221,6 +221,7 @@ std::uint64_t World::stateHash() const {
         h.add(static_cast<std::int32_t>(s.filter.categoryBits | (s.filter.maskBits << 16)));
         h.add(static_cast<std::int32_t>(s.filter.groupIndex));
         h.add(s.userData);
+        if (s.sensor) h.add(s.sensor);
         h.add(s.prev);
         h.add(s.next);
         const AABB& box = w.contactManager.broadPhase().fatBox(s.proxyId);
@@ -286,6 +287,7 @@ std::uint64_t World::stateHash() const {
         h.add(c.friction);
         h.add(c.restitution);
         h.add(c.touching);
+        if (c.sensor) h.add(c.sensor);  // only then, so hashes recorded before sensors hold
         h.add(c.needsFiltering);
         h.add(c.serial);
         const Manifold& m = c.manifold;

@@ -26,6 +26,7 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
     shape.restitution = def.restitution;
     shape.filter = def.filter;
     shape.userData = def.userData;
+    shape.sensor = def.isSensor;
     Body& body = w.bodies[bodyIndex];
     requireMotionAfterMassChange(
         call, bodyAfterMassChange(body, w.shapes, MassChange{body.type, &shape}), body);
@@ -310,6 +311,34 @@ void remixContacts(World::Impl& w, std::int32_t shapeIndex) {
 }
 
 }  // namespace
+
+bool World::isShapeSensor(ShapeId id) const {
+    return impl_->shapes[impl_->shapeIndex("World::isShapeSensor", id)].sensor;
+}
+
+void World::setShapeSensor(ShapeId id, bool sensor) {
+    const char* call = "World::setShapeSensor";
+    Impl& w = *impl_;
+    w.requireNoQuery(call);
+    const std::int32_t index = w.shapeIndex(call, id);
+    Shape& shape = w.shapes[index];
+    if (shape.sensor == sensor) return;
+    // Its contacts become sensor overlaps or the other way: drop them now (with their end
+    // events) and let the next step pair the shape again.
+    Body& body = w.bodies[shape.body];
+    for (std::int32_t key = body.contactList; key != -1;) {
+        const std::int32_t contactIndex = edgeOwner(key);
+        const Contact& contact = w.contacts[contactIndex];
+        key = contact.edges[edgeSide(key)].nextKey;
+        if (contact.shapeA == index || contact.shapeB == index) {
+            w.contactManager.destroyContact(contactIndex);
+        }
+    }
+    shape.sensor = sensor;
+    w.contactManager.broadPhase().touchProxy(shape.proxyId);
+    w.contactManager.markNewShapes();
+    wakeUp(body);
+}
 
 void World::setShapeFriction(ShapeId id, float friction) {
     const char* call = "World::setShapeFriction";

@@ -333,6 +333,7 @@ private:
         def.restitution = restitution.value;
         def.filter = filter();
         def.userData = random_.next();
+        def.isSensor = random_.chance(0.1f);
         return {def, density.bad || friction.bad || restitution.bad};
     }
 
@@ -1635,7 +1636,12 @@ private:
 
     void setShapeMaterial() {
         Arg<ShapeId> shape = pickShape();
-        if (random_.chance(0.5f)) {
+        if (random_.chance(0.2f)) {
+            const bool flag = random_.chance(0.5f);
+            trace("setShapeSensor " + idText(shape.value) + " " + std::to_string(flag));
+            attempt("World::setShapeSensor", verdict(shape.bad),
+                    [&] { journal_.setShapeSensor(shape.value, flag); });
+        } else if (random_.chance(0.5f)) {
             Arg<float> friction = values_->nonNegativeUpTo(1.0f, kMaxFriction);
             trace("setShapeFriction " + idText(shape.value) + " " + text(friction.value));
             attempt("World::setShapeFriction", verdict(shape.bad || friction.bad),

@@ -30,9 +30,10 @@ std::string num(const Filter& f) {
     return std::to_string(f.categoryBits) + " " + std::to_string(f.maskBits) + " " +
            std::to_string(f.groupIndex);
 }
+// A sensor's def ends with the word "sensor" (journals before sensors have none).
 std::string shapeDefText(const ShapeDef& def) {
     return num(def.density) + " " + num(def.friction) + " " + num(def.restitution) + " " +
-           num(def.filter);
+           num(def.filter) + (def.isSensor ? " sensor" : "");
 }
 
 }  // namespace
@@ -330,6 +331,10 @@ void Journal::setBodyType(BodyId id, BodyType type) {
     world_->setBodyType(id, type);
     lines_.push_back("type " + nameOf('b', id) + " " + num(int(type)));
 }
+void Journal::setShapeSensor(ShapeId id, bool sensor) {
+    world_->setShapeSensor(id, sensor);
+    lines_.push_back("shapeSensor " + nameOf('s', id) + " " + num(sensor));
+}
 void Journal::setShapeFriction(ShapeId id, float friction) {
     world_->setShapeFriction(id, friction);
     lines_.push_back("shapeFriction " + nameOf('s', id) + " " + num(friction));
@@ -571,6 +576,14 @@ public:
         def.friction = f();
         def.restitution = f();
         def.filter = filter();
+        const std::streampos at = in_.tellg();
+        std::string w;
+        if (in_ >> w && w == "sensor") {
+            def.isSensor = true;
+        } else {
+            in_.clear();
+            in_.seekg(at);
+        }
         return def;
     }
     bool ok() const { return ok_; }
@@ -1023,6 +1036,10 @@ ReplayResult replay(std::istream& in) {
             } else {
                 call = [&w, b, v] { w.applyAngularImpulse(b, v); };
             }
+        } else if (command == "shapeSensor") {
+            ShapeId s = shape(f.word());
+            bool v = f.b();
+            call = [&w, s, v] { w.setShapeSensor(s, v); };
         } else if (command == "shapeFriction" || command == "shapeRestitution") {
             ShapeId s = shape(f.word());
             float v = f.f();

@@ -63,6 +63,7 @@ public:
     void setBodyContinuous(BodyId id, bool continuous);
     void setBodyType(BodyId id, BodyType type);
     void setShapeDensity(ShapeId id, float density);
+    void setShapeSensor(ShapeId id, bool sensor);
     void setShapeFriction(ShapeId id, float friction);
     void setShapeRestitution(ShapeId id, float restitution);
     void setBodyFixedRotation(BodyId id, bool fixedRotation);
