@@ -49,6 +49,8 @@ constexpr float kAabbMotionFactor = 4.0f;
 /// m/s. A contact closing faster than this bounces with its restitution; slower contacts are
 /// treated as inelastic so resting bodies do not jitter.
 constexpr float kRestitutionThreshold = 1.0f;
+/// m/s: WorldDef::hitEventThreshold's default (Box2D v3's).
+constexpr float kDefaultHitEventThreshold = 1.0f;
 
 /// Sleeping: a body slower than these for kTimeToSleep seconds may sleep, with its island.
 constexpr float kLinearSleepTolerance = 0.01f;                 ///< m/s

@@ -61,6 +61,11 @@ enum class JointLetGoReason : std::uint8_t {
     /// solver diverged on it (constraints that contradict each other, extreme lever arms).
     /// Always on: it keeps NaN and infinity out of the world and out of jointReactionForce.
     NonFinite,
+    /// The force it applied passed its break force (a def's breakForce, World::setJointBreakForce):
+    /// a breakable joint.
+    Force,
+    /// The torque it applied passed its break torque (breakTorque).
+    Torque,
 };
 
 /// A joint the engine let go during the last step. A let-go joint is not solved (its bodies
@@ -70,6 +75,10 @@ struct JointLetGoEvent {
     JointId joint;
     JointLetGoReason reason = JointLetGoReason::Separation;
     float separation = 0.0f;  ///< m, |anchorB - anchorA| when the step let it go
+    /// N (Force) or N m (Torque): the magnitude of the force, or the torque, that passed the
+    /// threshold, as jointReactionForce / jointReactionTorque would have reported it; 0 for
+    /// the other reasons.
+    float reaction = 0.0f;
 };
 
 /// How soft a joint holds together under the strategies that make it soft (the others keep it
@@ -118,6 +127,12 @@ struct RevoluteJointDef {
     std::optional<float> letGoSeparation;
     /// Whether the two bodies' shapes may collide with each other.
     bool collideConnected = false;
+    /// N and N m, each in [0, kMaxMagnitude]; 0 (the default): never. Breakable joints: the
+    /// joint is let go (JointLetGoReason::Force, Torque) in the step where the force, or the
+    /// torque, it applies to body B (jointReactionForce's length, |jointReactionTorque|) passes
+    /// this, measured per substep.
+    float breakForce = 0.0f;
+    float breakTorque = 0.0f;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
 
     /// A joint pinning bodyA to bodyB at a world point, at the bodies' current relative angle.
@@ -172,6 +187,9 @@ struct DistanceJointDef {
     /// length is outside what the joint allows (World::jointSeparation).
     std::optional<float> letGoSeparation;
     bool collideConnected = false;
+    /// As RevoluteJointDef::breakForce and breakTorque.
+    float breakForce = 0.0f;
+    float breakTorque = 0.0f;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
 };
 
@@ -202,6 +220,9 @@ struct PulleyJointDef {
     /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation).
     std::optional<float> letGoSeparation;
     bool collideConnected = true;  ///< as Box2D's pulley: the two loads may touch
+    /// As RevoluteJointDef::breakForce and breakTorque.
+    float breakForce = 0.0f;
+    float breakTorque = 0.0f;
     std::uint64_t userData = 0;
 };
 
@@ -257,6 +278,9 @@ struct PrismaticJointDef {
     /// is off the axis line, and beyond a reached limit (World::jointSeparation).
     std::optional<float> letGoSeparation;
     bool collideConnected = false;
+    /// As RevoluteJointDef::breakForce and breakTorque.
+    float breakForce = 0.0f;
+    float breakTorque = 0.0f;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
 
     /// A joint at a world anchor sliding along a world axis, at the bodies' current relative
@@ -297,6 +321,9 @@ struct WeldJointDef {
     /// is soft: World::jointSeparation).
     std::optional<float> letGoSeparation;
     bool collideConnected = false;
+    /// As RevoluteJointDef::breakForce and breakTorque.
+    float breakForce = 0.0f;
+    float breakTorque = 0.0f;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
 
     /// A joint welding bodyA to bodyB at a world point, at the bodies' current relative angle.
@@ -339,6 +366,9 @@ struct WheelJointDef {
     /// anchor is off the axis line, and beyond a reached limit (World::jointSeparation).
     std::optional<float> letGoSeparation;
     bool collideConnected = false;
+    /// As RevoluteJointDef::breakForce and breakTorque.
+    float breakForce = 0.0f;
+    float breakTorque = 0.0f;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it
 
     /// A wheel at a world anchor whose suspension runs along a world axis.
@@ -382,6 +412,9 @@ struct GearJointDef {
     /// joint1's units: rad for a revolute joint, m for a prismatic one.
     std::optional<float> letGoSeparation;
     bool collideConnected = false;
+    /// As RevoluteJointDef::breakForce and breakTorque.
+    float breakForce = 0.0f;
+    float breakTorque = 0.0f;
     std::uint64_t userData = 0;
 };
 
@@ -398,6 +431,9 @@ struct FrictionJointDef {
     float maxForce = 0.0f;   ///< N, >= 0
     float maxTorque = 0.0f;  ///< N m, >= 0
     bool collideConnected = false;
+    /// As RevoluteJointDef::breakForce and breakTorque.
+    float breakForce = 0.0f;
+    float breakTorque = 0.0f;
     std::uint64_t userData = 0;
 };
 
@@ -417,6 +453,9 @@ struct MotorJointDef {
     float maxTorque = 1.0f;         ///< N m, >= 0
     float correctionFactor = 0.3f;  ///< in [0, 1]
     bool collideConnected = false;
+    /// As RevoluteJointDef::breakForce and breakTorque.
+    float breakForce = 0.0f;
+    float breakTorque = 0.0f;
     std::uint64_t userData = 0;
 };
 

@@ -127,6 +127,13 @@ struct ShapeDef {
     /// takes no part in contacts, islands or continuous collision. Its density still counts in
     /// its body's mass.
     bool isSensor = false;
+    /// Report World::contactHitEvents for this shape's contacts: touching begun or kept with an
+    /// approach faster than WorldDef::hitEventThreshold (a crash sound, damage). Off by default:
+    /// most shapes need none.
+    bool enableHitEvents = false;
+    /// Ask World::setPreSolveCallback's callback about this shape's touching contacts before
+    /// each step solves them (a one-way platform sets it). Off by default.
+    bool enablePreSolve = false;
 };
 
 /// Mass properties of a circle of the given density (kg/m^2). A circle or density that

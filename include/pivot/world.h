@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -44,6 +45,9 @@ struct WorldDef {
     float contactPushSpeed = kDefaultContactPushSpeed;
     /// m/s: contacts closing slower than this do not bounce.
     float restitutionThreshold = kRestitutionThreshold;
+    /// m/s, in [0, kMaxSpeed]: the approach speed above which a contact of a shape with
+    /// ShapeDef::enableHitEvents reports a World::contactHitEvents entry.
+    float hitEventThreshold = kDefaultHitEventThreshold;
     /// Let islands that have come to rest sleep (see BodyDef::allowSleep).
     bool enableSleep = true;
     /// Continuous collision, as Box2D 2.4.1 has it: after each step, a dynamic body that passed
@@ -99,6 +103,34 @@ struct ContactEvent {
     ShapeId shapeA;
     ShapeId shapeB;
 };
+
+/// A contact that took a hit during the last step: of a shape with ShapeDef::enableHitEvents,
+/// touching after the step, with a point that approached faster than
+/// WorldDef::hitEventThreshold and that the solver pushed apart.
+struct ContactHitEvent {
+    ShapeId shapeA;
+    ShapeId shapeB;
+    Vec2 point;                  ///< m, the fastest approaching point, where the step left it
+    Vec2 normal;                 ///< unit, from shape A to shape B
+    float approachSpeed = 0.0f;  ///< m/s, how fast the point closed when the step began
+};
+
+/// A body the last step moved (or that fell asleep in it): for syncing a game object to it.
+struct BodyMoveEvent {
+    BodyId body;
+    Transform transform;      ///< where the step left its origin
+    bool fellAsleep = false;  ///< the step put it to sleep: no move events until it wakes
+};
+
+/// World::setPreSolveCallback: called with a touching contact (measured at the poses the step
+/// starts from) of a shape with ShapeDef::enablePreSolve, before the step solves it; return
+/// false to leave the contact out of this step (it pushes nothing, and continuous collision
+/// does not stop at it), true to keep it.
+using PreSolveCallback = std::function<bool(const ContactData& contact)>;
+/// World::setCustomFilterCallback: called for two shapes whose filters (pivot::Filter) and
+/// bodies allow a contact, when the pair is about to make one or is re-filtered; return false
+/// to keep them from colliding.
+using CustomFilterCallback = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
 
 /// A body the last step held at the edge of the world: its origin would have left
 /// +-kMaxCoordinate, the range every position the API takes must be in. It was put back on the
@@ -175,6 +207,27 @@ public:
     /// WorldDef::enableContinuous; takes effect at the next step.
     void setContinuousEnabled(bool enabled);
     bool isContinuousEnabled() const;
+    /// WorldDef::hitEventThreshold; takes effect at the next step.
+    float hitEventThreshold() const;
+    void setHitEventThreshold(float speed);
+
+    // --- callbacks ---------------------------------------------------------------------------
+    // The two callbacks run during World::step, on the thread that called it (never on a
+    // worker), in contact order, so the same world calls them in the same order with the same
+    // arguments on any worker count. A callback may read the world; a call that would change it
+    // (any setter, create, destroy, apply or step) throws pivot::Error from inside the callback.
+    // An exception a callback lets out is held: the step carries on as if the callback had
+    // returned true, and World::step throws that exception when the step is complete (the world
+    // then is as that step left it).
+    /// The pre-solve callback (pivot::PreSolveCallback), or an empty one to stop asking. It is
+    /// asked each step about every touching contact of a shape with ShapeDef::enablePreSolve
+    /// whose bodies are awake, and again before continuous collision stops a body at one.
+    void setPreSolveCallback(PreSolveCallback callback);
+    /// The custom filter (pivot::CustomFilterCallback), or an empty one for none. It is asked
+    /// about every new pair, and about the contacts re-filtered after setShapeFilter,
+    /// setBodyType or a joint's creation or destruction. Setting it does not re-ask existing
+    /// contacts: call setShapeFilter for the shapes that should be asked again.
+    void setCustomFilterCallback(CustomFilterCallback callback);
 
     // --- bodies -----------------------------------------------------------------------------
     BodyId createBody(const BodyDef& def);
@@ -325,6 +378,12 @@ public:
     Capsule shapeCapsule(ShapeId id) const;
     /// Takes effect at the next step: existing contacts are re-filtered, new pairs found.
     void setShapeFilter(ShapeId id, const Filter& filter);
+    /// ShapeDef::enableHitEvents and enablePreSolve; take effect at the next step (enabling
+    /// pre-solve wakes the body, so its resting contacts are asked).
+    bool shapeHitEventsEnabled(ShapeId id) const;
+    void setShapeHitEventsEnabled(ShapeId id, bool enabled);
+    bool shapePreSolveEnabled(ShapeId id) const;
+    void setShapePreSolveEnabled(ShapeId id, bool enabled);
     /// The value of ShapeDef::userData, or the last one set; pivot2d never reads it.
     std::uint64_t shapeUserData(ShapeId id) const;
     void setShapeUserData(ShapeId id, std::uint64_t userData);
@@ -387,7 +446,8 @@ public:
     // --- contacts ---------------------------------------------------------------------------
     // Every list the API returns (contacts, events, bodyIds, jointIds, bodyShapes) is a copy,
     // so destroying bodies, shapes or joints while iterating one is safe; the ids in it may go
-    // stale meanwhile (check with isValid). No call ever runs user code during a step.
+    // stale meanwhile (check with isValid). The only user code a step runs is the two callbacks
+    // (setPreSolveCallback, setCustomFilterCallback), which may not change the world.
     /// Every touching contact, measured at the current poses.
     std::vector<ContactData> contacts() const;
     /// Contacts that started / stopped touching during the last step. Destroying a shape (or
@@ -400,6 +460,13 @@ public:
     /// is destroyed or the sensor flag is switched off.
     std::vector<SensorEvent> sensorBeginEvents() const;
     std::vector<SensorEvent> sensorEndEvents() const;
+    /// The hits of the last step (pivot::ContactHitEvent), at most one per contact, in island
+    /// order (the same for every worker count).
+    std::vector<ContactHitEvent> contactHitEvents() const;
+    /// Every dynamic and kinematic body the last step simulated (awake, in an island), with its
+    /// transform after the step, in island order (the same for every worker count). A body
+    /// moved by setBodyTransform between steps is not listed until a step moves it.
+    std::vector<BodyMoveEvent> bodyMoveEvents() const;
     /// The bodies held at the edge of the world during the last step, in the order the step
     /// reached them (the same for every worker count). Cleared when the next step starts.
     std::vector<WorldEdgeEvent> worldEdgeEvents() const;
@@ -457,9 +524,17 @@ public:
     /// A value in [0, kMaxMagnitude] m (0: never let go for separation), or nullopt to follow
     /// WorldDef::jointLetGoSeparation. Takes effect at the next step.
     void setJointLetGoSeparation(JointId id, std::optional<float> separation);
-    /// The joints let go during the last step, in the order the step reached them (the same
-    /// for every worker count). Cleared when the next step starts.
+    /// The joints let go during the last step, for their separation, their break force or
+    /// torque or a diverged solve (JointLetGoReason), in the order the step reached them (the
+    /// same for every worker count). Cleared when the next step starts.
     std::vector<JointLetGoEvent> jointLetGoEvents() const;
+    /// The def's breakForce (N) and breakTorque (N m), each in [0, kMaxMagnitude]; 0: never.
+    /// Take effect at the next step (the setters wake the joint's bodies); a let-go joint stays
+    /// let go (rearmJoint).
+    float jointBreakForce(JointId id) const;
+    void setJointBreakForce(JointId id, float force);
+    float jointBreakTorque(JointId id) const;
+    void setJointBreakTorque(JointId id, float torque);
     /// rad, angleB - angleA - referenceAngle (revolute, prismatic and weld joints have a
     /// reference angle; for the others it is 0).
     float jointAngle(JointId id) const;

@@ -37,6 +37,9 @@ struct ManifoldPoint {
     Vec2 localPoint;             // see the conventions above
     float normalImpulse = 0.0f;  // accumulated, N s (kept for warm starting)
     float tangentImpulse = 0.0f;
+    // m/s, how fast the point closed at the start of the last step that solved it (its first
+    // substep): what a hit event reports.
+    float approachSpeed = 0.0f;
     std::uint32_t id = 0;  // feature id
 };
 

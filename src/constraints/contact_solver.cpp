@@ -260,6 +260,7 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
             // gravity acts after the bounce. (Measuring after it would return the ball about
             // one step's travel higher than it fell, v * h, 5% for a 2 m drop at 60 Hz.)
             float vRel = dot(c.normal, relativeVelocity(startA, startB, p.rA, p.rB));
+            p.approachSpeed = -vRel;
             if (vRel < -step.restitutionThreshold) p.velocityBias = -contact.restitution * vRel;
             if (baumgarte_) {
                 float push = -step.contactBiasFactor * step.invDt *
@@ -335,10 +336,17 @@ void ContactSolver::relax(IndexRange range, SolverVelocity* velocities) {
     }
 }
 
-void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool) const {
+void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool,
+                                  bool firstSubstep) const {
     for (int k = range.begin; k < range.end; ++k) {
         const ContactVelocityConstraint& c = velocity_[k];
         Manifold& m = pool[c.contactIndex].manifold;
+        if (firstSubstep) {
+            // Later substeps measure what the first one left, not the hit.
+            for (int j = 0; j < m.pointCount; ++j) {
+                m.points[j].approachSpeed = c.points[j].approachSpeed;
+            }
+        }
         for (int j = 0; j < c.pointCount; ++j) {
             // A non-finite impulse is not carried into the next step's warm start.
             const float normal = c.points[j].normalImpulse;

@@ -41,8 +41,9 @@ struct ContactVelocityPoint {
     float tangentImpulse = 0.0f;
     float normalMass = 0.0f;
     float tangentMass = 0.0f;
-    float velocityBias = 0.0f;  // restitution or Baumgarte target, m/s
-    float softTarget = 0.0f;    // soft contacts: the spring's push-out speed, m/s
+    float velocityBias = 0.0f;   // restitution or Baumgarte target, m/s
+    float softTarget = 0.0f;     // soft contacts: the spring's push-out speed, m/s
+    float approachSpeed = 0.0f;  // m/s, -vn at the start of the step (hit events)
 };
 
 struct ContactVelocityConstraint {
@@ -95,7 +96,9 @@ public:
     /// Applies last step's impulses (scaled by step.dtRatio in prepare) before iterating.
     void warmStart(IndexRange range, SolverVelocity* velocities) const;
     void solveVelocities(IndexRange range, SolverVelocity* velocities);
-    void storeImpulses(IndexRange range, SlotPool<Contact>& pool) const;
+    /// Writes the accumulated impulses into the contacts' manifolds for the next warm start;
+    /// the first substep of a step also writes each point's approach speed (hit events).
+    void storeImpulses(IndexRange range, SlotPool<Contact>& pool, bool firstSubstep) const;
     /// One NGS sweep over the points of contacts [range). Returns the smallest separation
     /// measured (m, before each correction; NaN if any was NaN); 0 when there are none.
     float solvePositions(IndexRange range, SolverPose* positions) const;
@@ -104,6 +107,8 @@ public:
     /// others are held as if infinitely heavy). Needs NGS constraints (reset with NGS).
     float solveImpactPositions(IndexRange range, SolverPose* positions, std::int32_t movableA,
                                std::int32_t movableB, float bias) const;
+    /// m/s, how fast point j of constraint k closed when prepare measured it.
+    float approachSpeed(int k, int j) const { return velocity_[k].points[j].approachSpeed; }
     /// Whether any contact takes part in the NGS position phase.
     bool hasPositionConstraints() const { return !position_.empty(); }
     /// Soft contacts: whether they relax, and one relax sweep over [range) (rigid, no spring).

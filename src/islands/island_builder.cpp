@@ -79,7 +79,10 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet
             const Contact& contact = storage.contacts[contactIndex];
             int side = edgeSide(key);
             key = contact.edges[side].nextKey;
-            if (contactVisited_[contactIndex] || !contact.touching || contact.sensor) continue;
+            if (contactVisited_[contactIndex] || !contact.touching || contact.sensor ||
+                !contact.enabled) {
+                continue;
+            }
             contactVisited_[contactIndex] = 1;
             std::int32_t other = reach(contact.edges[1 - side].body, storage, set, range.bodyBegin);
             set.contacts.push_back(contactIndex);

@@ -51,6 +51,9 @@ struct Joint {
     bool letGo = false;
     JointLetGoReason letGoReason = JointLetGoReason::Separation;
     float letGoAt = 0.0f;           // m, the separation then
+    float letGoReaction = 0.0f;     // N or N m, the force or torque that broke it (Force, Torque)
+    float breakForce = 0.0f;        // N; 0: never (the def's breakForce)
+    float breakTorque = 0.0f;       // N m; 0: never
     bool hasLetGoOverride = false;  // letGoOverride replaces WorldDef::jointLetGoSeparation
     float letGoOverride = 0.0f;     // m; 0: never
     std::int32_t gearCount = 0;     // gear joints built on this one (destroyed before it)
@@ -104,11 +107,15 @@ struct Joint {
     bool hasFiniteReactions() const {
         return std::visit([&](const auto& d) { return d.hasFiniteReactions(impulseInvDt); }, data);
     }
+    /// N and N m: the force and torque the stored impulses applied to body B (impulse / dt).
+    Vec2 reactionForce() const;
+    float reactionTorque() const;
     /// Lets the joint go: it keeps no impulse and is not solved until rearmed.
-    void letGoFor(JointLetGoReason reason, float separation) {
+    void letGoFor(JointLetGoReason reason, float separation, float reaction = 0.0f) {
         letGo = true;
         letGoReason = reason;
         letGoAt = separation;
+        letGoReaction = reaction;
         std::visit([](auto& d) { d.clearImpulses(); }, data);
     }
 };

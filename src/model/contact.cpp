@@ -41,10 +41,12 @@ bool updateContact(Contact& contact, const Shape& shapeA, const Transform& xfA, 
         ManifoldPoint& p = m.points[i];
         p.normalImpulse = 0.0f;
         p.tangentImpulse = 0.0f;
+        p.approachSpeed = 0.0f;
         for (int j = 0; j < old.pointCount; ++j) {
             if (old.points[j].id == p.id) {
                 p.normalImpulse = old.points[j].normalImpulse;
                 p.tangentImpulse = old.points[j].tangentImpulse;
+                p.approachSpeed = old.points[j].approachSpeed;
                 break;
             }
         }

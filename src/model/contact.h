@@ -25,6 +25,9 @@ struct Contact {
     // A sensor overlap (one shape is a sensor): "touching" means overlapping; it never reaches
     // islands, the solver or continuous collision, and reports sensor events.
     bool sensor = false;
+    // The pre-solve callback's answer for this step (World::setPreSolveCallback): a disabled
+    // contact touches but is left out of islands, the solver and continuous collision.
+    bool enabled = true;
 
     // Continuous collision (world/continuous_solver.h): the order contacts were made in (the
     // newest wins a tie between times of impact), and this step's time of impact, when known.

@@ -27,6 +27,8 @@ struct Shape {
     Filter filter;
     std::uint64_t userData = 0;
     bool sensor = false;        // ShapeDef::isSensor
+    bool hitEvents = false;     // ShapeDef::enableHitEvents
+    bool preSolve = false;      // ShapeDef::enablePreSolve
     std::int32_t proxyId = -1;  // broad-phase proxy
     AABB box;  // the shape's box at its body's current transform (kept by the broad-phase sync)
     // The body's shapes form a doubly linked list through the shape pool.

@@ -114,11 +114,19 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
             // zero impulse can still be 0 * inf = NaN when its island diverged).
             if (joint.letGo) continue;
             c.storeImpulses(joint, invDt);
+            // The bodies are still at their start-of-step poses (written back later).
             if (!joint.hasFiniteReactions()) {
-                // The bodies are still at their start-of-step poses (written back later).
-                const float separation = joint.separation(bodies);
-                joint.letGoFor(JointLetGoReason::NonFinite, separation);
+                joint.letGoFor(JointLetGoReason::NonFinite, joint.separation(bodies));
                 ++report.letGoJoints;
+            } else if (joint.breakForce > 0.0f || joint.breakTorque > 0.0f) {
+                const float force = length(joint.reactionForce());
+                const float torque = std::fabs(joint.reactionTorque());
+                const bool forceBroke = joint.breakForce > 0.0f && force > joint.breakForce;
+                if (forceBroke || (joint.breakTorque > 0.0f && torque > joint.breakTorque)) {
+                    joint.letGoFor(forceBroke ? JointLetGoReason::Force : JointLetGoReason::Torque,
+                                   joint.separation(bodies), forceBroke ? force : torque);
+                    ++report.letGoJoints;
+                }
             }
         }
     });
@@ -300,7 +308,8 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
                            velocities, work.positionScratch, step.positionIterations, step.dt);
     // After the relax sweeps, which add to the impulses (the contacts' NGS solves do not).
     storeJointImpulses(team, work, storage.joints, bodies, step.invDt, true, mine);
-    work.contactSolver.storeImpulses(team.share(island.contactCount), storage.contacts);
+    work.contactSolver.storeImpulses(team.share(island.contactCount), storage.contacts,
+                                     firstSubstep);
     // The next substep's set-up reads the poses and stored impulses this one wrote.
     if (step.substepCount > 1) team.sync();
     return phase;

@@ -39,6 +39,55 @@ void ContactManager::reportTouch(const Contact& contact, bool began) {
         .push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
 }
 
+ContactData ContactManager::contactData(const Contact& c) const {
+    const Shape& a = shapes_[c.shapeA];
+    const Shape& b = shapes_[c.shapeB];
+    const WorldManifold wm = computeWorldManifold(
+        c.manifold, bodies_[a.body].xf, collisionRadius(a), bodies_[b.body].xf, collisionRadius(b));
+    ContactData data;
+    data.shapeA = shapeId(c.shapeA);
+    data.shapeB = shapeId(c.shapeB);
+    data.normal = wm.normal;
+    data.pointCount = c.manifold.pointCount;
+    for (int i = 0; i < data.pointCount; ++i) {
+        data.points[i] = {wm.points[i], wm.separations[i], c.manifold.points[i].normalImpulse,
+                          c.manifold.points[i].tangentImpulse};
+    }
+    return data;
+}
+
+bool ContactManager::wantsPreSolve(const Contact& c) const {
+    return preSolve_ && c.touching && !c.sensor &&
+           (shapes_[c.shapeA].preSolve || shapes_[c.shapeB].preSolve);
+}
+
+// The depth guard makes the world refuse changes while user code runs inside a step; an
+// exception is held rather than let through a half-done step.
+bool ContactManager::askPreSolve(const Contact& contact) {
+    bool keep = true;
+    ++callbackDepth_;
+    try {
+        keep = preSolve_(contactData(contact));
+    } catch (...) {
+        if (!callbackError_) callbackError_ = std::current_exception();
+    }
+    --callbackDepth_;
+    return keep;
+}
+
+bool ContactManager::askCustomFilter(std::int32_t shapeA, std::int32_t shapeB) {
+    if (!customFilter_) return true;
+    bool allow = true;
+    ++callbackDepth_;
+    try {
+        allow = customFilter_(shapeId(shapeA), shapeId(shapeB));
+    } catch (...) {
+        if (!callbackError_) callbackError_ = std::current_exception();
+    }
+    --callbackDepth_;
+    return allow;
+}
+
 void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     const Shape& a = shapes_[shapeA];
     const Shape& b = shapes_[shapeB];
@@ -47,6 +96,7 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     std::uint64_t key = PairMap::key(shapeA, shapeB);
     if (pairs_.find(key) != -1) return;
     if (!mayPair(a, b)) return;
+    if (!askCustomFilter(shapeA, shapeB)) return;
 
     // The narrow phase has segment-polygon, segment-circle and polygon-circle (capsules go as
     // polygons), not the reverse: segments first, then polygons and capsules, then circles.
@@ -82,7 +132,16 @@ void ContactManager::destroyContact(std::int32_t index) {
 // in contact order, the consequences that touch shared state (destruction, waking, events) are
 // applied. A contact's fate never depends on another's consequences within the same step.
 void ContactManager::updateContacts() {
-    enum : std::uint8_t { kKeep, kDestroy, kBegan, kEnded };
+    // A contact's fate, plus flags for the callbacks to be asked in the second phase.
+    enum : std::uint8_t {
+        kKeep,
+        kDestroy,
+        kBegan,
+        kEnded,
+        kFate = 3,
+        kAskFilter = 4,
+        kUpdated = 8
+    };
     resizeBuffer(contactOutcomes_, static_cast<std::size_t>(contacts_.capacity()));
     // A contact begins or ends once in the narrow phase and seldom more than once in continuous
     // collision's impacts: room for twice every one, so that a step with more events than any
@@ -106,6 +165,7 @@ void ContactManager::updateContacts() {
                     continue;
                 }
                 contact.needsFiltering = false;
+                if (customFilter_) outcome = kAskFilter;
             }
             const Body& bodyA = bodies_[contact.bodyA()];
             const Body& bodyB = bodies_[contact.bodyB()];
@@ -118,16 +178,33 @@ void ContactManager::updateContacts() {
             }
             bool wasTouching = contact.touching;
             bool touching = updateContact(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
-            if (touching != wasTouching) outcome = touching ? kBegan : kEnded;
+            contact.enabled = true;  // until the pre-solve callback says otherwise
+            outcome |= kUpdated;
+            if (touching != wasTouching) outcome |= touching ? kBegan : kEnded;
         }
     });
+    // Without a pre-solve callback only a fate or a filter question needs this loop.
+    const std::uint8_t interesting = preSolve_ ? 0xFF : std::uint8_t(kFate | kAskFilter);
     for (std::int32_t index = 0; index < contacts_.capacity(); ++index) {
-        switch (contactOutcomes_[index]) {
-            case kKeep: break;
-            case kDestroy: destroyContact(index); break;
-            case kBegan:
-            case kEnded: reportTouch(contacts_[index], contactOutcomes_[index] == kBegan); break;
+        const std::uint8_t outcome = contactOutcomes_[index];
+        if ((outcome & interesting) == 0) continue;
+        Contact& contact = contacts_[index];
+        const std::uint8_t fate = outcome & kFate;
+        if (fate == kDestroy) {
+            destroyContact(index);
+            continue;
         }
+        if ((outcome & kAskFilter) && !askCustomFilter(contact.shapeA, contact.shapeB)) {
+            // Refused before its begin was told: it goes without an end either; an end this
+            // update found is told.
+            if (fate == kBegan) contact.touching = false;
+            if (fate == kEnded) reportTouch(contact, false);
+            destroyContact(index);
+            continue;
+        }
+        if (fate == kBegan || fate == kEnded) reportTouch(contact, fate == kBegan);
+        // Asked only about contacts this update recomputed (a sleeping pair keeps its answer).
+        if ((outcome & kUpdated) && wantsPreSolve(contact)) contact.enabled = askPreSolve(contact);
     }
 }
 
@@ -138,7 +215,9 @@ bool ContactManager::updateContactNow(std::int32_t index) {
         updateContact(contact, shapes_[contact.shapeA], bodies_[contact.bodyA()].xf,
                       shapes_[contact.shapeB], bodies_[contact.bodyB()].xf);
     if (touching != wasTouching) reportTouch(contact, touching);
-    return touching;
+    contact.enabled = true;
+    if (wantsPreSolve(contact)) contact.enabled = askPreSolve(contact);
+    return touching && contact.enabled;
 }
 
 void ContactManager::update() {

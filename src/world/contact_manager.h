@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <exception>
 #include <vector>
 
 #include "collision/broad_phase.h"
@@ -57,7 +58,8 @@ public:
     void findNewContacts();
     /// The narrow phase for one contact at its bodies' current transforms, outside the step's
     /// contact update (continuous collision): a change of touching is recorded as an event
-    /// and wakes both bodies. Returns whether the contact touches.
+    /// and wakes both bodies; the pre-solve callback is asked. Returns whether the contact
+    /// touches and is enabled.
     bool updateContactNow(std::int32_t contactIndex);
     /// Moves a body's broad-phase boxes to cover its motion from `from` to its current
     /// transform (a body continuous collision moved within the step).
@@ -78,6 +80,23 @@ public:
     const std::vector<SensorEvent>& sensorBeginEvents() const { return sensorBeginEvents_; }
     const std::vector<SensorEvent>& sensorEndEvents() const { return sensorEndEvents_; }
 
+    /// The contact as World::contacts reports it, at its bodies' current transforms.
+    ContactData contactData(const Contact& contact) const;
+
+    // The user's callbacks (World::setPreSolveCallback, setCustomFilterCallback). They run on
+    // the thread that steps, in contact order; while one runs, inCallback() is true and the
+    // world refuses changes. An exception a callback throws is kept (the callback counts as
+    // having said yes) until takeCallbackError.
+    void setPreSolve(PreSolveCallback callback) { preSolve_ = std::move(callback); }
+    void setCustomFilter(CustomFilterCallback callback) { customFilter_ = std::move(callback); }
+    bool inCallback() const { return callbackDepth_ > 0; }
+    /// The first exception a callback threw since the last call, or null.
+    std::exception_ptr takeCallbackError() {
+        std::exception_ptr error = callbackError_;
+        callbackError_ = nullptr;
+        return error;
+    }
+
 private:
     /// A broad-phase pair: makes a contact unless one exists or the pair may not collide.
     void addPair(std::int32_t shapeA, std::int32_t shapeB);
@@ -93,6 +112,12 @@ private:
     bool mayPair(const Shape& a, const Shape& b) const;
     // A touching contact's begin or end, as a contact event or a sensor event.
     void reportTouch(const Contact& contact, bool began);
+    // Whether the pre-solve callback is to be asked about the contact: set, and the contact is a
+    // touching non-sensor one with a shape that asks for it.
+    bool wantsPreSolve(const Contact& contact) const;
+    // The callbacks' answers (true when none is set).
+    bool askPreSolve(const Contact& contact);
+    bool askCustomFilter(std::int32_t shapeA, std::int32_t shapeB);
     std::uint16_t presentCategories() const;
     ShapeId shapeId(std::int32_t index) const {
         return {index, shapes_.generation(index), worldId_};
@@ -121,6 +146,11 @@ private:
         bool needed = false;
     };
     std::vector<ShapeMove> shapeMoves_;  // per shape slot, for synchronizeSolvedBodies
+
+    PreSolveCallback preSolve_;
+    CustomFilterCallback customFilter_;
+    int callbackDepth_ = 0;
+    std::exception_ptr callbackError_;
 };
 
 }  // namespace pivot

@@ -75,7 +75,7 @@ bool optedOut(const Body& b) {
 // Whether the contact can be an impact: something moves, and one side is static, kinematic or
 // a bullet (two ordinary dynamic bodies are left to the discrete step).
 bool mayImpact(const Contact& c, const SlotPool<Body>& bodies) {
-    if (c.sensor) return false;  // a sensor stops nothing
+    if (c.sensor || !c.enabled) return false;  // a sensor stops nothing, nor a disabled contact
     const Body& a = bodies[c.bodyA()];
     const Body& b = bodies[c.bodyB()];
     if (!isActive(a) && !isActive(b)) return false;
@@ -241,6 +241,13 @@ void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Shape>
     contactSolver_.reset(contactCount, rest);
     contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts, bodies,
                            shapes, rest, positions_.data());
+    // The impact's contact is the island's first: how fast it closed, before anything pushed.
+    Impact impact{islandContacts_[0], 0, 0.0f};
+    for (int j = 0; j < contacts[impact.contact].manifold.pointCount; ++j) {
+        const float speed = contactSolver_.approachSpeed(0, j);
+        if (j == 0 || speed > impact.approachSpeed) impact = {impact.contact, j, speed};
+    }
+    impacts_.push_back(impact);
     for (int i = 0; i < kImpactPositionIterations; ++i) {
         const float deepest =
             contactSolver_.solveImpactPositions(all, positions_.data(), 0, 1, kImpactBias);
@@ -304,6 +311,7 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
                             TaskPool& pool, const StepContext& step) {
     heldAtEdge_.clear();
     discarded_.clear();
+    impacts_.clear();
     bodies.forEach([](std::int32_t, Body& b) { b.alpha0 = 0.0f; });
     contacts.forEach([](std::int32_t, Contact& c) {
         c.toi = 1.0f;
@@ -331,6 +339,8 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     velocities_.reserve(kMaxIslandBodies);
     kinematicPaths_.reserve(kMaxIslandBodies);
     contactSolver_.reserve(kMaxIslandContacts);
+    // Most contacts have one impact a step at most; twice that is room for the busiest steps.
+    impacts_.reserve(2 * static_cast<std::size_t>(contacts.capacity()));
     int impacts = 0;
     for (;;) {
         float alpha = 1.0f;

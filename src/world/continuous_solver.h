@@ -61,6 +61,14 @@ public:
     /// Bodies whose impact solve was not finite: each kept the pose the impact found it at, and
     /// a dynamic one was stopped.
     const std::vector<std::int32_t>& discardedBodies() const { return discarded_; }
+    /// Each impact solved, in order: its contact and how fast its fastest point (`point`)
+    /// approached when the impact was found (hit events).
+    struct Impact {
+        std::int32_t contact;
+        int point;
+        float approachSpeed;
+    };
+    const std::vector<Impact>& impacts() const { return impacts_; }
 
 private:
     /// The contact's time of impact as a fraction of the step (1: none), moving the start of
@@ -89,6 +97,7 @@ private:
     ContactSolver contactSolver_;
     std::vector<std::int32_t> heldAtEdge_;
     std::vector<std::int32_t> discarded_;
+    std::vector<Impact> impacts_;
     /// What moving a body to an impact changes, to put it back.
     struct Motion {
         Vec2 center0, center;

@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "constraints/step_context.h"
+#include "core/buffer.h"
 #include "world/world_impl.h"
 
 namespace pivot {
@@ -21,7 +22,9 @@ void World::Impl::recordLetGoJoints(const IslandSet::Range& island) {
     for (std::int32_t k = island.jointBegin; k < island.jointEnd; ++k) {
         const std::int32_t index = islands.joints[static_cast<std::size_t>(k)];
         const Joint& joint = joints[index];
-        if (joint.letGo) letGoEvents.push_back({jointId(index), joint.letGoReason, joint.letGoAt});
+        if (joint.letGo)
+            letGoEvents.push_back(
+                {jointId(index), joint.letGoReason, joint.letGoAt, joint.letGoReaction});
     }
 }
 
@@ -36,6 +39,55 @@ void World::Impl::recordBodyEvents(const IslandSet::Range& island) {
         if (body.discarded) discarded.push_back(bodyId(index));
         body.heldAtEdge = body.discarded = false;
     }
+}
+
+// After the whole step (continuous collision moves bodies and re-collides contacts): every
+// non-static body simulated, in island order; the hits of contacts of hit-event shapes (at most
+// one a contact), in island order, then impact order.
+void World::Impl::recordHitAndMoveEvents() {
+    const IslandSet& islands = stepper.islands();
+    // A warm step does not allocate: room for every contact and body there is.
+    hitEvents.reserve(static_cast<std::size_t>(contacts.capacity()));
+    moveEvents.reserve(static_cast<std::size_t>(bodies.capacity()));
+    for (std::int32_t index : islands.bodies) {
+        const Body& body = bodies[index];
+        if (body.type == BodyType::Static) continue;
+        moveEvents.push_back({bodyId(index), body.xf, !body.awake});
+    }
+    if (hitEventShapeCount == 0) return;
+    resizeBuffer(hitMarks, static_cast<std::size_t>(contacts.capacity()));
+    auto record = [this](std::int32_t index, int point, float speed) {
+        const Contact& c = contacts[index];
+        if (!c.touching || !c.enabled || hitMarks[static_cast<std::size_t>(index)]) return;
+        if (!shapes[c.shapeA].hitEvents && !shapes[c.shapeB].hitEvents) return;
+        hitMarks[static_cast<std::size_t>(index)] = 1;
+        const ContactData data = contactManager.contactData(c);
+        const int shown = std::min(point, data.pointCount - 1);
+        hitEvents.push_back(
+            {data.shapeA, data.shapeB, data.points[shown].point, data.normal, speed});
+    };
+    for (std::int32_t index : islands.contacts) {
+        // The fastest point the solver pushed on (an approach it did not resist is no hit).
+        const Manifold& m = contacts[index].manifold;
+        int fastest = -1;
+        float speed = hitEventThreshold;
+        for (int i = 0; i < m.pointCount; ++i) {
+            if (m.points[i].approachSpeed > speed && m.points[i].normalImpulse > 0.0f) {
+                speed = m.points[i].approachSpeed;
+                fastest = i;
+            }
+        }
+        if (fastest >= 0) record(index, fastest, speed);
+    }
+    if (enableContinuous) {
+        // Impacts: the bodies met within the step; their contact may have touched before.
+        for (const ContinuousSolver::Impact& impact : continuous.impacts()) {
+            if (impact.approachSpeed > hitEventThreshold) {
+                record(impact.contact, impact.point, impact.approachSpeed);
+            }
+        }
+    }
+    if (!hitEvents.empty()) std::fill(hitMarks.begin(), hitMarks.end(), std::uint8_t{0});
 }
 
 void World::Impl::step(float dt, int velocityIterations, int positionIterations) {
@@ -63,6 +115,8 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     letGoEvents.clear();
     edgeEvents.clear();
     discarded.clear();
+    hitEvents.clear();
+    moveEvents.clear();
     contactManager.update();
 
     SolverStorage storage{bodies, shapes, joints, contacts, mouseJoints};
@@ -101,6 +155,8 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
             ++stats.discardedBodyCount;
         }
     }
+
+    recordHitAndMoveEvents();
 
     // Forces apply for one step.
     bodies.forEach([this](std::int32_t, Body& b) {

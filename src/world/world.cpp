@@ -3,6 +3,7 @@
 // check throws pivot::Error.
 #include <atomic>
 #include <cmath>
+#include <exception>
 #include <string>
 
 #include "world/world_checks.h"
@@ -38,6 +39,7 @@ World::Impl::Impl(const WorldDef& def)
       enableContinuous(def.enableContinuous),
       jointLetGoSeparation(def.jointLetGoSeparation),
       substepCount(def.substepCount),
+      hitEventThreshold(def.hitEventThreshold),
       pool(def.workerCount),
       contactManager(bodies, shapes, joints, contacts, pool, id),
       stepper(pool) {}
@@ -69,6 +71,7 @@ World::World(const WorldDef& def) {
     requireNonNegative(call, "def.contactDampingRatio", def.contactDampingRatio);
     requirePositive(call, "def.contactPushSpeed", def.contactPushSpeed);
     requireNonNegative(call, "def.restitutionThreshold", def.restitutionThreshold);
+    requireInRange(call, "def.hitEventThreshold", def.hitEventThreshold, 0.0f, kMaxSpeed);
     requireNonNegative(call, "def.jointLetGoSeparation", def.jointLetGoSeparation);
     checkSubstepCount(call, "def.substepCount", def.substepCount);
     if (def.workerCount < 1 || def.workerCount > 64) {
@@ -109,6 +112,10 @@ void World::step(float dt, int velocityIterations, int positionIterations) {
                        " substeps)");
     }
     impl_->step(dt, velocityIterations, positionIterations);
+    // A callback's exception, held while the step finished (World::setPreSolveCallback).
+    if (std::exception_ptr error = impl_->contactManager.takeCallbackError()) {
+        std::rethrow_exception(error);
+    }
 }
 
 const StepStats& World::lastStepStats() const {
@@ -128,6 +135,7 @@ int World::substepCount() const {
 }
 
 void World::setSubstepCount(int count) {
+    impl_->requireNotInCallback("World::setSubstepCount");
     checkSubstepCount("World::setSubstepCount", "count", count);
     impl_->substepCount = count;
 }
@@ -137,6 +145,7 @@ Vec2 World::gravity() const {
 }
 
 void World::setGravity(Vec2 gravity) {
+    impl_->requireNotInCallback("World::setGravity");
     requireWithin("World::setGravity", "gravity", gravity, kMaxGravity, "kMaxGravity");
     impl_->gravity = gravity;
     impl_->wakeAll();
@@ -151,11 +160,13 @@ ContactCorrection World::contactCorrection() const {
 }
 
 void World::setContactCorrection(ContactCorrection correction) {
+    impl_->requireNotInCallback("World::setContactCorrection");
     checkContactCorrection("World::setContactCorrection", "correction", correction);
     impl_->contactCorrection = correction;
 }
 
 void World::setSleepEnabled(bool enabled) {
+    impl_->requireNotInCallback("World::setSleepEnabled");
     impl_->enableSleep = enabled;
     if (!enabled) impl_->wakeAll();
 }
@@ -165,11 +176,23 @@ bool World::isSleepEnabled() const {
 }
 
 void World::setContinuousEnabled(bool enabled) {
+    impl_->requireNotInCallback("World::setContinuousEnabled");
     impl_->enableContinuous = enabled;
 }
 
 bool World::isContinuousEnabled() const {
     return impl_->enableContinuous;
+}
+
+float World::hitEventThreshold() const {
+    return impl_->hitEventThreshold;
+}
+
+void World::setHitEventThreshold(float speed) {
+    const char* call = "World::setHitEventThreshold";
+    impl_->requireNotInCallback(call);
+    requireInRange(call, "speed", speed, 0.0f, kMaxSpeed);
+    impl_->hitEventThreshold = speed;
 }
 
 }  // namespace pivot

@@ -5,6 +5,7 @@
 namespace pivot {
 
 BodyId World::createBody(const BodyDef& def) {
+    impl_->requireNotInCallback("World::createBody");
     const char* call = "World::createBody";
     checkBodyType(call, "def.type", def.type);
     requireCoordinate(call, "def.position", def.position);
@@ -85,6 +86,7 @@ BodyType World::bodyType(BodyId id) const {
 }
 
 void World::setBodyType(BodyId id, BodyType type) {
+    impl_->requireNotInCallback("World::setBodyType");
     const char* call = "World::setBodyType";
     Impl& w = *impl_;
     std::int32_t index = w.bodyIndex(call, id);
@@ -171,6 +173,7 @@ bool World::isBodyAwake(BodyId id) const {
 }
 
 void World::setBodyAwake(BodyId id, bool awake) {
+    impl_->requireNotInCallback("World::setBodyAwake");
     Body& b = impl_->bodies[impl_->bodyIndex("World::setBodyAwake", id)];
     if (b.type == BodyType::Static) return;
     if (awake) {
@@ -189,6 +192,7 @@ float World::bodyLinearDamping(BodyId id) const {
 }
 
 void World::setBodyLinearDamping(BodyId id, float damping) {
+    impl_->requireNotInCallback("World::setBodyLinearDamping");
     const char* call = "World::setBodyLinearDamping";
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
     requireNonNegative(call, "damping", damping);
@@ -201,6 +205,7 @@ float World::bodyAngularDamping(BodyId id) const {
 }
 
 void World::setBodyAngularDamping(BodyId id, float damping) {
+    impl_->requireNotInCallback("World::setBodyAngularDamping");
     const char* call = "World::setBodyAngularDamping";
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
     requireNonNegative(call, "damping", damping);
@@ -213,6 +218,7 @@ float World::bodyGravityScale(BodyId id) const {
 }
 
 void World::setBodyGravityScale(BodyId id, float scale) {
+    impl_->requireNotInCallback("World::setBodyGravityScale");
     const char* call = "World::setBodyGravityScale";
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
     requireWithin(call, "scale", scale, kMaxGravityScale, "kMaxGravityScale");
@@ -221,6 +227,7 @@ void World::setBodyGravityScale(BodyId id, float scale) {
 }
 
 void World::setBodyFixedRotation(BodyId id, bool fixedRotation) {
+    impl_->requireNotInCallback("World::setBodyFixedRotation");
     Impl& w = *impl_;
     Body& b = w.bodies[w.bodyIndex("World::setBodyFixedRotation", id)];
     if (b.fixedRotation == fixedRotation) return;
@@ -236,6 +243,7 @@ void World::setBodyFixedRotation(BodyId id, bool fixedRotation) {
 }
 
 void World::setBodySleepAllowed(BodyId id, bool allowed) {
+    impl_->requireNotInCallback("World::setBodySleepAllowed");
     Body& b = impl_->bodies[impl_->bodyIndex("World::setBodySleepAllowed", id)];
     b.allowSleep = allowed;
     if (!allowed) wakeUp(b);
@@ -246,6 +254,7 @@ bool World::isBodyContinuous(BodyId id) const {
 }
 
 void World::setBodyContinuous(BodyId id, bool continuous) {
+    impl_->requireNotInCallback("World::setBodyContinuous");
     impl_->bodies[impl_->bodyIndex("World::setBodyContinuous", id)].continuous = continuous;
 }
 
@@ -254,6 +263,7 @@ bool World::isBodyBullet(BodyId id) const {
 }
 
 void World::setBodyBullet(BodyId id, bool bullet) {
+    impl_->requireNotInCallback("World::setBodyBullet");
     impl_->bodies[impl_->bodyIndex("World::setBodyBullet", id)].bullet = bullet;
 }
 
@@ -347,6 +357,7 @@ void requireAccumulated(const char* call, const char* what, Vec2 value, float li
 }  // namespace
 
 void World::setBodyLinearVelocity(BodyId id, Vec2 velocity) {
+    impl_->requireNotInCallback("World::setBodyLinearVelocity");
     const char* call = "World::setBodyLinearVelocity";
     Body& b = bodyTakingVelocity(*impl_, call, id);
     requireWithin(call, "velocity", velocity, kMaxSpeed, "kMaxSpeed");
@@ -355,6 +366,7 @@ void World::setBodyLinearVelocity(BodyId id, Vec2 velocity) {
 }
 
 void World::setBodyAngularVelocity(BodyId id, float omega) {
+    impl_->requireNotInCallback("World::setBodyAngularVelocity");
     const char* call = "World::setBodyAngularVelocity";
     Body& b = bodyTakingVelocity(*impl_, call, id);
     requireWithin(call, "omega", omega, kMaxAngularSpeed, "kMaxAngularSpeed");
@@ -367,6 +379,7 @@ void World::setBodyAngularVelocity(BodyId id, float omega) {
 }
 
 void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
+    impl_->requireNotInCallback("World::applyForce");
     const char* call = "World::applyForce";
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "force", force);
@@ -386,6 +399,7 @@ void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
 }
 
 void World::applyForceToCenter(BodyId id, Vec2 force) {
+    impl_->requireNotInCallback("World::applyForceToCenter");
     const char* call = "World::applyForceToCenter";
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "force", force);
@@ -397,6 +411,7 @@ void World::applyForceToCenter(BodyId id, Vec2 force) {
 }
 
 void World::applyTorque(BodyId id, float torque) {
+    impl_->requireNotInCallback("World::applyTorque");
     const char* call = "World::applyTorque";
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "torque", torque);
@@ -410,6 +425,7 @@ void World::applyTorque(BodyId id, float torque) {
 }
 
 void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
+    impl_->requireNotInCallback("World::applyLinearImpulse");
     const char* call = "World::applyLinearImpulse";
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "impulse", impulse);
@@ -424,6 +440,7 @@ void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
 }
 
 void World::applyAngularImpulse(BodyId id, float impulse) {
+    impl_->requireNotInCallback("World::applyAngularImpulse");
     const char* call = "World::applyAngularImpulse";
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "impulse", impulse);

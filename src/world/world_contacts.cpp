@@ -1,35 +1,17 @@
-// The World facade, part five: what users can read about contacts.
+// The World facade, part five: what users can read about contacts, the step's events and the
+// callbacks that take part in it.
+#include <utility>
+
 #include "model/body_edge.h"
 #include "world/world_impl.h"
 
 namespace pivot {
 
-namespace {
-
-ContactData contactData(const World::Impl& w, const Contact& c) {
-    const Shape& a = w.shapes[c.shapeA];
-    const Shape& b = w.shapes[c.shapeB];
-    WorldManifold wm = computeWorldManifold(c.manifold, w.bodies[a.body].xf, collisionRadius(a),
-                                            w.bodies[b.body].xf, collisionRadius(b));
-    ContactData data;
-    data.shapeA = w.shapeId(c.shapeA);
-    data.shapeB = w.shapeId(c.shapeB);
-    data.normal = wm.normal;
-    data.pointCount = c.manifold.pointCount;
-    for (int i = 0; i < data.pointCount; ++i) {
-        data.points[i] = {wm.points[i], wm.separations[i], c.manifold.points[i].normalImpulse,
-                          c.manifold.points[i].tangentImpulse};
-    }
-    return data;
-}
-
-}  // namespace
-
 std::vector<ContactData> World::contacts() const {
     const Impl& w = *impl_;
     std::vector<ContactData> result;
     w.contacts.forEach([&](std::int32_t, const Contact& c) {
-        if (c.touching && !c.sensor) result.push_back(contactData(w, c));
+        if (c.touching && !c.sensor) result.push_back(w.contactManager.contactData(c));
     });
     return result;
 }
@@ -40,7 +22,7 @@ std::vector<ContactData> World::bodyContacts(BodyId id) const {
     std::vector<ContactData> result;
     for (std::int32_t key = body.contactList; key != -1;) {
         const Contact& c = w.contacts[edgeOwner(key)];
-        if (c.touching && !c.sensor) result.push_back(contactData(w, c));
+        if (c.touching && !c.sensor) result.push_back(w.contactManager.contactData(c));
         key = c.edges[edgeSide(key)].nextKey;
     }
     return result;
@@ -57,6 +39,21 @@ std::vector<SensorEvent> World::sensorBeginEvents() const {
 }
 std::vector<SensorEvent> World::sensorEndEvents() const {
     return impl_->contactManager.sensorEndEvents();
+}
+std::vector<ContactHitEvent> World::contactHitEvents() const {
+    return impl_->hitEvents;
+}
+std::vector<BodyMoveEvent> World::bodyMoveEvents() const {
+    return impl_->moveEvents;
+}
+
+void World::setPreSolveCallback(PreSolveCallback callback) {
+    impl_->requireNotInCallback("World::setPreSolveCallback");
+    impl_->contactManager.setPreSolve(std::move(callback));
+}
+void World::setCustomFilterCallback(CustomFilterCallback callback) {
+    impl_->requireNotInCallback("World::setCustomFilterCallback");
+    impl_->contactManager.setCustomFilter(std::move(callback));
 }
 
 }  // namespace pivot

@@ -151,6 +151,7 @@ std::uint64_t World::stateHash() const {
     // These, and the soft-step settings, are hashed only when they differ from their defaults,
     // so that hashes recorded before they existed still hold.
     if (w.substepCount != 1) h.add(w.substepCount);
+    if (w.hitEventThreshold != kDefaultHitEventThreshold) h.add(w.hitEventThreshold);
     if (w.contactHertz != kDefaultContactHertz ||
         w.contactDampingRatio != kDefaultContactDampingRatio ||
         w.contactPushSpeed != kDefaultContactPushSpeed) {
@@ -222,6 +223,8 @@ std::uint64_t World::stateHash() const {
         h.add(static_cast<std::int32_t>(s.filter.groupIndex));
         h.add(s.userData);
         if (s.sensor) h.add(s.sensor);
+        if (s.hitEvents) h.add(std::int32_t{101});
+        if (s.preSolve) h.add(std::int32_t{102});
         h.add(s.prev);
         h.add(s.next);
         const AABB& box = w.contactManager.broadPhase().fatBox(s.proxyId);
@@ -260,6 +263,12 @@ std::uint64_t World::stateHash() const {
         // Only when a gear is built on the joint, so that worlds without gears keep the hashes
         // recorded before there were any.
         if (j.gearCount != 0) h.add(j.gearCount);
+        // Likewise only when set: the break thresholds and what broke a joint.
+        if (j.breakForce != 0.0f || j.breakTorque != 0.0f) {
+            h.add(j.breakForce);
+            h.add(j.breakTorque);
+        }
+        if (j.letGoReaction != 0.0f) h.add(j.letGoReaction);
     });
     h.add(w.mouseJoints.size());
     w.mouseJoints.forEach([&](std::int32_t index, const MouseJoint& m) {
@@ -288,6 +297,7 @@ std::uint64_t World::stateHash() const {
         h.add(c.restitution);
         h.add(c.touching);
         if (c.sensor) h.add(c.sensor);  // only then, so hashes recorded before sensors hold
+        if (!c.enabled) h.add(std::int32_t{103});  // the pre-solve callback's answer
         h.add(c.needsFiltering);
         h.add(c.serial);
         const Manifold& m = c.manifold;
@@ -300,8 +310,34 @@ std::uint64_t World::stateHash() const {
             h.add(m.points[i].normalImpulse);
             h.add(m.points[i].tangentImpulse);
             h.add(static_cast<std::int32_t>(m.points[i].id));
+            // What a hit event reads, for the contacts that report hits.
+            if (w.shapes[c.shapeA].hitEvents || w.shapes[c.shapeB].hitEvents) {
+                h.add(m.points[i].approachSpeed);
+            }
         }
     });
+    // Sensor and hit events, when there are any (recorded hashes predate them).
+    for (const std::vector<SensorEvent>* events :
+         {&w.contactManager.sensorBeginEvents(), &w.contactManager.sensorEndEvents()}) {
+        if (events->empty()) continue;
+        h.add(static_cast<std::int32_t>(events->size()));
+        for (const SensorEvent& e : *events) {
+            h.add(e.sensor.index);
+            h.add(static_cast<std::int32_t>(e.sensor.generation));
+            h.add(e.visitor.index);
+            h.add(static_cast<std::int32_t>(e.visitor.generation));
+        }
+    }
+    if (!w.hitEvents.empty()) {
+        h.add(static_cast<std::int32_t>(w.hitEvents.size()));
+        for (const ContactHitEvent& e : w.hitEvents) {
+            h.add(e.shapeA.index);
+            h.add(e.shapeB.index);
+            h.add(e.point);
+            h.add(e.normal);
+            h.add(e.approachSpeed);
+        }
+    }
     for (const std::vector<ContactEvent>* events :
          {&w.contactManager.beginEvents(), &w.contactManager.endEvents()}) {
         h.add(static_cast<std::int32_t>(events->size()));
@@ -318,6 +354,7 @@ std::uint64_t World::stateHash() const {
         h.add(static_cast<std::int32_t>(e.joint.generation));
         h.add(static_cast<std::int32_t>(e.reason));
         h.add(e.separation);
+        if (e.reaction != 0.0f) h.add(e.reaction);
     }
     h.add(static_cast<std::int32_t>(w.discarded.size()));
     for (BodyId b : w.discarded) {

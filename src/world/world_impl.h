@@ -44,6 +44,7 @@ struct World::Impl {
     bool enableContinuous;
     float jointLetGoSeparation;  // m; 0: never
     int substepCount;            // [1, kMaxSubsteps]
+    float hitEventThreshold;     // m/s
 
     SlotPool<Body> bodies;
     SlotPool<Shape> shapes;
@@ -58,6 +59,10 @@ struct World::Impl {
     std::vector<JointLetGoEvent> letGoEvents;  // joints let go by the last step
     std::vector<WorldEdgeEvent> edgeEvents;    // bodies held at the world's edge by it
     std::vector<BodyId> discarded;             // bodies whose solved state it discarded
+    std::vector<ContactHitEvent> hitEvents;    // contacts of hit-event shapes hit in it
+    std::vector<BodyMoveEvent> moveEvents;     // bodies it simulated
+    std::vector<std::uint8_t> hitMarks;        // per contact slot: hit reported this step
+    int hitEventShapeCount = 0;  // shapes with ShapeDef::enableHitEvents (none: no hit search)
 
     // 1/h of the last step's substeps (1/dt with one substep); 0 before the first step
     float previousInvDt = 0.0f;
@@ -67,10 +72,14 @@ struct World::Impl {
     // is being walked, so calls that would change it are refused (requireNoQuery).
     mutable int queryDepth = 0;
     void requireNoQuery(const char* call) const;
+    /// Refuses a change made from inside a step's callback (World::setPreSolveCallback,
+    /// setCustomFilterCallback): every call that changes the world checks it.
+    void requireNotInCallback(const char* call) const;
 
     void step(float dt, int velocityIterations, int positionIterations);
     void recordLetGoJoints(const IslandSet::Range& island);
     void recordBodyEvents(const IslandSet::Range& island);
+    void recordHitAndMoveEvents();
 
     // Handle checks: the slot index of a live object this world issued, or pivot::Error.
     std::int32_t bodyIndex(const char* call, BodyId id) const;

@@ -10,13 +10,16 @@ namespace pivot {
 
 namespace {
 
-// The checks and fields every def shares: two distinct live bodies of this world.
+// The checks and fields every def shares: two distinct live bodies of this world, and the
+// break thresholds.
 template <typename Def>
 std::pair<std::int32_t, std::int32_t> checkBodies(const char* call, const Def& def,
                                                   const World::Impl& w) {
     std::int32_t a = checkHandle(call, "def.bodyA", def.bodyA, w.bodies, w.id);
     std::int32_t b = checkHandle(call, "def.bodyB", def.bodyB, w.bodies, w.id);
     if (a == b) fail(call, "def.bodyA and def.bodyB are the same body; a joint needs two bodies");
+    requireNonNegative(call, "def.breakForce", def.breakForce);
+    requireNonNegative(call, "def.breakTorque", def.breakTorque);
     return {a, b};
 }
 template <typename Def>
@@ -26,6 +29,8 @@ Joint jointFromDef(const Def& def, std::int32_t a, std::int32_t b) {
     joint.edges[1].body = b;
     joint.collideConnected = def.collideConnected;
     joint.userData = def.userData;
+    joint.breakForce = def.breakForce;
+    joint.breakTorque = def.breakTorque;
     return joint;
 }
 
@@ -102,6 +107,7 @@ Vec2 axisInBodyA(const Def& def, Vec2 unitAxis, const Body& bodyA) {
 }  // namespace
 
 JointId World::createJoint(const RevoluteJointDef& def) {
+    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
@@ -128,6 +134,7 @@ JointId World::createJoint(const RevoluteJointDef& def) {
 }
 
 JointId World::createJoint(const DistanceJointDef& def) {
+    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
@@ -156,6 +163,7 @@ JointId World::createJoint(const DistanceJointDef& def) {
 }
 
 JointId World::createJoint(const PulleyJointDef& def) {
+    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
@@ -191,6 +199,7 @@ JointId World::createJoint(const PulleyJointDef& def) {
 }
 
 JointId World::createJoint(const PrismaticJointDef& def) {
+    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
@@ -219,6 +228,7 @@ JointId World::createJoint(const PrismaticJointDef& def) {
 }
 
 JointId World::createJoint(const WeldJointDef& def) {
+    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
@@ -241,6 +251,7 @@ JointId World::createJoint(const WeldJointDef& def) {
 }
 
 JointId World::createJoint(const WheelJointDef& def) {
+    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
@@ -299,6 +310,7 @@ GearSide checkGearSide(const char* call, const char* field, JointId id, const Wo
 }
 
 JointId World::createJoint(const GearJointDef& def) {
+    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
     Impl& w = *impl_;
     const GearSide side1 = checkGearSide(call, "def.joint1", def.joint1, w);
@@ -339,6 +351,7 @@ JointId World::createJoint(const GearJointDef& def) {
 }
 
 JointId World::createJoint(const FrictionJointDef& def) {
+    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
@@ -357,6 +370,7 @@ JointId World::createJoint(const FrictionJointDef& def) {
 }
 
 JointId World::createJoint(const MotorJointDef& def) {
+    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);

@@ -24,6 +24,7 @@ JointLimit World::jointLimit(JointId id) const {
     return {r.enableLimit, r.lowerAngle, r.upperAngle};
 }
 void World::setJointLimit(JointId id, const JointLimit& limit) {
+    impl_->requireNotInCallback("World::setJointLimit");
     const char* call = "World::setJointLimit";
     Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Revolute)];
     checkLimit(call, "limit", limit);
@@ -46,6 +47,7 @@ JointMotor World::jointMotor(JointId id) const {
     return {r.enableMotor, r.motorSpeed, r.maxMotorTorque};
 }
 void World::setJointMotor(JointId id, const JointMotor& motor) {
+    impl_->requireNotInCallback("World::setJointMotor");
     const char* call = "World::setJointMotor";
     Joint& j =
         impl_->joints[impl_->jointIndexOfTypes(call, id, JointType::Revolute, JointType::Wheel)];
@@ -68,6 +70,7 @@ float World::distanceJointRestLength(JointId id) const {
         .length;
 }
 void World::setDistanceJointRestLength(JointId id, float length) {
+    impl_->requireNotInCallback("World::setDistanceJointRestLength");
     const char* call = "World::setDistanceJointRestLength";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
     checkRestLength(call, "length", length);
@@ -82,6 +85,7 @@ LengthLimit World::distanceJointLimit(JointId id) const {
     return {d.enableLimit, d.minLength, d.maxLength};
 }
 void World::setDistanceJointLimit(JointId id, const LengthLimit& limit) {
+    impl_->requireNotInCallback("World::setDistanceJointLimit");
     const char* call = "World::setDistanceJointLimit";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
     checkLengthLimit(call, "limit", limit);
@@ -98,6 +102,7 @@ JointSpring World::distanceJointSpring(JointId id) const {
     return {d.enableSpring, d.hertz, d.dampingRatio};
 }
 void World::setDistanceJointSpring(JointId id, const JointSpring& spring) {
+    impl_->requireNotInCallback("World::setDistanceJointSpring");
     const char* call = "World::setDistanceJointSpring";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
     checkSpring(call, "spring", spring);
@@ -159,6 +164,7 @@ float World::jointMaxForce(JointId id) const {
     return *velocityJointLimits(j).force;
 }
 void World::setJointMaxForce(JointId id, float force) {
+    impl_->requireNotInCallback("World::setJointMaxForce");
     const char* call = "World::setJointMaxForce";
     Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
     requireNonNegative(call, "force", force);
@@ -171,6 +177,7 @@ float World::jointMaxTorque(JointId id) const {
     return *velocityJointLimits(j).torque;
 }
 void World::setJointMaxTorque(JointId id, float torque) {
+    impl_->requireNotInCallback("World::setJointMaxTorque");
     const char* call = "World::setJointMaxTorque";
     Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
     requireNonNegative(call, "torque", torque);
@@ -184,6 +191,7 @@ Vec2 World::motorJointLinearOffset(JointId id) const {
         .linearOffset;
 }
 void World::setMotorJointLinearOffset(JointId id, Vec2 offset) {
+    impl_->requireNotInCallback("World::setMotorJointLinearOffset");
     const char* call = "World::setMotorJointLinearOffset";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
     requireCoordinate(call, "offset", offset);
@@ -197,6 +205,7 @@ float World::motorJointAngularOffset(JointId id) const {
         .angularOffset;
 }
 void World::setMotorJointAngularOffset(JointId id, float offset) {
+    impl_->requireNotInCallback("World::setMotorJointAngularOffset");
     const char* call = "World::setMotorJointAngularOffset";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
     requireMagnitude(call, "offset", offset);
@@ -210,6 +219,7 @@ float World::motorJointCorrectionFactor(JointId id) const {
         .correctionFactor;
 }
 void World::setMotorJointCorrectionFactor(JointId id, float factor) {
+    impl_->requireNotInCallback("World::setMotorJointCorrectionFactor");
     const char* call = "World::setMotorJointCorrectionFactor";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
     requireInRange(call, "factor", factor, 0.0f, 1.0f);
@@ -267,6 +277,7 @@ TranslationLimit World::prismaticJointLimit(JointId id) const {
     return {p.enableLimit, p.lowerTranslation, p.upperTranslation};
 }
 void World::setPrismaticJointLimit(JointId id, const TranslationLimit& limit) {
+    impl_->requireNotInCallback("World::setPrismaticJointLimit");
     const char* call = "World::setPrismaticJointLimit";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
     checkTranslationLimit(call, "limit", limit);
@@ -281,6 +292,7 @@ LinearMotor World::prismaticJointMotor(JointId id) const {
     return {p.enableMotor, p.motorSpeed, p.maxMotorForce};
 }
 void World::setPrismaticJointMotor(JointId id, const LinearMotor& motor) {
+    impl_->requireNotInCallback("World::setPrismaticJointMotor");
     const char* call = "World::setPrismaticJointMotor";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
     checkLinearMotor(call, "motor", motor);
@@ -295,6 +307,7 @@ JointSpring World::prismaticJointSpring(JointId id) const {
     return {p.enableSpring, p.hertz, p.dampingRatio};
 }
 void World::setPrismaticJointSpring(JointId id, const JointSpring& spring) {
+    impl_->requireNotInCallback("World::setPrismaticJointSpring");
     const char* call = "World::setPrismaticJointSpring";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
     checkSpring(call, "spring", spring);
@@ -323,6 +336,7 @@ float World::gearJointRatio(JointId id) const {
     return impl_->jointData<GearJoint>("World::gearJointRatio", id, JointType::Gear).ratio;
 }
 void World::setGearJointRatio(JointId id, float ratio) {
+    impl_->requireNotInCallback("World::setGearJointRatio");
     const char* call = "World::setGearJointRatio";
     Impl& w = *impl_;
     Joint& joint = w.joints[w.jointIndexOfType(call, id, JointType::Gear)];
@@ -350,6 +364,7 @@ JointSpring World::weldJointAngularSpring(JointId id) const {
         .angularSpring;
 }
 void World::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
+    impl_->requireNotInCallback("World::setWeldJointLinearSpring");
     const char* call = "World::setWeldJointLinearSpring";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
     checkSpring(call, "spring", spring);
@@ -359,6 +374,7 @@ void World::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
     wakeUp(impl_->bodies[j.bodyB()]);
 }
 void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
+    impl_->requireNotInCallback("World::setWeldJointAngularSpring");
     const char* call = "World::setWeldJointAngularSpring";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
     checkSpring(call, "spring", spring);
@@ -374,6 +390,7 @@ JointSpring World::wheelJointSpring(JointId id) const {
     return impl_->jointData<WheelJoint>("World::wheelJointSpring", id, JointType::Wheel).spring;
 }
 void World::setWheelJointSpring(JointId id, const JointSpring& spring) {
+    impl_->requireNotInCallback("World::setWheelJointSpring");
     const char* call = "World::setWheelJointSpring";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
     checkSpring(call, "spring", spring);
@@ -388,6 +405,7 @@ TranslationLimit World::wheelJointLimit(JointId id) const {
     return {w.enableLimit, w.lowerTranslation, w.upperTranslation};
 }
 void World::setWheelJointLimit(JointId id, const TranslationLimit& limit) {
+    impl_->requireNotInCallback("World::setWheelJointLimit");
     const char* call = "World::setWheelJointLimit";
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
     checkTranslationLimit(call, "limit", limit);

@@ -93,6 +93,7 @@ void World::Impl::removeJointAndItsGears(std::int32_t index) {
 }
 
 void World::destroyJoint(JointId id) {
+    impl_->requireNotInCallback("World::destroyJoint");
     const char* call = "World::destroyJoint";
     const std::int32_t index = impl_->jointIndex(call, id);
     const std::int32_t gears = impl_->joints[index].gearCount;
@@ -142,6 +143,7 @@ bool World::isJointLetGo(JointId id) const {
 }
 
 void World::rearmJoint(JointId id) {
+    impl_->requireNotInCallback("World::rearmJoint");
     Joint& j = impl_->joints[impl_->jointIndex("World::rearmJoint", id)];
     if (!j.letGo) return;
     j.letGo = false;  // letGoFor cleared its impulses
@@ -155,6 +157,7 @@ float World::jointLetGoSeparation(JointId id) const {
 }
 
 void World::setJointLetGoSeparation(JointId id, std::optional<float> separation) {
+    impl_->requireNotInCallback("World::setJointLetGoSeparation");
     const char* call = "World::setJointLetGoSeparation";
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     if (separation) requireNonNegative(call, "separation", *separation);
@@ -165,36 +168,33 @@ void World::setJointLetGoSeparation(JointId id, std::optional<float> separation)
 std::vector<JointLetGoEvent> World::jointLetGoEvents() const {
     return impl_->letGoEvents;
 }
+
+float World::jointBreakForce(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointBreakForce", id)].breakForce;
+}
+void World::setJointBreakForce(JointId id, float force) {
+    impl_->requireNotInCallback("World::setJointBreakForce");
+    const char* call = "World::setJointBreakForce";
+    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
+    requireNonNegative(call, "force", force);
+    j.breakForce = force;
+    wakeUp(impl_->bodies[j.bodyA()]);  // a sleeping joint is not measured
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
+float World::jointBreakTorque(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointBreakTorque", id)].breakTorque;
+}
+void World::setJointBreakTorque(JointId id, float torque) {
+    impl_->requireNotInCallback("World::setJointBreakTorque");
+    const char* call = "World::setJointBreakTorque";
+    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
+    requireNonNegative(call, "torque", torque);
+    j.breakTorque = torque;
+    wakeUp(impl_->bodies[j.bodyA()]);
+    wakeUp(impl_->bodies[j.bodyB()]);
+}
 Vec2 World::jointReactionForce(JointId id) const {
-    const Joint& j = impl_->joints[impl_->jointIndex("World::jointReactionForce", id)];
-    if (const auto* distance = std::get_if<DistanceJoint>(&j.data)) {
-        return (j.impulseInvDt * distance->axialImpulse()) * distance->axis;
-    }
-    if (const auto* pulley = std::get_if<PulleyJoint>(&j.data)) {
-        return (j.impulseInvDt * -pulley->ratio * pulley->impulse) * pulley->axisB;
-    }
-    if (const auto* friction = std::get_if<FrictionJoint>(&j.data)) {
-        return j.impulseInvDt * friction->linearImpulse;
-    }
-    if (const auto* motor = std::get_if<MotorJoint>(&j.data)) {
-        return j.impulseInvDt * motor->linearImpulse;
-    }
-    if (const auto* weld = std::get_if<WeldJoint>(&j.data)) {
-        return j.impulseInvDt * Vec2{weld->impulse.x, weld->impulse.y};
-    }
-    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) {
-        const Vec2 perp{-wheel->axis.y, wheel->axis.x};
-        return j.impulseInvDt * (wheel->impulse * perp + wheel->axialImpulse() * wheel->axis);
-    }
-    if (const auto* prismatic = std::get_if<PrismaticJoint>(&j.data)) {
-        const Vec2 perp{-prismatic->axis.y, prismatic->axis.x};
-        return j.impulseInvDt *
-               (prismatic->impulse.x * perp + prismatic->axialImpulse() * prismatic->axis);
-    }
-    if (const auto* gear = std::get_if<GearJoint>(&j.data)) {
-        return (j.impulseInvDt * gear->impulse) * gear->linearB;
-    }
-    return j.impulseInvDt * std::get<RevoluteJoint>(j.data).impulse;
+    return impl_->joints[impl_->jointIndex("World::jointReactionForce", id)].reactionForce();
 }
 
 float World::jointAngle(JointId id) const {
@@ -206,29 +206,7 @@ float World::jointSpeed(JointId id) const {
     return impl_->bodies[j.bodyB()].angularVelocity - impl_->bodies[j.bodyA()].angularVelocity;
 }
 float World::jointReactionTorque(JointId id) const {
-    const Joint& j = impl_->joints[impl_->jointIndex("World::jointReactionTorque", id)];
-    if (const auto* r = std::get_if<RevoluteJoint>(&j.data)) {
-        return j.impulseInvDt * (r->motorImpulse + r->lowerImpulse - r->upperImpulse);
-    }
-    if (const auto* friction = std::get_if<FrictionJoint>(&j.data)) {
-        return j.impulseInvDt * friction->angularImpulse;
-    }
-    if (const auto* motor = std::get_if<MotorJoint>(&j.data)) {
-        return j.impulseInvDt * motor->angularImpulse;
-    }
-    if (const auto* prismatic = std::get_if<PrismaticJoint>(&j.data)) {
-        return j.impulseInvDt * prismatic->impulse.y;
-    }
-    if (const auto* weld = std::get_if<WeldJoint>(&j.data)) {
-        return j.impulseInvDt * weld->impulse.z;
-    }
-    if (const auto* wheel = std::get_if<WheelJoint>(&j.data)) {
-        return j.impulseInvDt * wheel->motorImpulse;
-    }
-    if (const auto* gear = std::get_if<GearJoint>(&j.data)) {
-        return (j.impulseInvDt * gear->impulse) * gear->angularB;
-    }
-    return 0.0f;
+    return impl_->joints[impl_->jointIndex("World::jointReactionTorque", id)].reactionTorque();
 }
 
 PositionSolver World::jointPositionSolver(JointId id) const {
@@ -236,6 +214,7 @@ PositionSolver World::jointPositionSolver(JointId id) const {
 }
 
 void World::setJointPositionSolver(JointId id, PositionSolver solver) {
+    impl_->requireNotInCallback("World::setJointPositionSolver");
     const char* call = "World::setJointPositionSolver";
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requirePositionError(call, id.index, j);
@@ -250,6 +229,7 @@ float World::jointBiasFactor(JointId id) const {
 }
 
 void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
+    impl_->requireNotInCallback("World::setJointBiasFactor");
     const char* call = "World::setJointBiasFactor";
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requirePositionError(call, id.index, j);
@@ -265,6 +245,7 @@ JointSoftness World::jointSoftness(JointId id) const {
 }
 
 void World::setJointSoftness(JointId id, const JointSoftness& softness) {
+    impl_->requireNotInCallback("World::setJointSoftness");
     const char* call = "World::setJointSoftness";
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requirePositionError(call, id.index, j);
@@ -279,6 +260,7 @@ std::uint64_t World::jointUserData(JointId id) const {
 }
 
 void World::setJointUserData(JointId id, std::uint64_t userData) {
+    impl_->requireNotInCallback("World::setJointUserData");
     impl_->joints[impl_->jointIndex("World::setJointUserData", id)].userData = userData;
 }
 

@@ -15,6 +15,7 @@ void World::Impl::removeMouseJoint(std::int32_t index) {
 }
 
 MouseJointId World::createMouseJoint(const MouseJointDef& def) {
+    impl_->requireNotInCallback("World::createMouseJoint");
     const char* call = "World::createMouseJoint";
     Impl& w = *impl_;
     std::int32_t bodyIndex = checkHandle(call, "def.body", def.body, w.bodies, w.id);
@@ -40,6 +41,7 @@ MouseJointId World::createMouseJoint(const MouseJointDef& def) {
 }
 
 void World::destroyMouseJoint(MouseJointId id) {
+    impl_->requireNotInCallback("World::destroyMouseJoint");
     impl_->removeMouseJoint(impl_->mouseJointIndex("World::destroyMouseJoint", id));
 }
 
@@ -49,6 +51,7 @@ bool World::isValid(MouseJointId id) const {
 }
 
 void World::setMouseTarget(MouseJointId id, Vec2 target) {
+    impl_->requireNotInCallback("World::setMouseTarget");
     const char* call = "World::setMouseTarget";
     MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
     requireCoordinate(call, "target", target);

@@ -44,10 +44,19 @@ bool shapeContains(const Shape& shape, const Transform& xf, Vec2 point) {
 }  // namespace
 
 void World::Impl::requireNoQuery(const char* call) const {
+    requireNotInCallback(call);
     if (queryDepth > 0) {
         fail(call,
              "called from inside a query's callback (a query may read the world; change "
              "its shapes after the query returns)");
+    }
+}
+
+void World::Impl::requireNotInCallback(const char* call) const {
+    if (contactManager.inCallback()) {
+        fail(call,
+             "called from inside a step's callback (pre-solve or custom filter: it may read "
+             "the world; change it after World::step returns)");
     }
 }
 

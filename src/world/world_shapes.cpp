@@ -27,10 +27,13 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
     shape.filter = def.filter;
     shape.userData = def.userData;
     shape.sensor = def.isSensor;
+    shape.hitEvents = def.enableHitEvents;
+    shape.preSolve = def.enablePreSolve;
     Body& body = w.bodies[bodyIndex];
     requireMotionAfterMassChange(
         call, bodyAfterMassChange(body, w.shapes, MassChange{body.type, &shape}), body);
     w.contactManager.countCategories(shape.filter, +1);
+    if (shape.hitEvents) ++w.hitEventShapeCount;
     shape.next = body.shapeList;
     std::int32_t index = w.shapes.insert(shape);
     if (body.shapeList != -1) w.shapes[body.shapeList].prev = index;
@@ -49,6 +52,7 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
 void World::Impl::removeShape(std::int32_t index) {
     const Shape& shape = shapes[index];
     contactManager.countCategories(shape.filter, -1);
+    if (shape.hitEvents) --hitEventShapeCount;
     Body& body = bodies[shape.body];
     for (std::int32_t key = body.contactList; key != -1;) {
         std::int32_t contactIndex = edgeOwner(key);
@@ -101,6 +105,7 @@ ShapeId createPolygonal(World::Impl& w, BodyId bodyId, const ShapeDef& def, Shap
 }  // namespace
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& polygon) {
+    impl_->requireNotInCallback("World::createShape");
     return createPolygonal(*impl_, bodyId, def, ShapeType::Polygon, polygon, makeConvexPolygon);
 }
 
@@ -125,6 +130,7 @@ std::int32_t segmentBody(const char* call, World::Impl& w, BodyId bodyId, const 
 }  // namespace
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Segment& segment) {
+    impl_->requireNotInCallback("World::createShape");
     const char* call = "World::createShape";
     const std::int32_t bodyIndex = segmentBody(call, *impl_, bodyId, def);
     Shape shape;
@@ -135,6 +141,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Segment& se
 }
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ChainSegment& segment) {
+    impl_->requireNotInCallback("World::createShape");
     const char* call = "World::createShape";
     const std::int32_t bodyIndex = segmentBody(call, *impl_, bodyId, def);
     Shape shape;
@@ -147,6 +154,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ChainSegmen
 }
 
 std::vector<ShapeId> World::createChain(BodyId bodyId, const ShapeDef& def, const Chain& chain) {
+    impl_->requireNotInCallback("World::createChain");
     const char* call = "World::createChain";
     const std::int32_t bodyIndex = segmentBody(call, *impl_, bodyId, def);
     const std::vector<Vec2>& p = chain.points;
@@ -312,6 +320,37 @@ void remixContacts(World::Impl& w, std::int32_t shapeIndex) {
 
 }  // namespace
 
+bool World::shapeHitEventsEnabled(ShapeId id) const {
+    return impl_->shapes[impl_->shapeIndex("World::shapeHitEventsEnabled", id)].hitEvents;
+}
+void World::setShapeHitEventsEnabled(ShapeId id, bool enabled) {
+    const char* call = "World::setShapeHitEventsEnabled";
+    impl_->requireNotInCallback(call);
+    Shape& shape = impl_->shapes[impl_->shapeIndex(call, id)];
+    if (shape.hitEvents != enabled) impl_->hitEventShapeCount += enabled ? 1 : -1;
+    shape.hitEvents = enabled;
+}
+bool World::shapePreSolveEnabled(ShapeId id) const {
+    return impl_->shapes[impl_->shapeIndex("World::shapePreSolveEnabled", id)].preSolve;
+}
+void World::setShapePreSolveEnabled(ShapeId id, bool enabled) {
+    const char* call = "World::setShapePreSolveEnabled";
+    impl_->requireNotInCallback(call);
+    Impl& w = *impl_;
+    const std::int32_t index = w.shapeIndex(call, id);
+    w.shapes[index].preSolve = enabled;
+    // A sleeping pair is not asked: wake what the shape touches (a static platform does not
+    // sleep, the bodies on it do).
+    Body& body = w.bodies[w.shapes[index].body];
+    wakeUp(body);
+    for (std::int32_t key = body.contactList; key != -1;) {
+        const Contact& c = w.contacts[edgeOwner(key)];
+        const int side = edgeSide(key);
+        key = c.edges[side].nextKey;
+        if (c.shapeA == index || c.shapeB == index) wakeUp(w.bodies[c.edges[1 - side].body]);
+    }
+}
+
 bool World::isShapeSensor(ShapeId id) const {
     return impl_->shapes[impl_->shapeIndex("World::isShapeSensor", id)].sensor;
 }
@@ -341,6 +380,7 @@ void World::setShapeSensor(ShapeId id, bool sensor) {
 }
 
 void World::setShapeFriction(ShapeId id, float friction) {
+    impl_->requireNotInCallback("World::setShapeFriction");
     const char* call = "World::setShapeFriction";
     Impl& w = *impl_;
     const std::int32_t index = w.shapeIndex(call, id);
@@ -352,6 +392,7 @@ void World::setShapeFriction(ShapeId id, float friction) {
 }
 
 void World::setShapeRestitution(ShapeId id, float restitution) {
+    impl_->requireNotInCallback("World::setShapeRestitution");
     const char* call = "World::setShapeRestitution";
     Impl& w = *impl_;
     const std::int32_t index = w.shapeIndex(call, id);
@@ -366,6 +407,7 @@ float World::shapeDensity(ShapeId id) const {
 }
 
 void World::setShapeDensity(ShapeId id, float density) {
+    impl_->requireNotInCallback("World::setShapeDensity");
     const char* call = "World::setShapeDensity";
     Impl& w = *impl_;
     std::int32_t index = w.shapeIndex(call, id);
@@ -393,10 +435,12 @@ std::uint64_t World::shapeUserData(ShapeId id) const {
 }
 
 void World::setShapeUserData(ShapeId id, std::uint64_t userData) {
+    impl_->requireNotInCallback("World::setShapeUserData");
     impl_->shapes[impl_->shapeIndex("World::setShapeUserData", id)].userData = userData;
 }
 
 void World::setShapeFilter(ShapeId id, const Filter& filter) {
+    impl_->requireNotInCallback("World::setShapeFilter");
     Impl& w = *impl_;
     std::int32_t index = w.shapeIndex("World::setShapeFilter", id);
     Shape& shape = w.shapes[index];

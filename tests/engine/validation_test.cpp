@@ -727,6 +727,10 @@ TEST(Validation, EveryCallChecksItsIds) {
         [&] { f.world.setShapeDensity(shape, 1.0f); },
         [&] { f.world.shapeUserData(shape); },
         [&] { f.world.setShapeUserData(shape, 1); },
+        [&] { f.world.shapeHitEventsEnabled(shape); },
+        [&] { f.world.setShapeHitEventsEnabled(shape, true); },
+        [&] { f.world.shapePreSolveEnabled(shape); },
+        [&] { f.world.setShapePreSolveEnabled(shape, true); },
     };
     for (const auto& call : shapeCalls) expectRejected(f.world, call, {"shape", "stale"});
     std::vector<std::function<void()>> jointCalls = {
@@ -755,6 +759,10 @@ TEST(Validation, EveryCallChecksItsIds) {
         [&] { f.world.setJointLetGoSeparation(joint, 1.0f); },
         [&] { f.world.jointUserData(joint); },
         [&] { f.world.setJointUserData(joint, 1); },
+        [&] { f.world.jointBreakForce(joint); },
+        [&] { f.world.setJointBreakForce(joint, 1.0f); },
+        [&] { f.world.jointBreakTorque(joint); },
+        [&] { f.world.setJointBreakTorque(joint, 1.0f); },
     };
     for (const auto& call : jointCalls) expectRejected(f.world, call, {"joint", "stale"});
     std::vector<std::function<void()>> mouseCalls = {

@@ -505,6 +505,7 @@ private:
             {2, &Driver::setShapeFilter},
             {2, &Driver::setShapeMaterial},
             {3, &Driver::setBodyProperties},
+            {1, &Driver::setJointBreak},
             {5, &Driver::changeJoint},
             {2, &Driver::moveMouse},
             {1, &Driver::worldSettings},
@@ -1638,6 +1639,20 @@ private:
         Arg<ShapeId> shape = pickShape();
         if (random_.chance(0.2f)) {
             const bool flag = random_.chance(0.5f);
+            if (random_.chance(0.5f)) {
+                const bool hits = random_.chance(0.5f);
+                trace((hits ? "setShapeHitEvents " : "setShapePreSolve ") + idText(shape.value) +
+                      " " + std::to_string(flag));
+                attempt(hits ? "World::setShapeHitEventsEnabled" : "World::setShapePreSolveEnabled",
+                        verdict(shape.bad), [&] {
+                            if (hits) {
+                                journal_.setShapeHitEvents(shape.value, flag);
+                            } else {
+                                journal_.setShapePreSolve(shape.value, flag);
+                            }
+                        });
+                return;
+            }
             trace("setShapeSensor " + idText(shape.value) + " " + std::to_string(flag));
             attempt("World::setShapeSensor", verdict(shape.bad),
                     [&] { journal_.setShapeSensor(shape.value, flag); });
@@ -1686,6 +1701,23 @@ private:
                 break;
             }
         }
+    }
+
+    // Break thresholds: mostly around the forces a scene sees, so joints do break.
+    void setJointBreak() {
+        Arg<JointId> joint = pickJoint();
+        Arg<float> value = values_->nonNegative(50.0f);
+        const bool force = random_.chance(0.5f);
+        trace((force ? "setJointBreakForce " : "setJointBreakTorque ") + idText(joint.value) + " " +
+              text(value.value));
+        attempt(force ? "World::setJointBreakForce" : "World::setJointBreakTorque",
+                verdict(joint.bad || value.bad), [&] {
+                    if (force) {
+                        journal_.setJointBreakForce(joint.value, value.value);
+                    } else {
+                        journal_.setJointBreakTorque(joint.value, value.value);
+                    }
+                });
     }
 
     void setShapeFilter() {
@@ -1963,7 +1995,22 @@ private:
     }
 
     void worldSettings() {
-        switch (random_.below(5)) {
+        switch (random_.below(7)) {
+            case 5: {
+                const bool preSolve = random_.chance(0.6f);
+                const bool filter = random_.chance(0.4f);
+                trace("setCallbacks " + std::to_string(preSolve) + " " + std::to_string(filter));
+                attempt("World::setPreSolveCallback", Verdict::Valid,
+                        [&] { journal_.setCallbacks(preSolve, filter); });
+                break;
+            }
+            case 6: {
+                Arg<float> speed = values_->nonNegativeUpTo(2.0f, kMaxSpeed);
+                trace("setHitEventThreshold " + text(speed.value));
+                attempt("World::setHitEventThreshold", verdict(speed.bad),
+                        [&] { journal_.setHitEventThreshold(speed.value); });
+                break;
+            }
             case 0: {
                 Arg<Vec2> g = random_.chance(0.5f) ? Arg<Vec2>{{0.0f, -10.0f}} : values_->gravity();
                 trace("setGravity " + text(g.value));
@@ -2051,6 +2098,7 @@ private:
             ++report_.steps;
             report_.letGoJoints += world_->lastStepStats().letGoJointCount;
             report_.discardedBodies += world_->lastStepStats().discardedBodyCount;
+            checkStepEvents();
             checkInvariants("a step");
         }
     }
@@ -2563,6 +2611,28 @@ private:
     }
 
     // --- invariants -----------------------------------------------------------------------------
+
+    // What the step just reported: hits faster than the threshold with finite points and unit
+    // normals between live shapes, and moved bodies where they now are.
+    void checkStepEvents() {
+        const World& w = *world_;
+        for (const ContactHitEvent& e : w.contactHitEvents()) {
+            if (!w.isValid(e.shapeA) || !w.isValid(e.shapeB) ||
+                !(e.approachSpeed > w.hitEventThreshold()) || !isFinite(e.point) ||
+                !(std::fabs(length(e.normal) - 1.0f) < 1e-3f)) {
+                failure("a hit event is wrong: speed " + text(e.approachSpeed) + " point " +
+                        text(e.point) + " normal " + text(e.normal));
+            }
+        }
+        for (const BodyMoveEvent& e : w.bodyMoveEvents()) {
+            if (!w.isValid(e.body)) failure("a move event names a body that is gone");
+            const Transform xf = w.bodyTransform(e.body);
+            if (!(xf.p == e.transform.p) || w.bodyType(e.body) == BodyType::Static ||
+                e.fellAsleep == w.isBodyAwake(e.body)) {
+                failure("a move event of body " + idText(e.body) + " is not what the body is");
+            }
+        }
+    }
 
     void checkInvariants(const char* after) {
         const World& w = *world_;

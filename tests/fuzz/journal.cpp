@@ -6,6 +6,7 @@
 #include <functional>
 #include <istream>
 #include <sstream>
+#include <stdexcept>
 
 namespace pivot::fuzz {
 
@@ -500,6 +501,65 @@ void Journal::setContinuousEnabled(bool enabled) {
     world_->setContinuousEnabled(enabled);
     lines_.push_back("continuous " + num(enabled));
 }
+void Journal::setHitEventThreshold(float speed) {
+    world_->setHitEventThreshold(speed);
+    lines_.push_back("hitThreshold " + num(speed));
+}
+void Journal::setShapeHitEvents(ShapeId id, bool enabled) {
+    world_->setShapeHitEventsEnabled(id, enabled);
+    lines_.push_back("shapeHitEvents " + nameOf('s', id) + " " + num(enabled));
+}
+void Journal::setShapePreSolve(ShapeId id, bool enabled) {
+    world_->setShapePreSolveEnabled(id, enabled);
+    lines_.push_back("shapePreSolve " + nameOf('s', id) + " " + num(enabled));
+}
+void Journal::setJointBreakForce(JointId id, float force) {
+    world_->setJointBreakForce(id, force);
+    lines_.push_back("breakForce " + nameOf('j', id) + " " + num(force));
+}
+void Journal::setJointBreakTorque(JointId id, float torque) {
+    world_->setJointBreakTorque(id, torque);
+    lines_.push_back("breakTorque " + nameOf('j', id) + " " + num(torque));
+}
+void Journal::setCallbacks(bool preSolve, bool customFilter) {
+    installFuzzCallbacks(*world_, preSolve, customFilter);
+    lines_.push_back("callbacks " + num(preSolve) + " " + num(customFilter));
+}
+
+// Fixed functions of their arguments, so a replay calls the same ones. Each reads the world and
+// checks that it refuses a change from inside the callback: a callback that could change the
+// world mid-step would be a bug the fuzz must find.
+void installFuzzCallbacks(World& world, bool preSolve, bool customFilter) {
+    auto requireRefused = [](World& w, const char* which) {
+        bool refused = false;
+        try {
+            w.setSleepEnabled(w.isSleepEnabled());
+        } catch (const Error&) {
+            refused = true;
+        }
+        if (!refused) throw std::logic_error(std::string(which) + " callback changed the world");
+    };
+    if (preSolve) {
+        world.setPreSolveCallback([&world, requireRefused](const ContactData& c) {
+            requireRefused(world, "a pre-solve");
+            if (!world.isValid(c.shapeA) || !world.isValid(c.shapeB)) {
+                throw std::logic_error("a pre-solve callback got a stale shape id");
+            }
+            return (c.shapeA.index + c.shapeB.index) % 3 != 0;
+        });
+    } else {
+        world.setPreSolveCallback(nullptr);
+    }
+    if (customFilter) {
+        world.setCustomFilterCallback([&world, requireRefused](ShapeId a, ShapeId b) {
+            requireRefused(world, "a custom filter");
+            return ((a.index ^ b.index) % 5) != 0;
+        });
+    } else {
+        world.setCustomFilterCallback(nullptr);
+    }
+}
+
 void Journal::step(float dt, int velocityIterations, int positionIterations) {
     world_->step(dt, velocityIterations, positionIterations);
     lines_.push_back("step " + num(dt) + " " + num(velocityIterations) + " " +
@@ -1176,6 +1236,29 @@ ReplayResult replay(std::istream& in) {
         } else if (command == "continuous") {
             bool on = f.b();
             call = [&w, on] { w.setContinuousEnabled(on); };
+        } else if (command == "hitThreshold") {
+            const float v = f.f();
+            call = [&w, v] { w.setHitEventThreshold(v); };
+        } else if (command == "shapeHitEvents" || command == "shapePreSolve") {
+            ShapeId s = shape(f.word());
+            bool v = f.b();
+            if (command == "shapeHitEvents") {
+                call = [&w, s, v] { w.setShapeHitEventsEnabled(s, v); };
+            } else {
+                call = [&w, s, v] { w.setShapePreSolveEnabled(s, v); };
+            }
+        } else if (command == "breakForce" || command == "breakTorque") {
+            JointId j = joint(f.word());
+            const float v = f.f();
+            if (command == "breakForce") {
+                call = [&w, j, v] { w.setJointBreakForce(j, v); };
+            } else {
+                call = [&w, j, v] { w.setJointBreakTorque(j, v); };
+            }
+        } else if (command == "callbacks") {
+            const bool preSolve = f.b();
+            const bool filter = f.b();
+            call = [&w, preSolve, filter] { installFuzzCallbacks(w, preSolve, filter); };
         } else if (command == "step") {
             // An optional fourth field repeats the step (hand-written reproductions).
             float dt = f.f();

@@ -19,6 +19,10 @@
 
 namespace pivot::fuzz {
 
+/// The fuzz's pre-solve and custom-filter callbacks (or none): fixed functions of their
+/// arguments that also check the world refuses changes from inside them.
+void installFuzzCallbacks(World& world, bool preSolve, bool customFilter);
+
 class Journal {
 public:
     /// Starts a new journal for `world`, made from `def`.
@@ -101,6 +105,14 @@ public:
     void setSubstepCount(int count);
     void setSleepEnabled(bool enabled);
     void setContinuousEnabled(bool enabled);
+    void setHitEventThreshold(float speed);
+    void setShapeHitEvents(ShapeId id, bool enabled);
+    void setShapePreSolve(ShapeId id, bool enabled);
+    void setJointBreakForce(JointId id, float force);
+    void setJointBreakTorque(JointId id, float torque);
+    /// Installs (or removes) the fuzz's fixed pre-solve and custom-filter callbacks
+    /// (installFuzzCallbacks), so a journal replays them.
+    void setCallbacks(bool preSolve, bool customFilter);
     void step(float dt, int velocityIterations, int positionIterations);
 
 private:
