@@ -661,6 +661,24 @@ public:
     void setMouseTarget(MouseJointId id, Vec2 target);
     Vec2 mouseTarget(MouseJointId id) const;
 
+    // --- snapshots (docs/snapshots.md) ---------------------------------------------------------
+    /// The whole state of the world as bytes: settings, bodies, shapes, joints, mouse joints,
+    /// contacts with their manifolds and impulses, the broad phase, and the last step's events
+    /// and statistics. Not in it: the worker count and the callbacks, which belong to the world
+    /// a snapshot is restored into. The bytes are read by the same pivot2d version (format
+    /// version 1), on a machine of the same float behaviour as stateHash needs.
+    std::vector<std::uint8_t> snapshot() const;
+    /// Replaces this world's state with a snapshot's, so that stepping on gives, bit for bit,
+    /// what stepping the snapshotted world gives (the same stateHash at once and after any
+    /// number of steps, on any worker count). Ids keep their index and generation and are
+    /// stamped with this world: restored into the world that made the snapshot (a rollback),
+    /// the ids a game holds stay valid; restored into another world, take them from bodyIds(),
+    /// jointIds(), bodyShapes() or user data. Bytes that are not a pivot2d snapshot, of another
+    /// format version, truncated or corrupted throw pivot::Error saying which, and the world
+    /// is left unchanged.
+    void restore(const std::vector<std::uint8_t>& bytes);
+    void restore(const std::uint8_t* data, std::size_t size);
+
     // --- inspection -------------------------------------------------------------------------
     /// A 64-bit hash of the exact bits of everything a call can change: the world's settings,
     /// every body (pose, velocities, pending forces, mass properties, damping, sleep state),

@@ -48,6 +48,23 @@ void BroadPhase::markBuffered(std::uint8_t value) {
     }
 }
 
+void BroadPhase::save(SnapshotWriter& out) const {
+    tree_.save(out);
+    out.sequence(moveBuffer_, [&](std::int32_t proxy) { out.value(proxy); });
+}
+
+void BroadPhase::load(SnapshotReader& in) {
+    tree_.load(in);
+    in.sequence(moveBuffer_, [&](std::int32_t& proxy) { in.value(proxy); });
+    for (const std::int32_t proxy : moveBuffer_) {
+        if (proxy != kNullProxy &&
+            (proxy < 0 || proxy >= tree_.idBound() || !tree_.isLeafInUse(proxy))) {
+            in.corrupt("the broad phase's buffer names proxy " + std::to_string(proxy));
+        }
+    }
+    buffered_.assign(static_cast<std::size_t>(tree_.idBound()), 0);
+}
+
 const DynamicTree& BroadPhase::tree() const {
     return tree_;
 }

@@ -32,6 +32,11 @@ public:
     std::int32_t userData(std::int32_t proxyId) const;
     const DynamicTree& tree() const;
 
+    /// Snapshots: the tree and the proxies buffered for the next update, in their order. load
+    /// refuses a buffer naming anything but live proxies (or the mark of a destroyed one).
+    void save(SnapshotWriter& out) const;
+    void load(SnapshotReader& in);
+
     /// Calls addPair(userDataA, userDataB) once for every pair of distinct proxies whose fat
     /// boxes overlap and at least one of which was buffered since the last call, then clears
     /// the buffer. Pairs are reported in a deterministic order (sorted by proxy ids), each

@@ -296,6 +296,47 @@ void DynamicTree::replaceChild(std::int32_t parent, std::int32_t oldChild, std::
     }
 }
 
+template <typename Io, typename Tree>
+void DynamicTree::describe(Io& io, Tree& tree) {
+    // A node is 40 bytes of snapshot: a corrupt count cannot ask for more than there are.
+    if constexpr (Io::kReading) {
+        tree.nodes_.assign(io.count(40), Node{});
+    } else {
+        io.count(tree.nodes_.size());
+    }
+    for (auto& node : tree.nodes_) {
+        // A free node's box is whatever its last use left: any bits.
+        io.anyFloat(node.box.lower.x);
+        io.anyFloat(node.box.lower.y);
+        io.anyFloat(node.box.upper.x);
+        io.anyFloat(node.box.upper.y);
+        io.value(node.parent);
+        io.value(node.child1);
+        io.value(node.child2);
+        io.value(node.next);
+        io.value(node.height);
+        io.value(node.userData);
+    }
+    io.value(tree.root_);
+    io.value(tree.freeList_);
+    io.value(tree.proxyCount_);
+}
+
+void DynamicTree::save(SnapshotWriter& out) const {
+    describe(out, *this);
+}
+
+void DynamicTree::load(SnapshotReader& in) {
+    describe(in, *this);
+    if (!isValid()) in.corrupt("the broad phase's tree is not a valid tree");
+    // Boxes of nodes in use hold real coordinates (free nodes keep any bits).
+    for (const Node& node : nodes_) {
+        if (node.height >= 0 && !(isFinite(node.box.lower) && isFinite(node.box.upper))) {
+            in.corrupt("a broad-phase box is not finite");
+        }
+    }
+}
+
 bool DynamicTree::isValid() const {
     const auto nodeCount = static_cast<std::int32_t>(nodes_.size());
     auto inPool = [&](std::int32_t id) { return id >= 0 && id < nodeCount; };

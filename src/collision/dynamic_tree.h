@@ -11,6 +11,7 @@
 
 #include "collision/aabb.h"
 #include "collision/ray_cast.h"
+#include "core/snapshot_io.h"
 
 namespace pivot {
 
@@ -82,11 +83,20 @@ public:
     int proxyCount() const;
     /// One more than the largest id a proxy can have now (ids index the node pool).
     int idBound() const { return static_cast<int>(nodes_.size()); }
+    /// Whether the id, in [0, idBound()), is a live proxy (a leaf in use).
+    bool isLeafInUse(std::int32_t id) const {
+        return nodes_[id].height == 0 && nodes_[id].isLeaf();
+    }
     /// Height of the tree (0 for a single leaf, -1 when empty).
     int height() const;
     /// Checks every structural invariant (parents, heights, boxes enclosing children, free
-    /// list); returns false at the first violation. For tests.
+    /// list); returns false at the first violation. For tests, and for restoring snapshots.
     bool isValid() const;
+
+    /// The whole tree, node for node (a restored tree answers and changes exactly as this one
+    /// would). load refuses (pivot::Error) a tree isValid would not accept.
+    void save(SnapshotWriter& out) const;
+    void load(SnapshotReader& in);
 
 private:
     static constexpr std::int32_t kNullNode = -1;
@@ -109,6 +119,8 @@ private:
         bool isLeaf() const { return child1 == kNullNode; }
     };
 
+    template <typename Io, typename Tree>
+    static void describe(Io& io, Tree& tree);
     static AABB fatBoxFor(const AABB& tightBox, Vec2 displacement);
     std::int32_t allocateNode();
     void freeNode(std::int32_t nodeId);

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace pivot {
@@ -79,6 +80,41 @@ public:
     void forEach(F&& f) const {
         for (std::int32_t i = 0; i < capacity(); ++i) {
             if (slots_[i].alive) f(i, slots_[i].item);
+        }
+    }
+
+    /// Snapshots (core/snapshot_io.h): every slot's generation and liveness, the live items
+    /// (through `item(io, T&)`), and the free list in its order, so a restored pool hands out the
+    /// same slots and generations. Reading checks the free list names dead slots once each.
+    template <typename Io, typename Pool, typename Item>
+    static void describe(Io& io, Pool& pool, Item&& item) {
+        if constexpr (Io::kReading) {
+            pool.slots_.assign(io.count(sizeof(Generation) + 1), Slot{});
+        } else {
+            io.count(pool.slots_.size());
+        }
+        for (auto& slot : pool.slots_) {
+            io.value(slot.generation);
+            io.value(slot.alive);
+            if (slot.alive) item(io, slot.item);
+        }
+        io.sequence(pool.free_, [&](auto& index) { io.value(index); });
+        io.value(pool.retired_);
+        if constexpr (Io::kReading) {
+            pool.size_ = 0;
+            for (const Slot& slot : pool.slots_) pool.size_ += slot.alive ? 1 : 0;
+            std::vector<bool> listed(pool.slots_.size(), false);
+            for (const std::int32_t index : pool.free_) {
+                if (index < 0 || index >= pool.capacity() || pool.slots_[index].alive ||
+                    listed[static_cast<std::size_t>(index)]) {
+                    io.corrupt("a free list names slot " + std::to_string(index));
+                }
+                listed[static_cast<std::size_t>(index)] = true;
+            }
+            const auto dead = static_cast<std::size_t>(pool.capacity() - pool.size_);
+            if (pool.retired_ < 0 || dead != pool.free_.size() + std::size_t(pool.retired_)) {
+                io.corrupt("a pool's free and retired slots do not add up");
+            }
         }
     }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/buffer.h"
 #include "pivot/constants.h"
@@ -119,7 +120,10 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
                 joint.letGoFor(JointLetGoReason::NonFinite, joint.separation(bodies));
                 ++report.letGoJoints;
             } else if (joint.breakForce > 0.0f || joint.breakTorque > 0.0f) {
-                const float force = length(joint.reactionForce());
+                // Finite components can still square past the float range: such a force is
+                // reported as the largest float.
+                const float force =
+                    std::min(length(joint.reactionForce()), std::numeric_limits<float>::max());
                 const float torque = std::fabs(joint.reactionTorque());
                 const bool forceBroke = joint.breakForce > 0.0f && force > joint.breakForce;
                 if (forceBroke || (joint.breakTorque > 0.0f && torque > joint.breakTorque)) {

@@ -364,4 +364,58 @@ void ContactManager::refilterBody(std::int32_t bodyIndex) {
     newShapes_ = true;
 }
 
+void ContactManager::saveState(SnapshotWriter& out) const {
+    broadPhase_.save(out);
+    out.value(newShapes_);
+    out.value(contactsMade_);
+    for (const auto* list : {&beginEvents_, &endEvents_}) {
+        out.sequence(*list, [&](const ContactEvent& e) {
+            snapshotHandle(out, e.shapeA, worldId_);
+            snapshotHandle(out, e.shapeB, worldId_);
+        });
+    }
+    for (const auto* list : {&sensorBeginEvents_, &sensorEndEvents_}) {
+        out.sequence(*list, [&](const SensorEvent& e) {
+            snapshotHandle(out, e.sensor, worldId_);
+            snapshotHandle(out, e.visitor, worldId_);
+        });
+    }
+}
+
+ContactManager::State ContactManager::loadState(SnapshotReader& in, std::uint32_t worldId) {
+    State state;
+    state.broadPhase.load(in);
+    in.value(state.newShapes);
+    in.value(state.contactsMade);
+    for (auto* list : {&state.beginEvents, &state.endEvents}) {
+        in.sequence(*list, [&](ContactEvent& e) {
+            snapshotHandle(in, e.shapeA, worldId);
+            snapshotHandle(in, e.shapeB, worldId);
+        });
+    }
+    for (auto* list : {&state.sensorBeginEvents, &state.sensorEndEvents}) {
+        in.sequence(*list, [&](SensorEvent& e) {
+            snapshotHandle(in, e.sensor, worldId);
+            snapshotHandle(in, e.visitor, worldId);
+        });
+    }
+    return state;
+}
+
+void ContactManager::adoptState(State&& state) {
+    broadPhase_ = std::move(state.broadPhase);
+    newShapes_ = state.newShapes;
+    contactsMade_ = state.contactsMade;
+    beginEvents_ = std::move(state.beginEvents);
+    endEvents_ = std::move(state.endEvents);
+    sensorBeginEvents_ = std::move(state.sensorBeginEvents);
+    sensorEndEvents_ = std::move(state.sensorEndEvents);
+    pairs_ = PairMap{};
+    contacts_.forEach([&](std::int32_t index, const Contact& c) {
+        pairs_.insert(PairMap::key(c.shapeA, c.shapeB), index);
+    });
+    categoryCounts_ = {};
+    shapes_.forEach([&](std::int32_t, const Shape& s) { countCategories(s.filter, +1); });
+}
+
 }  // namespace pivot

@@ -90,6 +90,23 @@ public:
     void setPreSolve(PreSolveCallback callback) { preSolve_ = std::move(callback); }
     void setCustomFilter(CustomFilterCallback callback) { customFilter_ = std::move(callback); }
     bool inCallback() const { return callbackDepth_ > 0; }
+    /// Snapshots (world/world_snapshot.cpp): the broad phase, the pair bookkeeping that is not
+    /// derived from the contacts and the last step's events. loadState decodes and checks into a
+    /// State that adoptState then takes (after the pools it refers to are in place): a snapshot
+    /// that fails a check changes nothing.
+    struct State {
+        BroadPhase broadPhase;
+        bool newShapes = false;
+        std::uint64_t contactsMade = 0;
+        std::vector<ContactEvent> beginEvents, endEvents;
+        std::vector<SensorEvent> sensorBeginEvents, sensorEndEvents;
+    };
+    void saveState(SnapshotWriter& out) const;
+    static State loadState(SnapshotReader& in, std::uint32_t worldId);
+    /// Takes the state and rebuilds what follows from the pools (checked already): the pair map
+    /// and the category counts.
+    void adoptState(State&& state);
+
     /// The first exception a callback threw since the last call, or null.
     std::exception_ptr takeCallbackError() {
         std::exception_ptr error = callbackError_;

@@ -223,6 +223,7 @@ private:
         bad = bad || bias.bad || threshold.bad || letGo.bad;
         trace("new World gravity=" + text(def.gravity) + " bad=" + std::to_string(bad));
         world_.reset();
+        preSolveInstalled_ = filterInstalled_ = false;
         try {
             world_ = std::make_unique<World>(def);
             if (bad) failure("World::World accepted a bad WorldDef");
@@ -514,6 +515,7 @@ private:
             {4, &Driver::worldQueries},
             {2, &Driver::freeFunctions},
             {1, &Driver::destroyWhileIterating},
+            {1, &Driver::snapshots},
         };
         int total = 0;
         for (const Entry& e : kOperations) total += e.weight;
@@ -2000,8 +2002,11 @@ private:
                 const bool preSolve = random_.chance(0.6f);
                 const bool filter = random_.chance(0.4f);
                 trace("setCallbacks " + std::to_string(preSolve) + " " + std::to_string(filter));
-                attempt("World::setPreSolveCallback", Verdict::Valid,
-                        [&] { journal_.setCallbacks(preSolve, filter); });
+                if (attempt("World::setPreSolveCallback", Verdict::Valid,
+                            [&] { journal_.setCallbacks(preSolve, filter); })) {
+                    preSolveInstalled_ = preSolve;
+                    filterInstalled_ = filter;
+                }
                 break;
             }
             case 6: {
@@ -2503,6 +2508,74 @@ private:
     }
 
     // The lists the API returns are copies: destroying while iterating them must be safe.
+    // Snapshots: a world restored from this one's snapshot (on 1 or 2 workers, with the same
+    // callbacks) hashes the same and steps the same; damaged bytes, re-sealed past the checksum
+    // or not, are refused with nothing changed, or restore a world that steps.
+    void snapshots() {
+        const std::vector<std::uint8_t> bytes = world_->snapshot();
+        WorldDef def;
+        def.workerCount = random_.chance(0.5f) ? 1 : 2;
+        World copy(def);
+        trace("snapshot round trip (" + std::to_string(bytes.size()) + " bytes)");
+        try {
+            copy.restore(bytes);
+        } catch (const Error& e) {
+            failure(std::string("World::restore refused a snapshot: ") + e.what());
+            return;
+        }
+        ++report_.snapshots;
+        if (copy.stateHash() != world_->stateHash()) failure("a restored world hashes differently");
+        installFuzzCallbacks(copy, preSolveInstalled_, filterInstalled_);
+        if (random_.chance(0.5f)) {
+            trace("step both");
+            if (attempt("World::step", Verdict::Valid,
+                        [&] { journal_.step(1.0f / 60.0f, 8, 3); })) {
+                copy.step(1.0f / 60.0f, 8, 3);
+                if (copy.stateHash() != world_->stateHash()) {
+                    failure("a restored world stepped differently from its original");
+                }
+            }
+        }
+
+        std::vector<std::uint8_t> bad = bytes;
+        const int damage = random_.between(1, 4);
+        for (int i = 0; i < damage && !bad.empty(); ++i) {
+            const auto at = static_cast<std::size_t>(random_.below(static_cast<int>(bad.size())));
+            switch (random_.below(4)) {
+                case 0:
+                    bad[at] = static_cast<std::uint8_t>(bad[at] ^ (1u << random_.below(8)));
+                    break;
+                case 1: bad[at] = static_cast<std::uint8_t>(random_.below(256)); break;
+                case 2: bad.resize(at); break;
+                default: bad.insert(bad.begin() + static_cast<std::ptrdiff_t>(at), bad[at]); break;
+            }
+        }
+        if (bad.size() > 28 && random_.chance(0.7f)) resealSnapshot(bad);
+        World scratch(def);
+        const std::uint64_t empty = scratch.stateHash();
+        try {
+            scratch.restore(bad);
+            ++report_.damagedSnapshotsRestored;
+            for (int i = 0; i < 3; ++i) scratch.step(1.0f / 60.0f);
+        } catch (const Error&) {
+            ++report_.damagedSnapshotsRefused;
+            if (scratch.stateHash() != empty) failure("a refused snapshot changed the world");
+        }
+    }
+
+    // The checksum of docs/snapshots.md over a changed payload (header 20 bytes, checksum 8).
+    static void resealSnapshot(std::vector<std::uint8_t>& bytes) {
+        std::uint64_t h = 0xcbf29ce484222325ull;
+        for (std::size_t i = 20; i + 8 < bytes.size(); ++i) {
+            h ^= bytes[i];
+            h *= 0x100000001b3ull;
+        }
+        for (int i = 0; i < 8; ++i) {
+            bytes[bytes.size() - 8 + static_cast<std::size_t>(i)] =
+                static_cast<std::uint8_t>(h >> (8 * i));
+        }
+    }
+
     void destroyWhileIterating() {
         switch (random_.below(4)) {
             case 0:
@@ -2772,6 +2845,8 @@ private:
     long nonFiniteSeen_ = 0;
     Report report_;
     std::unique_ptr<World> world_;
+    bool preSolveInstalled_ = false;  // the fuzz callbacks on world_ (installFuzzCallbacks)
+    bool filterInstalled_ = false;
     Journal journal_;
     std::unique_ptr<World> other_;
     std::uint32_t tag_ = 0;  // the world field of this world's ids

@@ -57,7 +57,10 @@ struct Report {
     long accepted = 0;  ///< calls that returned
     long rejected = 0;  ///< calls that threw pivot::Error, each checked to have changed nothing
     long steps = 0;
-    long worlds = 0;  ///< worlds created (the driver starts afresh now and then)
+    long worlds = 0;                    ///< worlds created (the driver starts afresh now and then)
+    long snapshots = 0;                 ///< snapshots restored into a second world and compared
+    long damagedSnapshotsRefused = 0;   ///< damaged snapshots World::restore refused
+    long damagedSnapshotsRestored = 0;  ///< damaged (re-sealed) snapshots it took, then stepped
     long maxBodies = 0;
     /// Worlds in which a body or joint came to report a non-finite number, and the operation
     /// at which each was first seen.

@@ -103,6 +103,10 @@ int main(int argc, char** argv) {
         "%ld touching contacts\n",
         static_cast<unsigned long long>(options.seed), report.operations, seconds, report.accepted,
         report.rejected, report.steps, report.worlds, report.maxBodies, report.maxContacts);
+    std::printf(
+        "snapshots: %ld restored into a second world and compared; damaged ones: %ld refused, "
+        "%ld (re-sealed) restored and stepped\n",
+        report.snapshots, report.damagedSnapshotsRefused, report.damagedSnapshotsRestored);
     std::printf("worlds that came to report a non-finite number: %zu",
                 report.nonFiniteWorlds.size());
     for (std::size_t i = 0; i < report.nonFiniteWorlds.size() && i < 10; ++i) {

@@ -1,0 +1,201 @@
+// The byte level of world snapshots (docs/snapshots.md): numbers written in a fixed order, little
+// endian, floats as their exact bits. Each part of the world describes its fields once, as a
+// template over the archive, and the writer and the reader both run that description: a field
+// cannot be written and then forgotten on reading.
+//
+// The reader checks as it goes what could make a decoded world read out of bounds: every read
+// stays inside the bytes (a short snapshot is "truncated"), booleans are 0 or 1, enums are in
+// range, floats finite and counts possible. What a part means (indices that must name live
+// objects, lists that must be consistent) is checked by the part that knows it.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "core/validation.h"
+#include "pivot/math.h"
+
+namespace pivot {
+
+/// Writes a snapshot's payload.
+class SnapshotWriter {
+public:
+    static constexpr bool kReading = false;
+
+    template <typename T>
+    void value(const T& v) {
+        if constexpr (std::is_same_v<T, bool>) {
+            bytes_.push_back(v ? 1 : 0);
+        } else if constexpr (std::is_enum_v<T>) {
+            value(static_cast<std::int32_t>(v));
+        } else if constexpr (std::is_same_v<T, float>) {
+            std::uint32_t bits;
+            std::memcpy(&bits, &v, sizeof bits);
+            value(bits);
+        } else {
+            static_assert(std::is_integral_v<T>, "a snapshot field is a number, bool or enum");
+            using U = std::make_unsigned_t<T>;
+            const U u = static_cast<U>(v);
+            for (std::size_t i = 0; i < sizeof(T); ++i) {
+                bytes_.push_back(static_cast<std::uint8_t>(u >> (8 * i)));
+            }
+        }
+    }
+    void value(const Vec2& v) {
+        value(v.x);
+        value(v.y);
+    }
+    void value(const Rot& q) {
+        value(q.s);
+        value(q.c);
+    }
+    void value(const Transform& xf) {
+        value(xf.p);
+        value(xf.q);
+    }
+    void value(const AABB& box) {
+        value(box.lower);
+        value(box.upper);
+    }
+    /// The same as value for a writer; a reader checks the range.
+    template <typename E>
+    void enumValue(const E& e, int /*count*/) {
+        value(static_cast<std::int32_t>(e));
+    }
+    /// A float that may be any value (a reader takes it as it is).
+    void anyFloat(const float& v) { value(v); }
+    /// The length of a sequence the caller writes next.
+    void count(std::size_t n) { value(static_cast<std::uint32_t>(n)); }
+    template <typename T, typename Each>
+    void sequence(const std::vector<T>& items, Each&& each) {
+        count(items.size());
+        for (const T& item : items) each(item);
+    }
+
+    std::vector<std::uint8_t>& bytes() { return bytes_; }
+
+private:
+    std::vector<std::uint8_t> bytes_;
+};
+
+/// Reads a payload back; every problem throws pivot::Error from `call`.
+class SnapshotReader {
+public:
+    static constexpr bool kReading = true;
+
+    SnapshotReader(const char* call, const std::uint8_t* data, std::size_t size)
+        : call_(call), data_(data), size_(size) {}
+
+    template <typename T>
+    void value(T& v) {
+        if constexpr (std::is_same_v<T, bool>) {
+            const std::uint8_t byte = take(1)[0];
+            if (byte > 1) corrupt("a flag is " + std::to_string(byte) + ", not 0 or 1");
+            v = byte == 1;
+        } else if constexpr (std::is_enum_v<T>) {
+            static_assert(sizeof(T) == 0, "read enums with enumValue, which checks the range");
+        } else if constexpr (std::is_same_v<T, float>) {
+            anyFloat(v);
+            if (!std::isfinite(v)) corrupt("a number is not finite");
+        } else {
+            static_assert(std::is_integral_v<T>, "a snapshot field is a number, bool or enum");
+            using U = std::make_unsigned_t<T>;
+            const std::uint8_t* p = take(sizeof(T));
+            U u = 0;
+            for (std::size_t i = 0; i < sizeof(T); ++i) u |= static_cast<U>(U(p[i]) << (8 * i));
+            v = static_cast<T>(u);
+        }
+    }
+    void value(Vec2& v) {
+        value(v.x);
+        value(v.y);
+    }
+    void value(Rot& q) {
+        value(q.s);
+        value(q.c);
+    }
+    void value(Transform& xf) {
+        value(xf.p);
+        value(xf.q);
+    }
+    void value(AABB& box) {
+        value(box.lower);
+        value(box.upper);
+    }
+    template <typename E>
+    void enumValue(E& e, int count) {
+        std::int32_t raw = 0;
+        value(raw);
+        if (raw < 0 || raw >= count) corrupt("an enum value is " + std::to_string(raw));
+        e = static_cast<E>(raw);
+    }
+    void anyFloat(float& v) {
+        std::uint32_t bits = 0;
+        value(bits);
+        std::memcpy(&v, &bits, sizeof v);
+    }
+    /// A sequence's length, refused when the bytes left could not hold that many items of at
+    /// least `minItemBytes` each (so a corrupt count cannot make a huge allocation).
+    std::size_t count(std::size_t minItemBytes = 1) {
+        std::uint32_t n = 0;
+        value(n);
+        if (minItemBytes > 0 && n > (size_ - offset_) / minItemBytes) {
+            truncated("a list of " + std::to_string(n) + " items");
+        }
+        return n;
+    }
+    template <typename T, typename Each>
+    void sequence(std::vector<T>& items, Each&& each) {
+        items.assign(count(), T{});
+        for (T& item : items) each(item);
+    }
+
+    bool atEnd() const { return offset_ == size_; }
+    [[noreturn]] void corrupt(const std::string& what) const {
+        fail(call_, "the snapshot is corrupted: " + what + " (at byte " + std::to_string(offset_) +
+                        " of the payload)");
+    }
+    [[noreturn]] void truncated(const std::string& what) const {
+        fail(call_, "the snapshot is truncated: " + what + " goes past its end (byte " +
+                        std::to_string(offset_) + " of " + std::to_string(size_) + ")");
+    }
+    const char* call() const { return call_; }
+
+private:
+    const std::uint8_t* take(std::size_t n) {
+        if (n > size_ - offset_) truncated("a " + std::to_string(n) + "-byte field");
+        const std::uint8_t* p = data_ + offset_;
+        offset_ += n;
+        return p;
+    }
+
+    const char* call_;
+    const std::uint8_t* data_;
+    std::size_t size_;
+    std::size_t offset_ = 0;
+};
+
+/// A handle (pivot/id.h) in a snapshot: its index and generation. A restored one is stamped with
+/// the world it is restored into; it may be stale (an event's), which the world's checks tell.
+template <typename Io, typename Id>
+void snapshotHandle(Io& io, Id& id, std::uint32_t worldId) {
+    io.value(id.index);
+    io.value(id.generation);
+    if constexpr (Io::kReading) id.world = worldId;
+}
+
+/// 64-bit FNV-1a over the bytes: the snapshot's checksum (accidental damage, not an attacker).
+inline std::uint64_t snapshotChecksum(const std::uint8_t* data, std::size_t size) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (std::size_t i = 0; i < size; ++i) {
+        h ^= data[i];
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+}  // namespace pivot

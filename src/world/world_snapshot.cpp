@@ -1,0 +1,646 @@
+// World::snapshot and World::restore (docs/snapshots.md): the whole world as bytes, read back so
+// that stepping on continues bit for bit.
+//
+// Layout: an 8-byte magic "PIVOT2DS", the format version (u32), the payload's size (u64), the
+// payload, and a 64-bit FNV-1a checksum of the payload. The payload is the settings, the five
+// object pools slot by slot (generations and free lists included, so ids keep working and new
+// objects get the slots they would have got), the broad phase's tree node for node, and the last
+// step's events and statistics. Each part describes its fields once (the `describe` functions
+// below, core/snapshot_io.h) for both writing and reading.
+//
+// Restoring decodes everything into new pools first and checks it: the header (foreign,
+// version), the size (truncated), the checksum (corrupted), then every field as it is read and
+// every link between objects (lists, edges, ids, the tree's leaves). Only a snapshot that passes
+// all of that replaces the world's state, so a refused one changes nothing.
+#include <algorithm>
+#include <iterator>
+#include <unordered_set>
+#include <utility>
+#include <variant>
+
+#include "core/snapshot_io.h"
+#include "world/world_impl.h"
+
+namespace pivot {
+
+namespace {
+
+constexpr std::uint8_t kMagic[8] = {'P', 'I', 'V', 'O', 'T', '2', 'D', 'S'};
+constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8;
+constexpr std::size_t kChecksumSize = 8;
+constexpr int kBodyTypes = 3;
+constexpr int kShapeTypes = 5;
+constexpr int kJointTypes = 9;
+constexpr int kLetGoReasons = 4;
+constexpr int kContactCorrections = 3;
+constexpr int kManifoldTypes = 3;
+
+// --- field lists: B is the type or the const type (writing) ----------------------------------
+
+template <typename Io, typename B>
+void describeBody(Io& io, B& b) {
+    io.enumValue(b.type, kBodyTypes);
+    io.value(b.xf);
+    io.value(b.localCenter);
+    io.value(b.center);
+    io.value(b.angle);
+    io.value(b.linearVelocity);
+    io.value(b.angularVelocity);
+    io.value(b.force);
+    io.value(b.torque);
+    io.value(b.mass);
+    io.value(b.invMass);
+    io.value(b.inertia);
+    io.value(b.invInertia);
+    io.value(b.linearDamping);
+    io.value(b.angularDamping);
+    io.value(b.gravityScale);
+    io.value(b.fixedRotation);
+    io.value(b.userData);
+    io.value(b.center0);
+    io.value(b.angle0);
+    io.value(b.alpha0);
+    io.value(b.bullet);
+    io.value(b.continuous);
+    io.value(b.shapeList);
+    io.value(b.jointList);
+    io.value(b.contactList);
+    io.value(b.mouseList);
+    io.value(b.shapeCount);
+    io.value(b.islandIndex);
+    io.value(b.awake);
+    io.value(b.allowSleep);
+    io.value(b.sleepTime);
+    io.value(b.heldAtEdge);
+    io.value(b.edgeReached);
+    io.value(b.discarded);
+}
+
+template <typename Io, typename S>
+void describeShape(Io& io, S& s) {
+    io.value(s.body);
+    io.enumValue(s.type, kShapeTypes);
+    io.value(s.circle.center);
+    io.value(s.circle.radius);
+    for (auto& v : s.polygon.vertices) io.value(v);
+    for (auto& n : s.polygon.normals) io.value(n);
+    io.value(s.polygon.count);
+    io.value(s.polygon.radius);
+    io.value(s.polygon.centroid);
+    io.value(s.ghost1);
+    io.value(s.ghost2);
+    io.value(s.density);
+    io.value(s.friction);
+    io.value(s.restitution);
+    io.value(s.filter.categoryBits);
+    io.value(s.filter.maskBits);
+    io.value(s.filter.groupIndex);
+    io.value(s.userData);
+    io.value(s.sensor);
+    io.value(s.hitEvents);
+    io.value(s.preSolve);
+    io.value(s.proxyId);
+    io.value(s.box);
+    io.value(s.prev);
+    io.value(s.next);
+    if constexpr (Io::kReading) {
+        const int count = s.polygon.count;
+        const bool round = s.type == ShapeType::Circle;
+        const bool two = s.type != ShapeType::Polygon && !round;
+        if (round ? count != 0 : two ? count != 2 : count < 3 || count > kMaxPolygonVertices) {
+            io.corrupt("a shape of type " + std::to_string(int(s.type)) + " has " +
+                       std::to_string(count) + " vertices");
+        }
+    }
+}
+
+template <typename Io, typename E>
+void describeEdges(Io& io, E (&edges)[2]) {
+    for (auto& e : edges) {
+        io.value(e.body);
+        io.value(e.prevKey);
+        io.value(e.nextKey);
+    }
+}
+
+template <typename Io, typename C>
+void describeContact(Io& io, C& c) {
+    describeEdges(io, c.edges);
+    io.value(c.shapeA);
+    io.value(c.shapeB);
+    auto& m = c.manifold;
+    for (auto& p : m.points) {
+        io.value(p.localPoint);
+        io.value(p.normalImpulse);
+        io.value(p.tangentImpulse);
+        io.value(p.approachSpeed);
+        io.value(p.id);
+    }
+    io.value(m.localNormal);
+    io.value(m.localPoint);
+    io.enumValue(m.type, kManifoldTypes);
+    io.value(m.pointCount);
+    if constexpr (Io::kReading) {
+        if (m.pointCount < 0 || m.pointCount > 2) io.corrupt("a manifold has a bad point count");
+    }
+    io.value(c.friction);
+    io.value(c.restitution);
+    io.value(c.touching);
+    io.value(c.needsFiltering);
+    io.value(c.sensor);
+    io.value(c.enabled);
+    io.value(c.serial);
+    io.value(c.toi);
+    io.value(c.toiCount);
+    io.value(c.toiKnown);
+    io.value(c.toiDisabled);
+}
+
+template <typename Io, typename Spring>
+void describeSpring(Io& io, Spring& s) {
+    io.value(s.enabled);
+    io.value(s.hertz);
+    io.value(s.dampingRatio);
+}
+
+// One per joint type, in the fields' declaration order.
+template <typename Io, typename J>
+void describeData(Io& io, J& j, const RevoluteJoint*) {
+    io.value(j.enableLimit);
+    io.value(j.lowerAngle);
+    io.value(j.upperAngle);
+    io.value(j.enableMotor);
+    io.value(j.motorSpeed);
+    io.value(j.maxMotorTorque);
+    io.value(j.impulse);
+    io.value(j.motorImpulse);
+    io.value(j.lowerImpulse);
+    io.value(j.upperImpulse);
+}
+template <typename Io, typename J>
+void describeData(Io& io, J& j, const DistanceJoint*) {
+    io.value(j.length);
+    io.value(j.enableLimit);
+    io.value(j.minLength);
+    io.value(j.maxLength);
+    io.value(j.enableSpring);
+    io.value(j.hertz);
+    io.value(j.dampingRatio);
+    io.value(j.impulse);
+    io.value(j.lowerImpulse);
+    io.value(j.upperImpulse);
+    io.value(j.axis);
+}
+template <typename Io, typename J>
+void describeData(Io& io, J& j, const PulleyJoint*) {
+    io.value(j.groundAnchorA);
+    io.value(j.groundAnchorB);
+    io.value(j.lengthA);
+    io.value(j.lengthB);
+    io.value(j.ratio);
+    io.value(j.impulse);
+    io.value(j.axisB);
+}
+template <typename Io, typename J>
+void describeData(Io& io, J& j, const FrictionJoint*) {
+    io.value(j.maxForce);
+    io.value(j.maxTorque);
+    io.value(j.linearImpulse);
+    io.value(j.angularImpulse);
+}
+template <typename Io, typename J>
+void describeData(Io& io, J& j, const MotorJoint*) {
+    io.value(j.linearOffset);
+    io.value(j.angularOffset);
+    io.value(j.maxForce);
+    io.value(j.maxTorque);
+    io.value(j.correctionFactor);
+    io.value(j.linearImpulse);
+    io.value(j.angularImpulse);
+}
+template <typename Io, typename J>
+void describeData(Io& io, J& j, const PrismaticJoint*) {
+    io.value(j.localAxisA);
+    io.value(j.enableLimit);
+    io.value(j.lowerTranslation);
+    io.value(j.upperTranslation);
+    io.value(j.enableMotor);
+    io.value(j.motorSpeed);
+    io.value(j.maxMotorForce);
+    io.value(j.enableSpring);
+    io.value(j.hertz);
+    io.value(j.dampingRatio);
+    io.value(j.impulse);
+    io.value(j.motorImpulse);
+    io.value(j.lowerImpulse);
+    io.value(j.upperImpulse);
+    io.value(j.springImpulse);
+    io.value(j.axis);
+}
+template <typename Io, typename J>
+void describeData(Io& io, J& j, const WeldJoint*) {
+    describeSpring(io, j.linearSpring);
+    describeSpring(io, j.angularSpring);
+    io.value(j.impulse.x);
+    io.value(j.impulse.y);
+    io.value(j.impulse.z);
+}
+template <typename Io, typename J>
+void describeData(Io& io, J& j, const WheelJoint*) {
+    io.value(j.localAxisA);
+    describeSpring(io, j.spring);
+    io.value(j.enableLimit);
+    io.value(j.lowerTranslation);
+    io.value(j.upperTranslation);
+    io.value(j.enableMotor);
+    io.value(j.motorSpeed);
+    io.value(j.maxMotorTorque);
+    io.value(j.impulse);
+    io.value(j.springImpulse);
+    io.value(j.lowerImpulse);
+    io.value(j.upperImpulse);
+    io.value(j.motorImpulse);
+    io.value(j.axis);
+}
+template <typename Io, typename Side>
+void describeGearSide(Io& io, Side& s) {
+    io.value(s.prismatic);
+    io.value(s.joint);
+    io.value(s.base);
+    io.value(s.localAnchorBase);
+    io.value(s.localAnchorMover);
+    io.value(s.localAxis);
+    io.value(s.referenceAngle);
+}
+template <typename Io, typename J>
+void describeData(Io& io, J& j, const GearJoint*) {
+    describeGearSide(io, j.side1);
+    describeGearSide(io, j.side2);
+    io.value(j.ratio);
+    io.value(j.constant);
+    io.value(j.impulse);
+    io.value(j.linearB);
+    io.value(j.angularB);
+}
+
+// The alternative of JointData for a type, default-constructed.
+template <std::size_t... I>
+JointData jointDataOfType(JointType type, std::index_sequence<I...>) {
+    JointData data;
+    ((static_cast<std::size_t>(type) == I ? (data.template emplace<I>(), 0) : 0), ...);
+    return data;
+}
+
+template <typename Io, typename J>
+void describeJoint(Io& io, J& j) {
+    describeEdges(io, j.edges);
+    io.value(j.localAnchorA);
+    io.value(j.localAnchorB);
+    io.value(j.referenceAngle);
+    io.enumValue(j.solver, kPositionSolverCount);
+    io.value(j.hasBiasOverride);
+    io.value(j.biasOverride);
+    io.value(j.softness.hertz);
+    io.value(j.softness.dampingRatio);
+    io.value(j.softness.compliance);
+    io.value(j.collideConnected);
+    io.value(j.userData);
+    JointType type = j.type();
+    io.enumValue(type, kJointTypes);
+    if constexpr (Io::kReading) {
+        j.data = jointDataOfType(type, std::make_index_sequence<std::variant_size_v<JointData>>{});
+    }
+    std::visit(
+        [&](auto& data) {
+            using Data = std::decay_t<decltype(data)>;
+            describeData(io, data, static_cast<const Data*>(nullptr));
+        },
+        j.data);
+    io.value(j.impulseInvDt);
+    io.value(j.letGo);
+    io.enumValue(j.letGoReason, kLetGoReasons);
+    io.value(j.letGoAt);
+    io.value(j.letGoReaction);
+    io.value(j.breakForce);
+    io.value(j.breakTorque);
+    io.value(j.hasLetGoOverride);
+    io.value(j.letGoOverride);
+    io.value(j.gearCount);
+}
+
+template <typename Io, typename M>
+void describeMouse(Io& io, M& m) {
+    io.value(m.body);
+    io.value(m.next);
+    io.value(m.localAnchor);
+    io.value(m.target);
+    io.value(m.maxForce);
+    io.value(m.hertz);
+    io.value(m.dampingRatio);
+    io.value(m.impulse);
+}
+
+// Everything of the world but the contact manager's part, in one struct so that restore can
+// decode into it and check it before anything of the world changes.
+struct WorldState {
+    Vec2 gravity;
+    PositionSolver defaultPositionSolver = PositionSolver::FullNGS;
+    bool warmStarting = true;
+    ContactCorrection contactCorrection = ContactCorrection::NGS;
+    float contactBiasFactor = 0.0f;
+    float contactHertz = 0.0f;
+    float contactDampingRatio = 0.0f;
+    float contactPushSpeed = 0.0f;
+    float restitutionThreshold = 0.0f;
+    bool enableSleep = true;
+    bool enableContinuous = true;
+    float jointLetGoSeparation = 0.0f;
+    int substepCount = 1;
+    float hitEventThreshold = 0.0f;
+    float previousInvDt = 0.0f;
+    SlotPool<Body> bodies;
+    SlotPool<Shape> shapes;
+    SlotPool<Joint> joints;
+    SlotPool<Contact> contacts;
+    SlotPool<MouseJoint> mouseJoints;
+    std::vector<JointLetGoEvent> letGoEvents;
+    std::vector<WorldEdgeEvent> edgeEvents;
+    std::vector<BodyId> discarded;
+    std::vector<ContactHitEvent> hitEvents;
+    std::vector<BodyMoveEvent> moveEvents;
+    StepStats stats;
+};
+
+// The settings, scalars, pools and the world's event lists; W is World::Impl or WorldState.
+template <typename Io, typename W>
+void describeWorld(Io& io, W& w, std::uint32_t worldId) {
+    io.value(w.gravity);
+    io.enumValue(w.defaultPositionSolver, kPositionSolverCount);
+    io.value(w.warmStarting);
+    io.enumValue(w.contactCorrection, kContactCorrections);
+    io.value(w.contactBiasFactor);
+    io.value(w.contactHertz);
+    io.value(w.contactDampingRatio);
+    io.value(w.contactPushSpeed);
+    io.value(w.restitutionThreshold);
+    io.value(w.enableSleep);
+    io.value(w.enableContinuous);
+    io.value(w.jointLetGoSeparation);
+    io.value(w.substepCount);
+    io.value(w.hitEventThreshold);
+    io.value(w.previousInvDt);
+    using Bodies = std::remove_reference_t<decltype(w.bodies)>;
+    using Shapes = std::remove_reference_t<decltype(w.shapes)>;
+    using Joints = std::remove_reference_t<decltype(w.joints)>;
+    using Contacts = std::remove_reference_t<decltype(w.contacts)>;
+    using Mice = std::remove_reference_t<decltype(w.mouseJoints)>;
+    Bodies::describe(io, w.bodies, [](Io& o, auto& b) { describeBody(o, b); });
+    Shapes::describe(io, w.shapes, [](Io& o, auto& s) { describeShape(o, s); });
+    Joints::describe(io, w.joints, [](Io& o, auto& j) { describeJoint(o, j); });
+    Contacts::describe(io, w.contacts, [](Io& o, auto& c) { describeContact(o, c); });
+    Mice::describe(io, w.mouseJoints, [](Io& o, auto& m) { describeMouse(o, m); });
+
+    io.sequence(w.letGoEvents, [&](auto& e) {
+        snapshotHandle(io, e.joint, worldId);
+        io.enumValue(e.reason, kLetGoReasons);
+        io.value(e.separation);
+        io.value(e.reaction);
+    });
+    io.sequence(w.edgeEvents, [&](auto& e) {
+        snapshotHandle(io, e.body, worldId);
+        io.value(e.reached);
+    });
+    io.sequence(w.discarded, [&](auto& b) { snapshotHandle(io, b, worldId); });
+    io.sequence(w.hitEvents, [&](auto& e) {
+        snapshotHandle(io, e.shapeA, worldId);
+        snapshotHandle(io, e.shapeB, worldId);
+        io.value(e.point);
+        io.value(e.normal);
+        io.value(e.approachSpeed);
+    });
+    io.sequence(w.moveEvents, [&](auto& e) {
+        snapshotHandle(io, e.body, worldId);
+        io.value(e.transform);
+        io.value(e.fellAsleep);
+    });
+    auto& s = w.stats;
+    for (auto* value :
+         {&s.islandCount, &s.bodyCount, &s.jointCount, &s.translationClamps, &s.rotationClamps,
+          &s.positionIterations, &s.contactCount, &s.touchingCount, &s.sleepingBodyCount,
+          &s.letGoJointCount, &s.discardedBodyCount, &s.edgeBodyCount, &s.impactCount}) {
+        io.value(*value);
+    }
+}
+
+// --- the links between objects, checked before a decoded world is taken ---------------------
+
+// Walks a body's edge list (joints or contacts), checking each key names a live owner whose
+// edge on that side is this body and links back; marks each edge seen once.
+template <typename T>
+void checkEdgeList(SnapshotReader& in, std::int32_t body, std::int32_t head,
+                   const SlotPool<T>& pool, std::vector<std::uint8_t>& seen, const char* what) {
+    std::int32_t previous = -1;
+    for (std::int32_t key = head; key != -1;) {
+        const std::int32_t owner = edgeOwner(key);
+        const int side = edgeSide(key);
+        if (key < 0 || !pool.isAlive(owner))
+            in.corrupt(std::string("a ") + what + " list is broken");
+        const BodyEdge& edge = pool[owner].edges[side];
+        std::uint8_t& mark = seen[static_cast<std::size_t>(key)];
+        if (edge.body != body || edge.prevKey != previous || mark) {
+            in.corrupt(std::string("a ") + what + " list does not match its edges");
+        }
+        mark = 1;
+        previous = key;
+        key = edge.nextKey;
+    }
+}
+
+void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broadPhase) {
+    if (w.substepCount < 1 || w.substepCount > kMaxSubsteps) in.corrupt("the substep count");
+    const DynamicTree& tree = broadPhase.tree();
+    std::vector<std::uint8_t> shapeSeen(static_cast<std::size_t>(w.shapes.capacity()), 0);
+    std::vector<std::uint8_t> proxySeen(static_cast<std::size_t>(tree.idBound()), 0);
+    std::vector<std::uint8_t> jointEdges(2 * static_cast<std::size_t>(w.joints.capacity()), 0);
+    std::vector<std::uint8_t> contactEdges(2 * static_cast<std::size_t>(w.contacts.capacity()), 0);
+    std::vector<std::uint8_t> mouseSeen(static_cast<std::size_t>(w.mouseJoints.capacity()), 0);
+    w.bodies.forEach([&](std::int32_t b, const Body& body) {
+        std::int32_t previous = -1;
+        std::int32_t count = 0;
+        for (std::int32_t s = body.shapeList; s != -1; s = w.shapes[s].next) {
+            if (!w.shapes.isAlive(s) || shapeSeen[static_cast<std::size_t>(s)] ||
+                w.shapes[s].body != b || w.shapes[s].prev != previous) {
+                in.corrupt("a body's shape list is broken");
+            }
+            shapeSeen[static_cast<std::size_t>(s)] = 1;
+            previous = s;
+            ++count;
+        }
+        if (count != body.shapeCount) in.corrupt("a body's shape count is wrong");
+        checkEdgeList(in, b, body.jointList, w.joints, jointEdges, "joint");
+        checkEdgeList(in, b, body.contactList, w.contacts, contactEdges, "contact");
+        for (std::int32_t m = body.mouseList; m != -1; m = w.mouseJoints[m].next) {
+            if (!w.mouseJoints.isAlive(m) || mouseSeen[static_cast<std::size_t>(m)] ||
+                w.mouseJoints[m].body != b) {
+                in.corrupt("a body's mouse joint list is broken");
+            }
+            mouseSeen[static_cast<std::size_t>(m)] = 1;
+        }
+    });
+    int proxies = 0;
+    w.shapes.forEach([&](std::int32_t s, const Shape& shape) {
+        if (!shapeSeen[static_cast<std::size_t>(s)]) in.corrupt("a shape is on no body's list");
+        const std::int32_t proxy = shape.proxyId;
+        if (proxy < 0 || proxy >= tree.idBound() || !tree.isLeafInUse(proxy) ||
+            tree.userData(proxy) != s || proxySeen[static_cast<std::size_t>(proxy)]) {
+            in.corrupt("a shape's broad-phase proxy is wrong");
+        }
+        proxySeen[static_cast<std::size_t>(proxy)] = 1;
+        ++proxies;
+    });
+    if (proxies != tree.proxyCount()) in.corrupt("the broad phase has proxies of no shape");
+    auto bothEdgesSeen = [](const std::vector<std::uint8_t>& seen, std::int32_t index) {
+        return seen[2 * static_cast<std::size_t>(index)] &&
+               seen[2 * static_cast<std::size_t>(index) + 1];
+    };
+    std::vector<std::int32_t> gearsOn(static_cast<std::size_t>(w.joints.capacity()), 0);
+    w.joints.forEach([&](std::int32_t j, const Joint& joint) {
+        if (!bothEdgesSeen(jointEdges, j) || joint.bodyA() == joint.bodyB()) {
+            in.corrupt("a joint is not on its bodies' lists");
+        }
+        if (const auto* gear = std::get_if<GearJoint>(&joint.data)) {
+            for (const GearSide* side : {&gear->side1, &gear->side2}) {
+                const bool live = w.joints.isAlive(side->joint) && side->joint != j;
+                const JointType expected =
+                    side->prismatic ? JointType::Prismatic : JointType::Revolute;
+                if (!live || w.joints[side->joint].type() != expected ||
+                    !w.bodies.isAlive(side->base)) {
+                    in.corrupt("a gear joint names a joint it cannot be built on");
+                }
+                ++gearsOn[static_cast<std::size_t>(side->joint)];
+            }
+        }
+    });
+    w.joints.forEach([&](std::int32_t j, const Joint& joint) {
+        if (joint.gearCount != gearsOn[static_cast<std::size_t>(j)]) {
+            in.corrupt("a joint's gear count is wrong");
+        }
+    });
+    std::unordered_set<std::uint64_t> pairs;
+    w.contacts.forEach([&](std::int32_t c, const Contact& contact) {
+        if (!bothEdgesSeen(contactEdges, c)) in.corrupt("a contact is not on its bodies' lists");
+        const bool shapesLive = w.shapes.isAlive(contact.shapeA) &&
+                                w.shapes.isAlive(contact.shapeB) &&
+                                contact.shapeA != contact.shapeB;
+        if (!shapesLive || w.shapes[contact.shapeA].body != contact.bodyA() ||
+            w.shapes[contact.shapeB].body != contact.bodyB() ||
+            !pairs.insert(PairMap::key(contact.shapeA, contact.shapeB)).second) {
+            in.corrupt("a contact's shapes do not match its bodies");
+        }
+    });
+    w.mouseJoints.forEach([&](std::int32_t m, const MouseJoint&) {
+        if (!mouseSeen[static_cast<std::size_t>(m)]) in.corrupt("a mouse joint is on no list");
+    });
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> World::snapshot() const {
+    const Impl& w = *impl_;
+    SnapshotWriter payload;
+    describeWorld(payload, w, w.id);
+    w.contactManager.saveState(payload);
+    const std::vector<std::uint8_t>& body = payload.bytes();
+
+    SnapshotWriter out;
+    std::vector<std::uint8_t>& bytes = out.bytes();
+    bytes.reserve(kHeaderSize + body.size() + kChecksumSize);
+    bytes.insert(bytes.end(), std::begin(kMagic), std::end(kMagic));
+    out.value(kFormatVersion);
+    out.value(static_cast<std::uint64_t>(body.size()));
+    bytes.insert(bytes.end(), body.begin(), body.end());
+    out.value(snapshotChecksum(body.data(), body.size()));
+    return std::move(bytes);
+}
+
+void World::restore(const std::vector<std::uint8_t>& bytes) {
+    restore(bytes.data(), bytes.size());
+}
+
+void World::restore(const std::uint8_t* data, std::size_t size) {
+    const char* call = "World::restore";
+    Impl& w = *impl_;
+    w.requireNoQuery(call);
+    if (data == nullptr && size != 0) fail(call, "data is null");
+    if (size < sizeof kMagic || !std::equal(std::begin(kMagic), std::end(kMagic), data)) {
+        fail(call, "these bytes are not a pivot2d snapshot (they do not start with \"PIVOT2DS\")");
+    }
+    SnapshotReader header(call, data + sizeof kMagic, size - sizeof kMagic);
+    std::uint32_t version = 0;
+    std::uint64_t payloadSize = 0;
+    header.value(version);
+    if (version != kFormatVersion) {
+        fail(call, "the snapshot is of format version " + std::to_string(version) +
+                       "; this pivot2d reads version " + std::to_string(kFormatVersion));
+    }
+    header.value(payloadSize);
+    if (payloadSize > size - kHeaderSize || size - kHeaderSize - payloadSize < kChecksumSize) {
+        fail(call, "the snapshot is truncated: " + std::to_string(size) +
+                       " bytes, its header says " +
+                       std::to_string(kHeaderSize + payloadSize + kChecksumSize));
+    }
+    if (size - kHeaderSize - payloadSize > kChecksumSize) {
+        fail(call, "the snapshot has " +
+                       std::to_string(size - kHeaderSize - payloadSize - kChecksumSize) +
+                       " bytes after its end");
+    }
+    const std::uint8_t* payload = data + kHeaderSize;
+    const auto length = static_cast<std::size_t>(payloadSize);
+    SnapshotReader trailer(call, payload + length, kChecksumSize);
+    std::uint64_t checksum = 0;
+    trailer.value(checksum);
+    if (checksum != snapshotChecksum(payload, length)) {
+        fail(call, "the snapshot is corrupted: its checksum does not match its contents");
+    }
+
+    SnapshotReader in(call, payload, length);
+    WorldState state;
+    describeWorld(in, state, w.id);
+    ContactManager::State contactState = ContactManager::loadState(in, w.id);
+    if (!in.atEnd()) in.corrupt("bytes are left over after the last field");
+    checkLinks(in, state, contactState.broadPhase);
+
+    // Checked: take it. Nothing below can fail.
+    w.gravity = state.gravity;
+    w.defaultPositionSolver = state.defaultPositionSolver;
+    w.warmStarting = state.warmStarting;
+    w.contactCorrection = state.contactCorrection;
+    w.contactBiasFactor = state.contactBiasFactor;
+    w.contactHertz = state.contactHertz;
+    w.contactDampingRatio = state.contactDampingRatio;
+    w.contactPushSpeed = state.contactPushSpeed;
+    w.restitutionThreshold = state.restitutionThreshold;
+    w.enableSleep = state.enableSleep;
+    w.enableContinuous = state.enableContinuous;
+    w.jointLetGoSeparation = state.jointLetGoSeparation;
+    w.substepCount = state.substepCount;
+    w.hitEventThreshold = state.hitEventThreshold;
+    w.previousInvDt = state.previousInvDt;
+    w.bodies = std::move(state.bodies);
+    w.shapes = std::move(state.shapes);
+    w.joints = std::move(state.joints);
+    w.contacts = std::move(state.contacts);
+    w.mouseJoints = std::move(state.mouseJoints);
+    w.letGoEvents = std::move(state.letGoEvents);
+    w.edgeEvents = std::move(state.edgeEvents);
+    w.discarded = std::move(state.discarded);
+    w.hitEvents = std::move(state.hitEvents);
+    w.moveEvents = std::move(state.moveEvents);
+    w.stats = state.stats;
+    w.hitEventShapeCount = 0;
+    w.shapes.forEach([&](std::int32_t, const Shape& s) { w.hitEventShapeCount += s.hitEvents; });
+    w.contactManager.adoptState(std::move(contactState));
+}
+
+}  // namespace pivot
