@@ -4,6 +4,7 @@
 
 #include "pivot/body.h"
 #include "pivot/constants.h"
+#include "pivot/debug_draw.h"
 #include "pivot/error.h"
 #include "pivot/id.h"
 #include "pivot/joint.h"

@@ -17,6 +17,7 @@
 
 #include "pivot/body.h"
 #include "pivot/constants.h"
+#include "pivot/debug_draw.h"
 #include "pivot/id.h"
 #include "pivot/joint.h"
 #include "pivot/math.h"
@@ -660,6 +661,15 @@ public:
     /// Moves the target (m, world) and wakes the body.
     void setMouseTarget(MouseJointId id, Vec2 target);
     Vec2 mouseTarget(MouseJointId id) const;
+
+    // --- debug drawing (pivot/debug_draw.h) ----------------------------------------------------
+    /// Describes the world to `draw`: what `options` choose, shapes coloured by their body's
+    /// state (debug_colors), in slot order. The drawing calls may read the world; a call that
+    /// would change it throws pivot::Error from inside them.
+    void debugDraw(DebugDraw& draw, const DebugDrawOptions& options = {}) const;
+    /// Draws one body's shapes placed at `xf` rather than where the body is: at a pose between
+    /// two steps (render interpolation), or, with the identity, in the body's own frame.
+    void debugDrawBody(BodyId id, const Transform& xf, DebugDraw& draw) const;
 
     // --- snapshots (docs/snapshots.md) ---------------------------------------------------------
     /// The whole state of the world as bytes: settings, bodies, shapes, joints, mouse joints,

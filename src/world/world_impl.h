@@ -71,6 +71,8 @@ struct World::Impl {
     // Queries under way (World::castRay and the others): while one is, the broad phase's tree
     // is being walked, so calls that would change it are refused (requireNoQuery).
     mutable int queryDepth = 0;
+    // World::debugDraw under way: the game's drawing code may read the world, not change it.
+    mutable int drawDepth = 0;
     void requireNoQuery(const char* call) const;
     /// Refuses a change made from inside a step's callback (World::setPreSolveCallback,
     /// setCustomFilterCallback): every call that changes the world checks it.

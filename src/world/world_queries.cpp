@@ -53,6 +53,11 @@ void World::Impl::requireNoQuery(const char* call) const {
 }
 
 void World::Impl::requireNotInCallback(const char* call) const {
+    if (drawDepth > 0) {
+        fail(call,
+             "called from inside World::debugDraw's drawing calls (they may read the world; "
+             "change it after debugDraw returns)");
+    }
     if (contactManager.inCallback()) {
         fail(call,
              "called from inside a step's callback (pre-solve or custom filter: it may read "

@@ -1,5 +1,6 @@
-// Recording scene runs for the browser replay. Each run steps its own copy of the scene, so the
-// four solvers start from identical worlds and differ only by what their joints do.
+// Recording scene runs for the browser replay, drawn through World::debugDraw. Each run steps its
+// own copy of the scene, so the four solvers start from identical worlds and differ only by what
+// their joints do.
 #include "replay/recording.h"
 
 #include <cmath>
@@ -21,35 +22,71 @@ constexpr float kHz = 60.0f;
 constexpr int kVelocityIterations = kDefaultVelocityIterations;  // 8
 constexpr int kPositionIterations = kDefaultPositionIterations;  // 3
 
-std::vector<Outline> outlinesOf(const World& world, BodyId body) {
+// A body's outlines in its own frame, as World::debugDrawBody draws them at the identity.
+class OutlineCapture final : public DebugDraw {
+public:
     std::vector<Outline> outlines;
-    for (ShapeId shape : world.bodyShapes(body)) {
+
+    void drawPolygon(const Vec2*, int, DebugColor) override {}
+    void drawSolidPolygon(const Vec2* vertices, int count, float radius, DebugColor) override {
+        Polygon polygon;
+        polygon.count = count;
+        polygon.radius = radius;
+        for (int i = 0; i < count; ++i) polygon.vertices[static_cast<std::size_t>(i)] = vertices[i];
+        add(ShapeType::Polygon, scenes::polygonOutline(polygon));
+    }
+    void drawSolidCircle(Vec2 center, float radius, Vec2, DebugColor) override {
         Outline outline;
-        outline.type = world.shapeType(shape);
-        if (outline.type == ShapeType::Circle) {
-            Circle circle = world.shapeCircle(shape);
-            outline.center = circle.center;
-            outline.radius = circle.radius;
-        } else if (outline.type == ShapeType::Segment) {
-            const Segment segment = world.shapeSegment(shape);
-            outline.vertices = {segment.point1, segment.point2};  // drawn as a closed line
-        } else if (outline.type == ShapeType::ChainSegment) {
-            // Drawn as a segment: the replay shows where shapes are, not which side is solid.
-            const Segment segment = world.shapeChainSegment(shape).segment;
-            outline.type = ShapeType::Segment;
-            outline.vertices = {segment.point1, segment.point2};
-        } else if (outline.type == ShapeType::Capsule) {
-            outline.type = ShapeType::Polygon;  // drawn as its outline, as a rounded polygon
-            outline.vertices =
-                scenes::polygonOutline(scenes::capsuleAsPolygon(world.shapeCapsule(shape)));
-        } else {
-            Polygon polygon = world.shapePolygon(shape);
-            outline.vertices = scenes::polygonOutline(polygon);
-        }
+        outline.type = ShapeType::Circle;
+        outline.center = center;
+        outline.radius = radius;
         outlines.push_back(std::move(outline));
     }
-    return outlines;
+    void drawSolidCapsule(Vec2 center1, Vec2 center2, float radius, DebugColor) override {
+        // Drawn as its outline, as a rounded polygon.
+        add(ShapeType::Polygon,
+            scenes::polygonOutline(scenes::capsuleAsPolygon({center1, center2, radius})));
+    }
+    void drawSegment(Vec2 p1, Vec2 p2, DebugColor) override {
+        // A chain's segments too: the replay shows where shapes are, not which side is solid.
+        add(ShapeType::Segment, {p1, p2});
+    }
+    void drawPoint(Vec2, float, DebugColor) override {}
+
+private:
+    void add(ShapeType type, std::vector<Vec2> vertices) {
+        Outline outline;
+        outline.type = type;
+        outline.vertices = std::move(vertices);
+        outlines.push_back(std::move(outline));
+    }
+};
+
+std::vector<Outline> outlinesOf(const World& world, BodyId body) {
+    OutlineCapture capture;
+    world.debugDrawBody(body, Transform{}, capture);
+    return std::move(capture.outlines);
 }
+
+// The joints' anchors and separations, as World::debugDraw reports them.
+class JointCapture final : public DebugDraw {
+public:
+    std::vector<float> anchors;
+    std::vector<float> separations;
+    bool links = false;
+
+    void drawPolygon(const Vec2*, int, DebugColor) override {}
+    void drawSolidPolygon(const Vec2*, int, float, DebugColor) override {}
+    void drawSolidCircle(Vec2, float, Vec2, DebugColor) override {}
+    void drawSolidCapsule(Vec2, Vec2, float, DebugColor) override {}
+    void drawSegment(Vec2, Vec2, DebugColor) override {}
+    void drawPoint(Vec2, float, DebugColor) override {}
+    void drawJoint(JointId, JointType type, Vec2 a, Vec2 b, float separation, DebugColor) override {
+        anchors.insert(anchors.end(), {a.x, a.y, b.x, b.y});
+        separations.push_back(separation);
+        links = links || type != JointType::Revolute;
+    }
+};
 
 // Follows the bodies of one world from frame to frame. Bodies are matched by slot and then by
 // the whole id, whose generation keeps a reused slot from passing for the body it held before.
@@ -65,21 +102,18 @@ public:
             track.poses.push_back(t.p.y);
             track.poses.push_back(t.q.angle());
         }
-        std::vector<float> anchors;
-        std::vector<float> separations;
+        JointCapture joints;
+        DebugDrawOptions options;
+        options.shapes = false;
+        world.debugDraw(joints, options);
         float maxSeparation = 0.0f;
-        for (JointId joint : world.jointIds()) {
-            Vec2 a = world.jointAnchorA(joint);
-            Vec2 b = world.jointAnchorB(joint);
-            anchors.insert(anchors.end(), {a.x, a.y, b.x, b.y});
-            float separation = world.jointSeparation(joint);
-            separations.push_back(separation);
+        for (float separation : joints.separations) {
             if (!(separation <= maxSeparation)) maxSeparation = separation;  // NaN wins
-            run_.hasLinks = run_.hasLinks || world.jointType(joint) != JointType::Revolute;
         }
-        run_.jointAnchors.push_back(std::move(anchors));
+        run_.hasLinks = run_.hasLinks || joints.links;
+        run_.jointAnchors.push_back(std::move(joints.anchors));
         run_.maxSeparation.push_back(maxSeparation);
-        run_.jointSeparations.push_back(std::move(separations));
+        run_.jointSeparations.push_back(std::move(joints.separations));
     }
 
 private:

@@ -34,46 +34,70 @@ const RunRecord* RunMatrix::find(const std::string& scene, PositionSolver solver
     return nullptr;
 }
 
+namespace {
+
+// The figures draw what World::debugDraw describes: shapes in a first pass, joints in a second,
+// so that a pulley's rope segments are not taken for segment shapes.
+class FrameCapture final : public DebugDraw {
+public:
+    explicit FrameCapture(SnapshotFrame& frame) : frame_(frame) {}
+
+    void drawPolygon(const Vec2*, int, DebugColor) override {}
+    void drawSolidPolygon(const Vec2* vertices, int count, float radius,
+                          DebugColor color) override {
+        Polygon polygon;
+        polygon.count = count;
+        polygon.radius = radius;
+        for (int i = 0; i < count; ++i) polygon.vertices[static_cast<std::size_t>(i)] = vertices[i];
+        addOutline(scenes::polygonOutline(polygon), color);
+    }
+    void drawSolidCircle(Vec2 center, float radius, Vec2 axis, DebugColor color) override {
+        frame_.circles.push_back(
+            {center, radius, std::atan2(axis.y, axis.x), color == debug_colors::kStatic});
+    }
+    void drawSolidCapsule(Vec2 center1, Vec2 center2, float radius, DebugColor color) override {
+        addOutline(scenes::polygonOutline(scenes::capsuleAsPolygon({center1, center2, radius})),
+                   color);
+    }
+    void drawSegment(Vec2 p1, Vec2 p2, DebugColor color) override {
+        if (shapesPass) addOutline({p1, p2}, color);  // two points: drawn as a line
+    }
+    void drawPoint(Vec2, float, DebugColor) override {}
+    void drawJoint(JointId, JointType type, Vec2 anchorA, Vec2 anchorB, float separation,
+                   DebugColor) override {
+        frame_.joints.push_back({anchorA, anchorB});
+        frame_.separations.push_back(separation);
+        links_ = links_ || type != JointType::Revolute;
+    }
+    bool links() const { return links_; }
+    bool shapesPass = true;  // the joints' pass draws a pulley's rope with segments: not shapes
+
+private:
+    void addOutline(std::vector<Vec2> vertices, DebugColor color) {
+        SnapshotFrame::PolygonShape outline;
+        outline.isStatic = color == debug_colors::kStatic;
+        outline.vertices = std::move(vertices);
+        frame_.polygons.push_back(std::move(outline));
+    }
+
+    SnapshotFrame& frame_;
+    bool links_ = false;
+};
+
+}  // namespace
+
 SnapshotFrame captureFrame(const World& world, const std::string& caption) {
     SnapshotFrame frame;
     frame.caption = caption;
-    for (BodyId body : world.bodyIds()) {
-        Transform xf = world.bodyTransform(body);
-        bool isStatic = world.bodyType(body) == BodyType::Static;
-        for (ShapeId shape : world.bodyShapes(body)) {
-            if (world.shapeType(shape) == ShapeType::Circle) {
-                Circle c = world.shapeCircle(shape);
-                frame.circles.push_back(
-                    {transformPoint(xf, c.center), c.radius, world.bodyAngle(body), isStatic});
-            } else if (world.shapeType(shape) == ShapeType::Segment ||
-                       world.shapeType(shape) == ShapeType::ChainSegment) {
-                const Segment s = world.shapeType(shape) == ShapeType::Segment
-                                      ? world.shapeSegment(shape)
-                                      : world.shapeChainSegment(shape).segment;
-                SnapshotFrame::PolygonShape outline;  // two points: drawn as a line
-                outline.isStatic = isStatic;
-                outline.vertices = {transformPoint(xf, s.point1), transformPoint(xf, s.point2)};
-                frame.polygons.push_back(outline);
-            } else {
-                Polygon p = world.shapeType(shape) == ShapeType::Capsule
-                                ? scenes::capsuleAsPolygon(world.shapeCapsule(shape))
-                                : world.shapePolygon(shape);
-                SnapshotFrame::PolygonShape outline;
-                outline.isStatic = isStatic;
-                for (Vec2 v : scenes::polygonOutline(p)) {
-                    outline.vertices.push_back(transformPoint(xf, v));
-                }
-                frame.polygons.push_back(outline);
-            }
-        }
-    }
-    bool links = false;
-    for (JointId joint : world.jointIds()) {
-        frame.joints.push_back({world.jointAnchorA(joint), world.jointAnchorB(joint)});
-        frame.separations.push_back(world.jointSeparation(joint));
-        links = links || world.jointType(joint) != JointType::Revolute;
-    }
-    if (!links) frame.separations.clear();  // every separation is the anchors' gap
+    FrameCapture capture(frame);
+    DebugDrawOptions shapes;
+    shapes.joints = false;
+    world.debugDraw(capture, shapes);
+    DebugDrawOptions joints;
+    joints.shapes = false;
+    capture.shapesPass = false;
+    world.debugDraw(capture, joints);
+    if (!capture.links()) frame.separations.clear();  // every separation is the anchors' gap
     return frame;
 }
 

@@ -2299,7 +2299,69 @@ private:
     // Ray casts, box and point queries: arguments checked, every answer finite and where it
     // should be, callbacks answering anything (ignore, clip, stop, NaN) and now and then trying
     // to change the world, which must be refused without harm.
+    // Debug drawing with every option: the counts must match the world, and every number drawn
+    // must be finite when the world is.
+    struct CountingDraw final : DebugDraw {
+        int shapes = 0, joints = 0, boxes = 0;
+        bool finite = true;
+        void note(Vec2 p) { finite = finite && isFinite(p); }
+        void drawPolygon(const Vec2* v, int n, DebugColor) override {
+            ++boxes;
+            for (int i = 0; i < n; ++i) note(v[i]);
+        }
+        void drawSolidPolygon(const Vec2* v, int n, float, DebugColor) override {
+            ++shapes;
+            for (int i = 0; i < n; ++i) note(v[i]);
+        }
+        void drawSolidCircle(Vec2 c, float, Vec2 axis, DebugColor) override {
+            ++shapes;
+            note(c);
+            note(axis);
+        }
+        void drawSolidCapsule(Vec2 a, Vec2 b, float, DebugColor) override {
+            ++shapes;
+            note(a);
+            note(b);
+        }
+        void drawSegment(Vec2 a, Vec2 b, DebugColor) override {
+            note(a);
+            note(b);
+        }
+        void drawPoint(Vec2 p, float, DebugColor) override { note(p); }
+        void drawJoint(JointId, JointType, Vec2 a, Vec2 b, float, DebugColor) override {
+            ++joints;
+            note(a);
+            note(b);
+        }
+    };
+    void debugDrawCheck() {
+        CountingDraw draw;
+        DebugDrawOptions all;
+        all.aabbs = all.contactPoints = all.contactNormals = all.centersOfMass = true;
+        world_->debugDraw(draw, all);
+        int segments = 0;
+        for (BodyId b : world_->bodyIds()) {
+            for (ShapeId s : world_->bodyShapes(b)) {
+                const ShapeType t = world_->shapeType(s);
+                segments += t == ShapeType::Segment || t == ShapeType::ChainSegment;
+            }
+        }
+        if (draw.shapes + segments != world_->shapeCount() || draw.boxes != world_->shapeCount() ||
+            draw.joints != world_->jointCount()) {
+            failure("debugDraw drew " + std::to_string(draw.shapes) + " shapes, " +
+                    std::to_string(draw.boxes) + " boxes and " + std::to_string(draw.joints) +
+                    " joints of " + std::to_string(world_->shapeCount()) + " shapes and " +
+                    std::to_string(world_->jointCount()) + " joints");
+        }
+        if (!draw.finite && options_.requireFinite) failure("debugDraw drew a non-finite point");
+    }
+
     void worldQueries() {
+        if (random_.chance(0.1f)) {
+            trace("debugDraw");
+            debugDrawCheck();
+            return;
+        }
         World& w = *world_;
         Arg<Vec2> origin = values_->coordinate(20.0f);
         Arg<Vec2> translation = values_->magnitude2(30.0f);
