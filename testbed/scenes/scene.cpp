@@ -106,6 +106,10 @@ const std::vector<SceneInfo>& allScenes() {
          buildRamps},
         {"bullets", "a pyramid shot at by ten bullets at 120 m/s (continuous collision)",
          buildBullets},
+        {"platformer",
+         "a capsule character runs over chain terrain and one-way platforms, picks up a coin; "
+         "a crate breaks the bridge behind it",
+         buildPlatformer},
     };
     return scenes;
 }

@@ -99,6 +99,7 @@ void buildStretchedChain(Scene& scene, const SceneOptions& options);
 void buildBallChain(Scene& scene, const SceneOptions& options);
 void buildRamps(Scene& scene, const SceneOptions& options);
 void buildBullets(Scene& scene, const SceneOptions& options);
+void buildPlatformer(Scene& scene, const SceneOptions& options);
 void buildHeavyStack(Scene& scene, const SceneOptions& options);
 void buildOverlapRecovery(Scene& scene, const SceneOptions& options);
 /// Not in the table: the gear joint's Box2D reference case (gear_train.cpp).

@@ -92,6 +92,7 @@ const RecordedHashes kRecorded[] = {
     {"far_chain",         {0xa0879e71a5500d68ull, 0xbc48b2fc3db4596full, 0x8a427675fff14b8aull, 0xf0c68d276757f908ull, 0x21009b1aebb5cd8bull, 0x1ad3d1605e7eb0c0ull}},
     {"ramps",             {0x77696e4ee1700d4eull, 0xdf77d5d2e2dc6664ull, 0x2a83fb4909f74ec5ull, 0x99a274168e8bc548ull, 0xc19056b45dbb5aeaull, 0xef35fb1ed2cbd672ull}},
     {"bullets",           {0xd94cbeec7495673bull, 0x4df689cec678386eull, 0x21ebd19edd5a3f85ull, 0x37042a7da98d3728ull, 0x492553a3b34a8a97ull, 0x7138e9e07828d58aull}},
+    {"platformer",        {0x35a9572da6df5cb3ull, 0x84845b5378399e11ull, 0xa5c77d6117fa1f8full, 0xb01554219222b5ccull, 0xe002232ddfbffc99ull, 0x8f0657795fbf43e3ull}},
 };
 // clang-format on
 
