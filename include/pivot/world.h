@@ -499,6 +499,17 @@ public:
     BodyId jointBodyB(JointId id) const;
     /// m, the joint's anchor on body A in world coordinates (a motor joint's: body A's origin).
     Vec2 jointAnchorA(JointId id) const;
+    /// m, the anchors in their bodies' frames, as the def gave them (or as a world anchor made
+    /// them); a motor joint's are the origins.
+    Vec2 jointLocalAnchorA(JointId id) const;
+    Vec2 jointLocalAnchorB(JointId id) const;
+    /// rad, angleB - angleA when the joint angle is zero (revolute, prismatic, weld; 0 for the
+    /// others).
+    float jointReferenceAngle(JointId id) const;
+    /// The def's collideConnected. Changing it re-filters the contacts between the two bodies
+    /// at the next step (made or ended, with their events) and wakes them.
+    bool jointCollideConnected(JointId id) const;
+    void setJointCollideConnected(JointId id, bool collide);
     Vec2 jointAnchorB(JointId id) const;  ///< m, the anchor on body B (a motor joint's: B's origin)
     /// m, how far the joint has come apart: for a revolute joint |anchorB - anchorA|, for a
     /// distance joint how far its length is from its rest length (a rod) or outside its limit,
@@ -574,6 +585,9 @@ public:
     Vec2 pulleyJointGroundAnchorA(JointId id) const;
     Vec2 pulleyJointGroundAnchorB(JointId id) const;
     float pulleyJointRatio(JointId id) const;
+    /// m, the lengths the rope was cut to (PulleyJointDef::lengthA, lengthB).
+    float pulleyJointRestLengthA(JointId id) const;
+    float pulleyJointRestLengthB(JointId id) const;
     /// m, the current length of side A (ground anchor A to anchor A), and of side B.
     float pulleyJointLengthA(JointId id) const;
     float pulleyJointLengthB(JointId id) const;
@@ -598,6 +612,8 @@ public:
 
     // Wheel joints (these calls refuse other types; jointMotor and setJointMotor drive a
     // wheel). Each setter wakes the joint's bodies; changing the limit restarts its impulses.
+    /// The axis in world coordinates (unit), turning with body A.
+    Vec2 wheelJointAxis(JointId id) const;
     JointSpring wheelJointSpring(JointId id) const;
     void setWheelJointSpring(JointId id, const JointSpring& spring);
     TranslationLimit wheelJointLimit(JointId id) const;
@@ -661,6 +677,14 @@ public:
     /// Moves the target (m, world) and wakes the body.
     void setMouseTarget(MouseJointId id, Vec2 target);
     Vec2 mouseTarget(MouseJointId id) const;
+    BodyId mouseJointBody(MouseJointId id) const;
+    /// MouseJointDef::maxForce (N, > 0), hertz (> 0) and dampingRatio (>= 0), each at most
+    /// kMaxMagnitude; the setters wake the body.
+    float mouseJointMaxForce(MouseJointId id) const;
+    void setMouseJointMaxForce(MouseJointId id, float force);
+    float mouseJointHertz(MouseJointId id) const;
+    float mouseJointDampingRatio(MouseJointId id) const;
+    void setMouseJointSpring(MouseJointId id, float hertz, float dampingRatio);
 
     // --- debug drawing (pivot/debug_draw.h) ----------------------------------------------------
     /// Describes the world to `draw`: what `options` choose, shapes coloured by their body's

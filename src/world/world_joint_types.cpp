@@ -265,6 +265,27 @@ float World::jointTranslationSpeed(JointId id) const {
     return dot(d, cross(a.angularVelocity, axis)) + dot(axis, vB - vA);
 }
 
+Vec2 World::wheelJointAxis(JointId id) const {
+    const Joint& j =
+        impl_->joints[impl_->jointIndexOfType("World::wheelJointAxis", id, JointType::Wheel)];
+    return rotate(impl_->bodies[j.bodyA()].xf.q, std::get<WheelJoint>(j.data).localAxisA);
+}
+
+float World::pulleyJointRestLengthA(JointId id) const {
+    return std::get<PulleyJoint>(impl_
+                                     ->joints[impl_->jointIndexOfType(
+                                         "World::pulleyJointRestLengthA", id, JointType::Pulley)]
+                                     .data)
+        .lengthA;
+}
+float World::pulleyJointRestLengthB(JointId id) const {
+    return std::get<PulleyJoint>(impl_
+                                     ->joints[impl_->jointIndexOfType(
+                                         "World::pulleyJointRestLengthB", id, JointType::Pulley)]
+                                     .data)
+        .lengthB;
+}
+
 Vec2 World::prismaticJointAxis(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndexOfType("World::prismaticJointAxis", id,
                                                            JointType::Prismatic)];

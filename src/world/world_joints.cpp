@@ -169,6 +169,30 @@ std::vector<JointLetGoEvent> World::jointLetGoEvents() const {
     return impl_->letGoEvents;
 }
 
+Vec2 World::jointLocalAnchorA(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointLocalAnchorA", id)].localAnchorA;
+}
+Vec2 World::jointLocalAnchorB(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointLocalAnchorB", id)].localAnchorB;
+}
+float World::jointReferenceAngle(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointReferenceAngle", id)].referenceAngle;
+}
+bool World::jointCollideConnected(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointCollideConnected", id)].collideConnected;
+}
+void World::setJointCollideConnected(JointId id, bool collide) {
+    const char* call = "World::setJointCollideConnected";
+    Impl& w = *impl_;
+    w.requireNotInCallback(call);
+    Joint& j = w.joints[w.jointIndex(call, id)];
+    if (j.collideConnected == collide) return;
+    j.collideConnected = collide;
+    w.contactManager.refilterBodyPair(j.bodyA(), j.bodyB());
+    wakeUp(w.bodies[j.bodyA()]);
+    wakeUp(w.bodies[j.bodyB()]);
+}
+
 float World::jointBreakForce(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointBreakForce", id)].breakForce;
 }

@@ -63,4 +63,37 @@ Vec2 World::mouseTarget(MouseJointId id) const {
     return impl_->mouseJoints[impl_->mouseJointIndex("World::mouseTarget", id)].target;
 }
 
+BodyId World::mouseJointBody(MouseJointId id) const {
+    return impl_->bodyId(
+        impl_->mouseJoints[impl_->mouseJointIndex("World::mouseJointBody", id)].body);
+}
+float World::mouseJointMaxForce(MouseJointId id) const {
+    return impl_->mouseJoints[impl_->mouseJointIndex("World::mouseJointMaxForce", id)].maxForce;
+}
+void World::setMouseJointMaxForce(MouseJointId id, float force) {
+    const char* call = "World::setMouseJointMaxForce";
+    impl_->requireNotInCallback(call);
+    MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
+    requirePositive(call, "force", force);
+    joint.maxForce = force;
+    wakeUp(impl_->bodies[joint.body]);
+}
+float World::mouseJointHertz(MouseJointId id) const {
+    return impl_->mouseJoints[impl_->mouseJointIndex("World::mouseJointHertz", id)].hertz;
+}
+float World::mouseJointDampingRatio(MouseJointId id) const {
+    return impl_->mouseJoints[impl_->mouseJointIndex("World::mouseJointDampingRatio", id)]
+        .dampingRatio;
+}
+void World::setMouseJointSpring(MouseJointId id, float hertz, float dampingRatio) {
+    const char* call = "World::setMouseJointSpring";
+    impl_->requireNotInCallback(call);
+    MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
+    requirePositive(call, "hertz", hertz);
+    requireNonNegative(call, "dampingRatio", dampingRatio);
+    joint.hertz = hertz;
+    joint.dampingRatio = dampingRatio;
+    wakeUp(impl_->bodies[joint.body]);
+}
+
 }  // namespace pivot

@@ -161,3 +161,65 @@ TEST(Properties, FrictionChangesReachTheContactsAtOnce) {
     expectRefused(world, [&] { world.setShapeRestitution(shape, 1.5f); });
     expectRefused(world, [&] { world.setShapeRestitution(shape, kNan); });
 }
+
+// Joints: every def field can be read back; collideConnected can be changed, and the change
+// makes or ends the contacts between the two bodies at the next step.
+TEST(Properties, JointDefFieldsReadBackAndCollideConnectedChanges) {
+    World world;
+    world.setGravity({0.0f, 0.0f});
+    const BodyId a = box(world, {0.0f, 0.0f}, 0.3f);
+    const BodyId b = box(world, {0.5f, 0.0f}, 0.0f);  // overlapping a
+    RevoluteJointDef pin = RevoluteJointDef::atWorldAnchor(a, b, {0.25f, 0.0f});
+    const JointId joint = world.createJoint(pin);
+    EXPECT_EQ(world.jointLocalAnchorA(joint),
+              inverseTransformPoint(world.bodyTransform(a), {0.25f, 0.0f}));
+    EXPECT_EQ(world.jointLocalAnchorB(joint), (Vec2{-0.25f, 0.0f}));
+    EXPECT_FLOAT_EQ(world.jointReferenceAngle(joint), -0.3f);
+    EXPECT_FALSE(world.jointCollideConnected(joint));
+    steps(world, 2);
+    EXPECT_TRUE(world.contacts().empty());
+    world.setJointCollideConnected(joint, true);
+    EXPECT_TRUE(world.jointCollideConnected(joint));
+    steps(world, 1);
+    EXPECT_EQ(world.contacts().size(), 1u);
+    world.setJointCollideConnected(joint, false);
+    steps(world, 1);
+    EXPECT_TRUE(world.contacts().empty());
+    EXPECT_EQ(world.contactEndEvents().size(), 1u);
+
+    WheelJointDef wheel;
+    wheel.bodyA = a;
+    wheel.bodyB = box(world, {3.0f, 0.0f}, 0.0f);
+    wheel.worldAxis = Vec2{0.0f, 1.0f};
+    wheel.worldAnchor = Vec2{3.0f, 0.0f};
+    const JointId wheelJoint = world.createJoint(wheel);
+    const Vec2 axis = world.wheelJointAxis(wheelJoint);
+    EXPECT_NEAR(axis.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(axis.y, 1.0f, 1e-6f);
+    EXPECT_THROW(world.wheelJointAxis(joint), Error);
+
+    PulleyJointDef pulley;
+    pulley.bodyA = box(world, {-2.0f, 5.0f}, 0.0f);
+    pulley.bodyB = box(world, {2.0f, 4.0f}, 0.0f);
+    pulley.groundAnchorA = {-2.0f, 10.0f};
+    pulley.groundAnchorB = {2.0f, 10.0f};
+    const JointId pulleyJoint = world.createJoint(pulley);
+    EXPECT_FLOAT_EQ(world.pulleyJointRestLengthA(pulleyJoint), 5.0f);
+    EXPECT_FLOAT_EQ(world.pulleyJointRestLengthB(pulleyJoint), 6.0f);
+    EXPECT_THROW(world.pulleyJointRestLengthA(joint), Error);
+
+    MouseJointDef drag;
+    drag.body = b;
+    drag.target = {0.5f, 0.0f};
+    const MouseJointId mouse = world.createMouseJoint(drag);
+    EXPECT_EQ(world.mouseJointBody(mouse), b);
+    EXPECT_EQ(world.mouseJointMaxForce(mouse), drag.maxForce);
+    world.setMouseJointMaxForce(mouse, 50.0f);
+    EXPECT_EQ(world.mouseJointMaxForce(mouse), 50.0f);
+    world.setMouseJointSpring(mouse, 2.0f, 1.0f);
+    EXPECT_EQ(world.mouseJointHertz(mouse), 2.0f);
+    EXPECT_EQ(world.mouseJointDampingRatio(mouse), 1.0f);
+    expectRefused(world, [&] { world.setMouseJointMaxForce(mouse, 0.0f); });
+    expectRefused(world, [&] { world.setMouseJointSpring(mouse, -1.0f, 0.5f); });
+    expectRefused(world, [&] { world.setMouseJointSpring(mouse, 1.0f, kNan); });
+}

@@ -760,6 +760,11 @@ TEST(Validation, EveryCallChecksItsIds) {
         [&] { f.world.jointUserData(joint); },
         [&] { f.world.setJointUserData(joint, 1); },
         [&] { f.world.jointBreakForce(joint); },
+        [&] { f.world.jointLocalAnchorA(joint); },
+        [&] { f.world.jointLocalAnchorB(joint); },
+        [&] { f.world.jointReferenceAngle(joint); },
+        [&] { f.world.jointCollideConnected(joint); },
+        [&] { f.world.setJointCollideConnected(joint, true); },
         [&] { f.world.setJointBreakForce(joint, 1.0f); },
         [&] { f.world.jointBreakTorque(joint); },
         [&] { f.world.setJointBreakTorque(joint, 1.0f); },
@@ -771,6 +776,12 @@ TEST(Validation, EveryCallChecksItsIds) {
             f.world.setMouseTarget(mouse, {0, 0});
         },
         [&] { f.world.mouseTarget(mouse); },
+        [&] { f.world.mouseJointBody(mouse); },
+        [&] { f.world.mouseJointMaxForce(mouse); },
+        [&] { f.world.setMouseJointMaxForce(mouse, 1.0f); },
+        [&] { f.world.mouseJointHertz(mouse); },
+        [&] { f.world.mouseJointDampingRatio(mouse); },
+        [&] { f.world.setMouseJointSpring(mouse, 1.0f, 1.0f); },
     };
     for (const auto& call : mouseCalls) expectRejected(f.world, call, {"mouse joint", "stale"});
 }

@@ -1708,6 +1708,14 @@ private:
     // Break thresholds: mostly around the forces a scene sees, so joints do break.
     void setJointBreak() {
         Arg<JointId> joint = pickJoint();
+        if (random_.chance(0.25f)) {
+            const bool collide = random_.chance(0.5f);
+            trace("setJointCollideConnected " + idText(joint.value) + " " +
+                  std::to_string(collide));
+            attempt("World::setJointCollideConnected", verdict(joint.bad),
+                    [&] { journal_.setJointCollideConnected(joint.value, collide); });
+            return;
+        }
         Arg<float> value = values_->nonNegative(50.0f);
         const bool force = random_.chance(0.5f);
         trace((force ? "setJointBreakForce " : "setJointBreakTorque ") + idText(joint.value) + " " +

@@ -521,6 +521,10 @@ void Journal::setJointBreakTorque(JointId id, float torque) {
     world_->setJointBreakTorque(id, torque);
     lines_.push_back("breakTorque " + nameOf('j', id) + " " + num(torque));
 }
+void Journal::setJointCollideConnected(JointId id, bool collide) {
+    world_->setJointCollideConnected(id, collide);
+    lines_.push_back("collideConnected " + nameOf('j', id) + " " + num(collide));
+}
 void Journal::setCallbacks(bool preSolve, bool customFilter) {
     installFuzzCallbacks(*world_, preSolve, customFilter);
     lines_.push_back("callbacks " + num(preSolve) + " " + num(customFilter));
@@ -1255,6 +1259,10 @@ ReplayResult replay(std::istream& in) {
             } else {
                 call = [&w, j, v] { w.setJointBreakTorque(j, v); };
             }
+        } else if (command == "collideConnected") {
+            JointId j = joint(f.word());
+            const bool v = f.b();
+            call = [&w, j, v] { w.setJointCollideConnected(j, v); };
         } else if (command == "callbacks") {
             const bool preSolve = f.b();
             const bool filter = f.b();

@@ -110,6 +110,7 @@ public:
     void setShapePreSolve(ShapeId id, bool enabled);
     void setJointBreakForce(JointId id, float force);
     void setJointBreakTorque(JointId id, float torque);
+    void setJointCollideConnected(JointId id, bool collide);
     /// Installs (or removes) the fuzz's fixed pre-solve and custom-filter callbacks
     /// (installFuzzCallbacks), so a journal replays them.
     void setCallbacks(bool preSolve, bool customFilter);
