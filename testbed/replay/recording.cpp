@@ -29,11 +29,7 @@ public:
 
     void drawPolygon(const Vec2*, int, DebugColor) override {}
     void drawSolidPolygon(const Vec2* vertices, int count, float radius, DebugColor) override {
-        Polygon polygon;
-        polygon.count = count;
-        polygon.radius = radius;
-        for (int i = 0; i < count; ++i) polygon.vertices[static_cast<std::size_t>(i)] = vertices[i];
-        add(ShapeType::Polygon, scenes::polygonOutline(polygon));
+        add(ShapeType::Polygon, scenes::polygonOutline(vertices, count, radius));
     }
     void drawSolidCircle(Vec2 center, float radius, Vec2, DebugColor) override {
         Outline outline;

@@ -45,11 +45,7 @@ public:
     void drawPolygon(const Vec2*, int, DebugColor) override {}
     void drawSolidPolygon(const Vec2* vertices, int count, float radius,
                           DebugColor color) override {
-        Polygon polygon;
-        polygon.count = count;
-        polygon.radius = radius;
-        for (int i = 0; i < count; ++i) polygon.vertices[static_cast<std::size_t>(i)] = vertices[i];
-        addOutline(scenes::polygonOutline(polygon), color);
+        addOutline(scenes::polygonOutline(vertices, count, radius), color);
     }
     void drawSolidCircle(Vec2 center, float radius, Vec2 axis, DebugColor color) override {
         frame_.circles.push_back(

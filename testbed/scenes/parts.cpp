@@ -98,6 +98,14 @@ Polygon capsuleAsPolygon(const Capsule& capsule) {
     return polygon;
 }
 
+std::vector<Vec2> polygonOutline(const Vec2* vertices, int count, float radius) {
+    Polygon polygon;
+    polygon.count = count;
+    polygon.radius = radius;
+    for (int i = 0; i < count; ++i) polygon.vertices[static_cast<std::size_t>(i)] = vertices[i];
+    return polygonOutline(polygon);
+}
+
 std::vector<Vec2> polygonOutline(const Polygon& polygon) {
     const int n = polygon.count;
     if (polygon.radius == 0.0f) return {polygon.vertices.begin(), polygon.vertices.begin() + n};

@@ -56,6 +56,8 @@ void layPyramid(const PyramidSpec& spec, AddBox&& addBox) {
 /// A polygon's outline in its body's frame, for drawing; a rounded polygon's with each corner's
 /// arc drawn as a few chords.
 std::vector<Vec2> polygonOutline(const Polygon& polygon);
+/// The outline of a polygon as DebugDraw::drawSolidPolygon describes it (vertices, rounding).
+std::vector<Vec2> polygonOutline(const Vec2* vertices, int count, float radius);
 /// A capsule as a rounded polygon of two vertices, for polygonOutline (drawing only: World
 /// takes no two-vertex polygon).
 Polygon capsuleAsPolygon(const Capsule& capsule);
