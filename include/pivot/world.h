@@ -461,8 +461,9 @@ public:
     /// is destroyed or the sensor flag is switched off.
     std::vector<SensorEvent> sensorBeginEvents() const;
     std::vector<SensorEvent> sensorEndEvents() const;
-    /// The hits of the last step (pivot::ContactHitEvent), at most one per contact, in island
-    /// order (the same for every worker count).
+    /// The hits of the last step (pivot::ContactHitEvent), at most one per contact: those of the
+    /// discrete solve in island order, then continuous collision's impacts in the order they
+    /// were solved (the same for every worker count).
     std::vector<ContactHitEvent> contactHitEvents() const;
     /// Every dynamic and kinematic body the last step simulated (awake, in an island), with its
     /// transform after the step, in island order (the same for every worker count). A body
