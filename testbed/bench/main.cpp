@@ -1,25 +1,31 @@
-// pivot-bench: the same scenes in pivot2d and in Box2D 2.4.1, in one process, on one machine, in
-// one run. For each scene it times whole runs (a warm-up run, then repeats, alternating the
-// engines so drift affects both alike), takes the median milliseconds per step of each engine
-// and prints the ratio box2d / pivot ("speedup"). Then it reports heap bytes per body, joint and
-// contact, counted by a replaced global operator new.
+// pivot-bench: the same scenes in pivot2d, Box2D 2.4.1 and (when CMake was given its source)
+// Box2D v3, in one process, on one machine, in one run. Each scene is written once
+// (suite/suite.h) and built through each engine's Builder. For each scene it times whole runs as
+// Box2D v3's benchmark app does (the scene's first step, which may pay for a first pair search,
+// is left out), on one thread and on --workers threads, every configuration once per round so
+// that drift touches all alike, and prints the median milliseconds per step with ratios against
+// Box2D 2.4.1 and Box2D v3. Then the ray cast and box query rows, and heap bytes per body,
+// shape, joint and contact in each engine.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <iostream>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "bench/bench_scenes.h"
+#include "bench/engines/engine.h"
+#include "bench/memory.h"
 #include "bench/query_bench.h"
-#include "heap/counting_new.h"
+#include "bench/suite/suite.h"
 
 namespace {
 
 using namespace pivot;
+using namespace pivot::bench;
 using Clock = std::chrono::steady_clock;
 
 struct Options {
@@ -28,167 +34,180 @@ struct Options {
     int repeats = 3;
     int workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     bool workersGiven = false;  // --workers on the command line (--profile then uses it)
-    std::string only;
-    std::string profileEngine;  // --profile: step one engine, untimed, for a profiler
+    bool continuous = true;
+    std::string only;                  // --scene
+    std::vector<std::string> engines;  // --engines; empty: all
+    std::string profileEngine;         // --profile: step one engine, untimed, for a profiler
     int profileSteps = 0;
 };
 
-std::string setupNames() {
-    std::string names;
-    for (const bench::PivotSetup& setup : bench::pivotSetups()) {
-        names += (names.empty() ? "" : ", ") + std::string(setup.name);
+std::vector<std::string> splitCommas(const std::string& text) {
+    std::vector<std::string> parts;
+    std::stringstream stream(text);
+    for (std::string part; std::getline(stream, part, ',');) {
+        if (!part.empty()) parts.push_back(part);
     }
+    return parts;
+}
+
+std::string engineNames(const std::vector<EngineKind>& kinds) {
+    std::string names;
+    for (const EngineKind& kind : kinds) names += (names.empty() ? "" : ", ") + kind.name;
     return names;
+}
+
+// A run of a scene in one engine: built, then stepped; the script runs before each step.
+class Run {
+public:
+    Run(const SuiteScene& scene, const EngineKind& kind, int threads, bool continuous) {
+        WorldSettings settings;
+        settings.threads = threads;
+        settings.sleep = scene.sleep;
+        settings.continuous = continuous;
+        engine_ = kind.make(settings);
+        script_ = scene.build(*engine_);
+    }
+
+    void step(int i) {
+        if (script_) script_(*engine_, i);
+        engine_->step();
+    }
+
+private:
+    std::unique_ptr<Engine> engine_;
+    Script script_;
+};
+
+// ms per step over steps 1 .. steps - 1, as Box2D v3's app times them: the world is built and
+// its first step taken outside the timed region.
+double timeRun(const SuiteScene& scene, const EngineKind& kind, int threads, int steps,
+               bool continuous) {
+    Run run(scene, kind, threads, continuous);
+    run.step(0);
+    const Clock::time_point start = Clock::now();
+    for (int i = 1; i < steps; ++i) run.step(i);
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count() /
+           std::max(1, steps - 1);
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+struct Row {
+    std::string scene;
+    std::string engine;
+    int threads = 1;
+    double ms = 0.0;                  // median ms per step
+    std::optional<double> vsBox2d;    // Box2D 2.4.1's ms (one thread) / ms
+    std::optional<double> vsBox2dV3;  // Box2D v3's ms on as many threads / ms
+};
+
+struct Configuration {
+    const EngineKind* kind;
+    int threads;
+    std::vector<double> times;
+};
+
+std::vector<Row> runScene(const SuiteScene& scene, const std::vector<EngineKind>& kinds,
+                          const Options& options) {
+    const int steps = options.quick ? std::max(10, scene.steps / 20) : scene.steps;
+    std::vector<int> threadCounts{1};
+    if (options.workers > 1) threadCounts.push_back(options.workers);
+    std::vector<Configuration> configurations;
+    for (int threads : threadCounts) {
+        for (const EngineKind& kind : kinds) {
+            if (threads <= kind.maxThreads) configurations.push_back({&kind, threads, {}});
+        }
+    }
+    if (!options.quick && !kinds.empty()) {  // warm-up: caches, page faults, clock speed
+        timeRun(scene, kinds.front(), threadCounts.back(), steps, options.continuous);
+    }
+    for (int r = 0; r < options.repeats; ++r) {
+        for (Configuration& c : configurations) {
+            c.times.push_back(timeRun(scene, *c.kind, c.threads, steps, options.continuous));
+        }
+    }
+    std::vector<Row> rows;
+    for (const Configuration& c : configurations) {
+        rows.push_back({scene.name, c.kind->name, c.threads, median(c.times), {}, {}});
+    }
+    auto find = [&](const std::string& engine, int threads) -> std::optional<double> {
+        for (const Row& row : rows) {
+            if (row.engine == engine && row.threads == threads) return row.ms;
+        }
+        return std::nullopt;
+    };
+    for (Row& row : rows) {
+        if (auto box2d = find("box2d_2.4.1", 1)) row.vsBox2d = *box2d / row.ms;
+        if (auto v3 = find("box2d_v3", row.threads)) row.vsBox2dV3 = *v3 / row.ms;
+    }
+    return rows;
+}
+
+std::string ratio(const std::optional<double>& value, const char* format) {
+    if (!value) return "";
+    char text[32];
+    std::snprintf(text, sizeof text, format, *value);
+    return text;
 }
 
 // --profile ENGINE STEPS: build the --scene in one engine and step it STEPS times on one thread
 // (or --workers threads, if given), nothing else, so that a profiler (perf, callgrind) sees only
-// the engine. Instructions per step are the difference of two such runs over their difference in
-// steps.
-int profileRun(const Options& options) {
-    const int workers = options.workersGiven ? options.workers : 1;
-    for (const bench::BenchScene& scene : bench::benchScenes()) {
+// the engine.
+int profileRun(const Options& options, const std::vector<EngineKind>& kinds) {
+    const int threads = options.workersGiven ? options.workers : 1;
+    for (const SuiteScene& scene : suiteScenes()) {
         if (scene.name != options.only) continue;
-        bench::Stepper step;
-        if (options.profileEngine == "box2d") step = scene.buildBox2d();
-        for (const bench::PivotSetup& setup : bench::pivotSetups()) {
-            if (options.profileEngine == setup.name) step = scene.buildPivot(setup, workers);
+        for (const EngineKind& kind : kinds) {
+            if (kind.name != options.profileEngine) continue;
+            Run run(scene, kind, std::min(threads, kind.maxThreads), options.continuous);
+            for (int i = 0; i < options.profileSteps; ++i) run.step(i);
+            return 0;
         }
-        if (!step) {
-            std::cerr << "pivot-bench: --profile takes " << setupNames() << " or box2d (got '"
-                      << options.profileEngine << "')\n";
-            return 2;
-        }
-        for (int i = 0; i < options.profileSteps; ++i) step(i);
-        return 0;
+        std::cerr << "pivot-bench: --profile takes " << engineNames(kinds) << " (got '"
+                  << options.profileEngine << "')\n";
+        return 2;
     }
     std::cerr << "pivot-bench: --profile needs --scene NAME (see --list)\n";
     return 2;
 }
 
-double millisecondsPerStep(const bench::Stepper& step, int steps) {
-    Clock::time_point start = Clock::now();
-    for (int i = 0; i < steps; ++i) step(i);
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count() / steps;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-// One timed configuration of a scene: pivot2d set up one way on `threads` threads.
-struct Row {
-    std::string scene;
-    std::string engine;
-    int threads = 1;
-    double pivot = 0.0;  // median ms per step
-    double box2d = 0.0;  // Box2D 2.4.1's, single-threaded, timed in the same rounds
-};
-
-// Every setup on one thread and, when --workers is above one, on that many; each round times
-// every configuration once and Box2D once, so drift touches all alike.
-std::vector<Row> runScene(const bench::BenchScene& scene, const Options& options) {
-    const int steps = options.quick ? std::max(10, scene.steps / 20) : scene.steps;
-    auto timeIt = [&](auto build) {
-        auto stepper = build();  // built outside the timed region
-        return millisecondsPerStep(stepper, steps);
-    };
-    std::vector<int> threads{1};
-    if (options.workers > 1) threads.push_back(options.workers);
-    const std::vector<bench::PivotSetup>& setups = bench::pivotSetups();
-    auto box2d = [&] { return scene.buildBox2d(); };
-    if (!options.quick) {  // warm-up: caches, page faults, frequency scaling
-        timeIt([&] { return scene.buildPivot(setups.front(), threads.back()); });
-        timeIt(box2d);
-    }
-    std::vector<std::vector<double>> times(threads.size() * setups.size());
-    std::vector<double> box;
-    for (int r = 0; r < options.repeats; ++r) {
-        for (std::size_t t = 0; t < threads.size(); ++t) {
-            for (std::size_t s = 0; s < setups.size(); ++s) {
-                times[t * setups.size() + s].push_back(
-                    timeIt([&] { return scene.buildPivot(setups[s], threads[t]); }));
-            }
-        }
-        box.push_back(timeIt(box2d));
-    }
-    std::vector<Row> rows;
-    for (std::size_t t = 0; t < threads.size(); ++t) {
-        for (std::size_t s = 0; s < setups.size(); ++s) {
-            rows.push_back({scene.name, setups[s].name, threads[t],
-                            median(times[t * setups.size() + s]), median(box)});
-        }
-    }
-    return rows;
-}
-
-// Heap bytes per body (with one circle), per joint and per contact, from worlds built to size.
-void reportMemory(std::ostream& out) {
-    const int n = 10000;
-    long long before = heap::liveBytes();
-    auto world = std::make_unique<World>();
-    std::vector<BodyId> bodies;
-    for (int i = 0; i < n; ++i) {
-        BodyDef def;
-        def.type = BodyType::Dynamic;
-        def.position = {float(i % 100), float(i / 100)};
-        bodies.push_back(world->createBody(def));
-        world->createShape(bodies.back(), ShapeDef{}, Circle{{0, 0}, 0.25f});
-    }
-    long long withBodies = heap::liveBytes();
-    for (int i = 1; i < n; ++i) {
-        world->createJoint(RevoluteJointDef::atWorldAnchor(bodies[i - 1], bodies[i], {0, 0}));
-    }
-    long long withJoints = heap::liveBytes();
-    world.reset();
-    (void)before;
-
-    // Contacts: a settled pyramid, measured across its first step (the step also sizes the
-    // solver's reusable buffers, which are counted here too).
-    auto world2 = std::make_unique<World>();
-    {
-        ShapeDef def;
-        def.friction = 0.6f;
-        BodyId ground = world2->createBody(BodyDef{});
-        ShapeDef g;
-        g.density = 0.0f;
-        world2->createShape(ground, g, Polygon::box(50.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
-        const float gap = 2.0f * kPolygonRadius - kLinearSlop;
-        for (int row = 0; row < 40; ++row) {
-            for (int i = 0; i < 40 - row; ++i) {
-                BodyDef bd;
-                bd.type = BodyType::Dynamic;
-                bd.position = {-20.0f + (0.5f * row + i) * (1.0f + gap),
-                               0.5f + gap + row * (1.0f + gap)};
-                world2->createShape(world2->createBody(bd), def, Polygon::box(0.5f, 0.5f));
-            }
-        }
-    }
-    long long beforeStep = heap::liveBytes();
-    world2->step(1.0f / 60.0f);
-    world2->step(1.0f / 60.0f);
-    long long afterStep = heap::liveBytes();
-    int contacts = world2->lastStepStats().contactCount;
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "\nheap bytes (counted through operator new):\n"
-                  "  per body with one circle shape: %.0f\n"
-                  "  per revolute joint:             %.0f\n"
-                  "  per contact (pyramid of 40 rows, %d contacts, including the solver's "
-                  "reusable buffers): %.0f\n",
-                  double(withBodies - before) / n, double(withJoints - withBodies) / (n - 1),
-                  contacts, contacts > 0 ? double(afterStep - beforeStep) / contacts : 0.0);
-    out << line;
+void usage(const std::vector<EngineKind>& kinds) {
+    std::cerr
+        << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] [--scene NAME]\n"
+           "                   [--engines A,B,...] [--continuous on|off] [--list]\n"
+           "                   [--profile ENGINE STEPS]\n"
+           "  Times each scene in every engine, 1/60 s steps, continuous collision on, sleeping\n"
+           "  as the scene says, and prints the median milliseconds per step (the first step\n"
+           "  left out, as Box2D v3's benchmark app does) with ratios: x 2.4.1 = Box2D 2.4.1's\n"
+           "  ms / this row's, x v3 = Box2D v3's ms on as many threads / this row's (above 1:\n"
+           "  this row is faster). Each engine runs on one thread and, where it can, on\n"
+           "  --workers threads (default: the machine's hardware threads).\n"
+           "  Engines here: "
+        << engineNames(kinds)
+        << "\n"
+           "  --quick    a smoke run: a twentieth of the steps, one repeat\n"
+           "  --csv      print scene,engine,threads,ms,vs_box2d_2.4.1,vs_box2d_v3 lines (a\n"
+           "             ratio is empty when its engine did not run), then the memory table\n"
+           "  --engines  only these engines (the ratios need their engine in the run)\n"
+           "  --continuous off  continuous collision off in every engine\n"
+           "  --list     name and describe the scenes\n"
+           "  --scene queries  only the query rows (ray casts and box queries in 10^4\n"
+           "             shapes); --scene memory  only the memory rows\n"
+           "  --profile ENGINE STEPS  step --scene STEPS times in one engine on one thread\n"
+           "             (--workers threads if given), untimed, for perf or callgrind\n";
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    const std::vector<EngineKind> everyEngine = allEngines();
     Options options;
     for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
+        const std::string arg = argv[i];
         if (arg == "--quick") {
             options.quick = true;
             options.repeats = 1;
@@ -201,110 +220,124 @@ int main(int argc, char** argv) {
             options.workersGiven = true;
         } else if (arg == "--scene" && i + 1 < argc) {
             options.only = argv[++i];
+        } else if (arg == "--engines" && i + 1 < argc) {
+            options.engines = splitCommas(argv[++i]);
         } else if (arg == "--continuous" && i + 1 < argc &&
                    (std::string(argv[i + 1]) == "on" || std::string(argv[i + 1]) == "off")) {
-            bench::setContinuousCollision(std::string(argv[++i]) == "on");
+            options.continuous = std::string(argv[++i]) == "on";
         } else if (arg == "--profile" && i + 2 < argc) {
             options.profileEngine = argv[++i];
             options.profileSteps = std::max(0, std::atoi(argv[++i]));
         } else if (arg == "--list") {
-            for (const bench::BenchScene& scene : bench::benchScenes()) {
+            for (const SuiteScene& scene : suiteScenes()) {
                 std::printf("%-15s %s\n", scene.name.c_str(), scene.description.c_str());
             }
             return 0;
         } else {
-            std::cerr << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] "
-                         "[--scene NAME] [--continuous on|off] [--list] [--profile ENGINE "
-                         "STEPS]\n"
-                         "  Times each scene in pivot2d and in Box2D 2.4.1, sleeping off,\n"
-                         "  continuous collision on in both, 1/60 s steps, and prints the median\n"
-                         "  milliseconds per step and the ratio box2d / pivot. pivot2d runs as\n"
-                         "  full_ngs (8/3), baumgarte (8/3) and soft_step (4 substeps of 1/1,\n"
-                         "  soft contacts), on one thread and on --workers threads (default: the\n"
-                         "  machine's hardware threads); Box2D 2.4.1 is single-threaded, 8/3.\n"
-                         "  --quick    a smoke run: a twentieth of the steps, one repeat\n"
-                         "  --csv      print scene,engine,threads,pivot_ms,box2d_ms,speedup lines\n"
-                         "  --continuous off  continuous collision off in both engines (on by\n"
-                         "             default, as in both engines and in the testbed scenes)\n"
-                         "  --list     name and describe the scenes\n"
-                         "  --scene queries  only the query rows (ray casts and box queries in\n"
-                         "             10^4 shapes), which a full run prints after the scenes\n"
-                         "  --profile ENGINE STEPS  step --scene STEPS times in one engine\n"
-                         "             (full_ngs, baumgarte, soft_step or box2d) on one thread\n"
-                         "             (pivot2d: --workers threads if given), untimed, for perf\n"
-                         "             or callgrind\n";
+            usage(everyEngine);
             return arg == "--help" ? 0 : 2;
         }
     }
 
-    const bool queriesOnly = options.only == "queries";
-    if (!options.only.empty() && !queriesOnly) {
+    std::vector<EngineKind> kinds;
+    for (const EngineKind& kind : everyEngine) {
+        if (options.engines.empty() || std::find(options.engines.begin(), options.engines.end(),
+                                                 kind.name) != options.engines.end()) {
+            kinds.push_back(kind);
+        }
+    }
+    for (const std::string& name : options.engines) {
         bool known = false;
-        for (const bench::BenchScene& scene : bench::benchScenes())
-            known |= scene.name == options.only;
+        for (const EngineKind& kind : everyEngine) known |= kind.name == name;
+        if (!known) {
+            std::cerr << "pivot-bench: no engine named '" << name
+                      << "' (here: " << engineNames(everyEngine) << ")\n";
+            return 2;
+        }
+    }
+
+    const bool queriesOnly = options.only == "queries";
+    const bool memoryOnly = options.only == "memory";
+    if (!options.only.empty() && !queriesOnly && !memoryOnly) {
+        bool known = false;
+        for (const SuiteScene& scene : suiteScenes()) known |= scene.name == options.only;
         if (!known) {
             std::cerr << "pivot-bench: no scene named '" << options.only << "' (see --list)\n";
             return 2;
         }
     }
-
-    if (!options.profileEngine.empty()) return profileRun(options);
+    if (!options.profileEngine.empty()) return profileRun(options, everyEngine);
 
     std::vector<Row> rows;
-    for (const bench::BenchScene& scene : bench::benchScenes()) {
-        if (!options.only.empty() && scene.name != options.only) continue;
-        if (!options.csv) std::cerr << "timing " << scene.name << "...\n";
-        for (Row& row : runScene(scene, options)) rows.push_back(row);
+    if (!queriesOnly && !memoryOnly) {
+        for (const SuiteScene& scene : suiteScenes()) {
+            if (!options.only.empty() && scene.name != options.only) continue;
+            if (!options.csv) std::cerr << "timing " << scene.name << "...\n";
+            for (Row& row : runScene(scene, kinds, options)) rows.push_back(row);
+        }
     }
     // One-thread rows first: like against like (Box2D 2.4.1 has one thread).
     std::stable_sort(rows.begin(), rows.end(),
                      [](const Row& a, const Row& b) { return a.threads < b.threads; });
-    std::vector<bench::QueryRow> queries;
+    std::vector<QueryRow> queries;
     if (options.only.empty() || queriesOnly) {
         if (!options.csv) std::cerr << "timing queries...\n";
-        queries = bench::runQueryBench(options.quick, options.repeats);
+        queries = runQueryBench(options.quick, options.repeats);
     }
+    std::vector<MemoryRow> memory;
+    if (options.only.empty() || memoryOnly) memory = measureMemory(kinds);
 
     if (options.csv) {
-        std::cout << "scene,engine,threads,pivot_ms,box2d_ms,speedup\n";
+        std::cout << "scene,engine,threads,ms,vs_box2d_2.4.1,vs_box2d_v3\n";
         for (const Row& r : rows) {
-            std::printf("%s,%s,%d,%.4f,%.4f,%.3f\n", r.scene.c_str(), r.engine.c_str(), r.threads,
-                        r.pivot, r.box2d, r.box2d / r.pivot);
+            std::printf("%s,%s,%d,%.4f,%s,%s\n", r.scene.c_str(), r.engine.c_str(), r.threads, r.ms,
+                        ratio(r.vsBox2d, "%.3f").c_str(), ratio(r.vsBox2dV3, "%.3f").c_str());
         }
-        for (const bench::QueryRow& q : queries) {
-            std::printf("%s,queries,1,%.4f,%.4f,%.3f\n", q.name.c_str(), q.pivotMs, q.box2dMs,
+        for (const QueryRow& q : queries) {
+            std::printf("%s,queries,1,%.4f,%.3f,\n", q.name.c_str(), q.pivotMs,
                         q.box2dMs / q.pivotMs);
+        }
+        if (!memory.empty()) {  // a second table: bytes, not times
+            std::cout << "\nmemory,engine,bytes_per_body,bytes_per_shape,bytes_per_joint,"
+                         "bytes_per_contact\n";
+            for (const MemoryRow& m : memory) {
+                std::printf("memory,%s,%.0f,%.0f,%.0f,%.0f\n", m.engine.c_str(), m.perBody,
+                            m.perShape, m.perJoint, m.perContact);
+            }
         }
         return 0;
     }
     std::printf(
-        "%s: median ms per step over %d run%s; sleeping off, continuous collision %s.\n"
-        "Engines: full_ngs and baumgarte (8 velocity / 3 position iterations, NGS contacts),\n"
-        "soft_step (soft-step joints and contacts, 4 substeps of 1 velocity / 1 relax\n"
-        "iteration); Box2D 2.4.1 at 8/3, single-threaded, beside each. x box2d = box2d / pivot.\n",
+        "%s: median ms per step over %d run%s (first step left out); continuous collision "
+        "%s.\n",
         options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
-        options.repeats == 1 ? "" : "s", bench::continuousCollision() ? "on" : "off");
-    std::printf("%-15s %-10s %7s %9s %9s %8s\n", "scene", "engine", "threads", "pivot", "box2d",
-                "x box2d");
+        options.repeats == 1 ? "" : "s", options.continuous ? "on" : "off");
+    for (const EngineKind& kind : kinds) {
+        std::printf("  %-12s %s\n", kind.name.c_str(), kind.about.c_str());
+    }
+    std::printf("%-15s %-12s %7s %9s %8s %8s\n", "scene", "engine", "threads", "ms", "x 2.4.1",
+                "x v3");
     for (const Row& r : rows) {
-        std::printf("%-15s %-10s %7d %9.3f %9.3f %7.2fx\n", r.scene.c_str(), r.engine.c_str(),
-                    r.threads, r.pivot, r.box2d, r.box2d / r.pivot);
+        std::printf("%-15s %-12s %7d %9.3f %8s %8s\n", r.scene.c_str(), r.engine.c_str(), r.threads,
+                    r.ms, ratio(r.vsBox2d, "%.2fx").c_str(), ratio(r.vsBox2dV3, "%.2fx").c_str());
     }
     if (!queries.empty()) {
         std::printf(
             "\nqueries: ms per batch of %d (median), the same world of 10^4 static shapes "
             "(circles,\n"
-            "boxes, pentagons) in both engines; Box2D 2.4.1's b2World::RayCast (closest hit) and\n"
-            "QueryAABB (which reports fat boxes; pivot2d also tests each shape's own box).\n",
+            "boxes, pentagons) in pivot2d and Box2D 2.4.1; Box2D 2.4.1's b2World::RayCast "
+            "(closest\n"
+            "hit) and QueryAABB (which reports fat boxes; pivot2d also tests each shape's own "
+            "box).\n",
             options.quick ? 1000 : 10000);
         std::printf("%-15s %9s %9s %8s %12s %12s %12s\n", "query", "pivot", "box2d", "x box2d",
                     "pivot found", "box2d found", "allocations");
-        for (const bench::QueryRow& q : queries) {
+        for (const QueryRow& q : queries) {
             std::printf("%-15s %9.3f %9.3f %7.2fx %12lld %12lld %12lld\n", q.name.c_str(),
                         q.pivotMs, q.box2dMs, q.box2dMs / q.pivotMs, q.pivotFound, q.box2dFound,
                         q.pivotAllocations);
         }
     }
-    if (options.only.empty()) reportMemory(std::cout);
+    if (!memory.empty()) printMemory(memory);
     return 0;
 }
