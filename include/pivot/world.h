@@ -330,7 +330,9 @@ public:
     // createShape, destroyShape, setShapeDensity and setBodyType move a dynamic body's centre
     // of mass, and the centre's velocity changes by w x the move: a call that would take it past
     // kMaxSpeed (a fast-turning body, a shape far out) is refused; slow the body first.
-    /// Attaches a shape and updates the body's mass.
+    /// Attaches a shape and updates the body's mass. A sleeping body stays asleep (as in
+    /// Box2D): a body made with BodyDef::isAwake false keeps sleeping with its shapes until
+    /// something wakes it (an awake body that touches it, for one).
     ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Capsule& capsule);

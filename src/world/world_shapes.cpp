@@ -43,7 +43,9 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
     w.shapes[index].box = computeShapeBox(w.shapes[index], body.xf);
     w.shapes[index].proxyId = w.contactManager.broadPhase().createProxy(w.shapes[index].box, index);
     w.contactManager.markNewShapes();
-    wakeUp(body);
+    // A sleeping body stays asleep, as Box2D's do: a body made asleep (BodyDef::isAwake false)
+    // is given its shapes and sleeps on until something wakes it.
+    if (body.awake) wakeUp(body);
     return w.shapeId(index);
 }
 

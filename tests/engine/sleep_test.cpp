@@ -132,13 +132,35 @@ TEST(Sleep, ABodyCreatedAsleepStaysPutUntilWoken) {
     def.position = {0, 10};
     def.isAwake = false;
     BodyId body = world.createBody(def);
+    // Its shapes do not wake it (as in Box2D), so a scene can be built asleep.
     world.createShape(body, ShapeDef{}, Circle{});
-    // Adding a shape is a change to the body: it wakes.
-    EXPECT_TRUE(world.isBodyAwake(body));
-    world.setBodyAwake(body, false);
+    EXPECT_FALSE(world.isBodyAwake(body));
     for (int i = 0; i < 30; ++i) world.step(kDt);
     EXPECT_EQ(world.bodyPosition(body).y, 10.0f);
     world.setBodyAwake(body, true);
     world.step(kDt);
     EXPECT_LT(world.bodyPosition(body).y, 10.0f);
+}
+
+TEST(Sleep, ABodyCreatedAsleepWakesWhenSomethingAwakeTouchesIt) {
+    World world;
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    def.position = {0, 0};
+    def.isAwake = false;
+    BodyId sleeper = world.createBody(def);
+    world.createShape(sleeper, ShapeDef{}, Polygon::box(0.5f, 0.5f));
+    def.isAwake = true;
+    def.position = {0, 3};
+    BodyId faller = world.createBody(def);
+    world.createShape(faller, ShapeDef{}, Polygon::box(0.5f, 0.5f));
+    int steps = 0;
+    while (!world.isBodyAwake(sleeper) && steps < 120) {
+        world.step(kDt);
+        ++steps;
+    }
+    EXPECT_TRUE(world.isBodyAwake(sleeper));
+    // Woken as the falling box reached it (about 0.6 s), not before.
+    EXPECT_GT(steps, 30);
+    EXPECT_LT(steps, 60);
 }
