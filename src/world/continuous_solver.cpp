@@ -72,15 +72,26 @@ bool optedOut(const Body& b) {
     return b.type == BodyType::Dynamic && !b.continuous;
 }
 
+// What mayImpact asks of a body, in a byte per body: every contact is asked each pass, and
+// reading two whole bodies per contact from all over memory cost more than the rest of the
+// continuous solve in a resting pile.
+constexpr std::uint8_t kActive = 1, kOptedOut = 2, kStopsTunnelling = 4;
+
+std::uint8_t tunnelFlags(const Body& b) {
+    return static_cast<std::uint8_t>((isActive(b) ? kActive : 0) | (optedOut(b) ? kOptedOut : 0) |
+                                     (stopsTunnelling(b) ? kStopsTunnelling : 0));
+}
+
 // Whether the contact can be an impact: something moves, and one side is static, kinematic or
-// a bullet (two ordinary dynamic bodies are left to the discrete step).
-bool mayImpact(const Contact& c, const SlotPool<Body>& bodies) {
+// a bullet (two ordinary dynamic bodies are left to the discrete step). `flags`: tunnelFlags of
+// every body.
+bool mayImpact(const Contact& c, const std::vector<std::uint8_t>& flags) {
     if (c.sensor || !c.enabled) return false;  // a sensor stops nothing, nor a disabled contact
-    const Body& a = bodies[c.bodyA()];
-    const Body& b = bodies[c.bodyB()];
-    if (!isActive(a) && !isActive(b)) return false;
-    if (optedOut(a) || optedOut(b)) return false;
-    return stopsTunnelling(a) || stopsTunnelling(b);
+    const std::uint8_t a = flags[static_cast<std::size_t>(c.bodyA())];
+    const std::uint8_t b = flags[static_cast<std::size_t>(c.bodyB())];
+    if (((a | b) & kActive) == 0) return false;
+    if ((a | b) & kOptedOut) return false;
+    return ((a | b) & kStopsTunnelling) != 0;
 }
 
 bool inPlay(const Contact& c) {
@@ -146,7 +157,7 @@ std::int32_t ContinuousSolver::earliestImpact(SlotPool<Body>& bodies, const Slot
         if (!inPlay(c)) continue;
         if (c.toiKnown) {
             consider(index);
-        } else if (mayImpact(c, bodies)) {
+        } else if (mayImpact(c, tunnelFlags_)) {
             unknown_.push_back(index);
         }
     }
@@ -207,6 +218,7 @@ void ContinuousSolver::buildIsland(std::int32_t contactIndex, float alpha, SlotP
             bodySlot_[otherIndex] = static_cast<std::int32_t>(islandBodies_.size());
             islandBodies_.push_back(otherIndex);
             wakeUp(other);
+            tunnelFlags_[static_cast<std::size_t>(otherIndex)] = tunnelFlags(other);
         }
     }
 }
@@ -312,12 +324,10 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     heldAtEdge_.clear();
     discarded_.clear();
     impacts_.clear();
-    bodies.forEach([](std::int32_t, Body& b) { b.alpha0 = 0.0f; });
-    contacts.forEach([](std::int32_t, Contact& c) {
-        c.toi = 1.0f;
-        c.toiCount = 0;
-        c.toiKnown = false;
-        c.toiDisabled = false;
+    resizeBuffer(tunnelFlags_, static_cast<std::size_t>(bodies.capacity()), std::uint8_t{0});
+    bodies.forEach([this](std::int32_t index, Body& b) {
+        b.alpha0 = 0.0f;
+        tunnelFlags_[static_cast<std::size_t>(index)] = tunnelFlags(b);
     });
     // Before the first impact every sweep starts at 0, so no computation moves one: each
     // contact's impact depends on its own bodies only, and the workers share them out.
@@ -325,7 +335,11 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
         for (std::int32_t index = begin; index < end; ++index) {
             if (!contacts.isAlive(index)) continue;
             Contact& c = contacts[index];
-            if (mayImpact(c, bodies)) computeImpact(c, bodies, shapes);
+            c.toi = 1.0f;
+            c.toiCount = 0;
+            c.toiKnown = false;
+            c.toiDisabled = false;
+            if (mayImpact(c, tunnelFlags_)) computeImpact(c, bodies, shapes);
         }
     });
 
@@ -369,6 +383,8 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
         }
         wakeUp(a);
         wakeUp(b);
+        tunnelFlags_[static_cast<std::size_t>(contacts[contactIndex].bodyA())] = tunnelFlags(a);
+        tunnelFlags_[static_cast<std::size_t>(contacts[contactIndex].bodyB())] = tunnelFlags(b);
 
         buildIsland(contactIndex, alpha, bodies, contacts, contactManager);
         solveIsland(bodies, shapes, contacts, step, alpha);

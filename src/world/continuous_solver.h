@@ -110,6 +110,7 @@ private:
         Motion motion;
     };
     std::vector<KinematicPath> kinematicPaths_;  // the island's kinematic bodies, to put back
+    std::vector<std::uint8_t> tunnelFlags_;      // per body: what mayImpact asks (the .cpp)
 };
 
 }  // namespace pivot
