@@ -150,26 +150,40 @@ std::int32_t ContinuousSolver::earliestImpact(SlotPool<Body>& bodies, const Slot
             bestAlpha = c.toi;
         }
     };
+    // The contacts whose impact is unknown (made or moved since the last pass), newest first:
+    // computing an impact may move the start of a sweep another computation then reads, and
+    // Box2D lists its contacts newest first.
     unknown_.clear();
-    for (std::int32_t index = 0; index < contacts.capacity(); ++index) {
+    for (std::int32_t index : dirty_) {
         if (!contacts.isAlive(index)) continue;
         const Contact& c = contacts[index];
-        if (!inPlay(c)) continue;
-        if (c.toiKnown) {
-            consider(index);
-        } else if (mayImpact(c, tunnelFlags_)) {
-            unknown_.push_back(index);
-        }
+        if (inPlay(c) && !c.toiKnown && mayImpact(c, tunnelFlags_)) unknown_.push_back(index);
     }
-    // Computing an impact may move the start of a sweep another computation then reads:
-    // newest contact first, as Box2D lists them.
+    dirty_.clear();
     std::sort(unknown_.begin(), unknown_.end(), [&](std::int32_t x, std::int32_t y) {
         return contacts[x].serial > contacts[y].serial;
     });
+    unknown_.erase(std::unique(unknown_.begin(), unknown_.end()), unknown_.end());
     for (std::int32_t index : unknown_) {
         computeImpact(contacts[index], bodies, shapes);
+        if (contacts[index].toi < 1.0f && !isCandidate_[static_cast<std::size_t>(index)]) {
+            isCandidate_[static_cast<std::size_t>(index)] = 1;
+            candidates_.push_back(index);
+        }
+    }
+    // Only a known impact before the end of the step can be the earliest; the list drops the
+    // rest as it goes.
+    std::size_t kept = 0;
+    for (std::int32_t index : candidates_) {
+        const Contact& c = contacts[index];
+        if (!contacts.isAlive(index) || !inPlay(c) || !c.toiKnown || !(c.toi < 1.0f)) {
+            isCandidate_[static_cast<std::size_t>(index)] = 0;
+            continue;
+        }
+        candidates_[kept++] = index;
         consider(index);
     }
+    candidates_.resize(kept);
     alpha = bestAlpha;
     if (best == -1 || kLatestImpact < bestAlpha) return -1;
     return best;
@@ -330,8 +344,12 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
         tunnelFlags_[static_cast<std::size_t>(index)] = tunnelFlags(b);
     });
     // Before the first impact every sweep starts at 0, so no computation moves one: each
-    // contact's impact depends on its own bodies only, and the workers share them out.
-    pool.parallelFor(contacts.capacity(), 64, [&](int begin, int end, int) {
+    // contact's impact depends on its own bodies only, and the workers share them out. Each
+    // worker keeps the earliest impact it found: when none is before the end of the step, the
+    // search below (a pass over every contact) would find none either, and is skipped.
+    earliestByWorker_.assign(static_cast<std::size_t>(pool.workerCount()), 1.0f);
+    pool.parallelFor(contacts.capacity(), 64, [&](int begin, int end, int worker) {
+        float& earliest = earliestByWorker_[static_cast<std::size_t>(worker)];
         for (std::int32_t index = begin; index < end; ++index) {
             if (!contacts.isAlive(index)) continue;
             Contact& c = contacts[index];
@@ -339,13 +357,18 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
             c.toiCount = 0;
             c.toiKnown = false;
             c.toiDisabled = false;
-            if (mayImpact(c, tunnelFlags_)) computeImpact(c, bodies, shapes);
+            if (!mayImpact(c, tunnelFlags_)) continue;
+            computeImpact(c, bodies, shapes);
+            earliest = std::min(earliest, c.toi);
         }
     });
+    const float earliest = *std::min_element(earliestByWorker_.begin(), earliestByWorker_.end());
 
     resizeBuffer(bodySlot_, static_cast<std::size_t>(bodies.capacity()), std::int32_t{-1});
     // Room for the most an impact can involve, so that a warm step does not allocate.
-    unknown_.reserve(static_cast<std::size_t>(contacts.capacity()));
+    unknown_.reserve(2 * static_cast<std::size_t>(contacts.capacity()));
+    dirty_.reserve(2 * static_cast<std::size_t>(contacts.capacity()));  // a contact per side
+    candidates_.reserve(static_cast<std::size_t>(contacts.capacity()));
     islandBodies_.reserve(kMaxIslandBodies);
     islandContacts_.reserve(kMaxIslandContacts);
     islandPairs_.reserve(kMaxIslandContacts);
@@ -355,6 +378,22 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     contactSolver_.reserve(kMaxIslandContacts);
     // Most contacts have one impact a step at most; twice that is room for the busiest steps.
     impacts_.reserve(2 * static_cast<std::size_t>(contacts.capacity()));
+    if (!(earliest <= kLatestImpact)) return 0;
+    // There are impacts: list the contacts that may be the earliest (a known impact before the
+    // end of the step), so that each search after an impact reads those and the contacts the
+    // impact touched (dirty_), not every contact.
+    resizeBuffer(isCandidate_, static_cast<std::size_t>(contacts.capacity()), std::uint8_t{0});
+    std::fill(isCandidate_.begin(), isCandidate_.end(), std::uint8_t{0});
+    candidates_.clear();
+    dirty_.clear();
+    for (std::int32_t index = 0; index < contacts.capacity(); ++index) {
+        if (!contacts.isAlive(index)) continue;
+        const Contact& c = contacts[index];
+        if (c.toiKnown && c.toi < 1.0f) {
+            isCandidate_[static_cast<std::size_t>(index)] = 1;
+            candidates_.push_back(index);
+        }
+    }
     int impacts = 0;
     for (;;) {
         float alpha = 1.0f;
@@ -406,6 +445,18 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
             }
         }
         contactManager.findNewContacts();
+        // What the next search must look at: every contact of a body the impact moved or woke
+        // (their impacts were reset above, or may now be wanted), new contacts among them (each
+        // has a moved body). A static body's contacts changed only on their other side.
+        resizeBuffer(isCandidate_, static_cast<std::size_t>(contacts.capacity()), std::uint8_t{0});
+        for (std::int32_t bodyIndex : islandBodies_) {
+            const Body& body = bodies[bodyIndex];
+            if (body.type == BodyType::Static) continue;
+            for (std::int32_t key = body.contactList; key != -1;) {
+                dirty_.push_back(edgeOwner(key));
+                key = contacts[edgeOwner(key)].edges[edgeSide(key)].nextKey;
+            }
+        }
     }
     return impacts;
 }

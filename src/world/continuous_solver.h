@@ -86,7 +86,10 @@ private:
     void solveIsland(SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
                      const SlotPool<Contact>& contacts, const StepContext& step, float alpha);
 
-    std::vector<std::int32_t> unknown_;         // contacts whose impact a pass must compute
+    std::vector<std::int32_t> unknown_;     // contacts whose impact a pass must compute
+    std::vector<std::int32_t> dirty_;       // contacts an impact touched: unknown_ comes from these
+    std::vector<std::int32_t> candidates_;  // contacts with a known impact before the step's end
+    std::vector<std::uint8_t> isCandidate_;     // per contact slot: in candidates_
     std::vector<std::int32_t> islandBodies_;    // body indices; the event's two first
     std::vector<std::int32_t> islandContacts_;  // contact indices; the event's first
     std::vector<BodyPair> islandPairs_;         // each island contact's solver slots
@@ -111,6 +114,7 @@ private:
     };
     std::vector<KinematicPath> kinematicPaths_;  // the island's kinematic bodies, to put back
     std::vector<std::uint8_t> tunnelFlags_;      // per body: what mayImpact asks (the .cpp)
+    std::vector<float> earliestByWorker_;        // the first pass's earliest impact, per worker
 };
 
 }  // namespace pivot
