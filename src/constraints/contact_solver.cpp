@@ -308,8 +308,10 @@ void ContactSolver::warmStart(IndexRange range, SolverVelocity* velocities) cons
     }
 }
 
-void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities) {
-    for (int k = range.begin; k < range.end; ++k) {
+void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities,
+                                    bool independent) {
+    const int first = independent ? solveWide(range, velocities, false) : range.begin;
+    for (int k = first; k < range.end; ++k) {
         ContactVelocityConstraint& c = velocity_[k];
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
@@ -326,8 +328,9 @@ void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities
     }
 }
 
-void ContactSolver::relax(IndexRange range, SolverVelocity* velocities) {
-    for (int k = range.begin; k < range.end; ++k) {
+void ContactSolver::relax(IndexRange range, SolverVelocity* velocities, bool independent) {
+    const int first = independent ? solveWide(range, velocities, true) : range.begin;
+    for (int k = first; k < range.end; ++k) {
         ContactVelocityConstraint& c = velocity_[k];
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];

@@ -95,7 +95,10 @@ public:
                  const SolverPose* positions);
     /// Applies last step's impulses (scaled by step.dtRatio in prepare) before iterating.
     void warmStart(IndexRange range, SolverVelocity* velocities) const;
-    void solveVelocities(IndexRange range, SolverVelocity* velocities);
+    /// One velocity sweep over [range). `independent`: no two of these contacts share a solver
+    /// slot (one colour of a coloured island), so they are solved four at a time
+    /// (contact_solver_wide.cpp), to the same bits.
+    void solveVelocities(IndexRange range, SolverVelocity* velocities, bool independent = false);
     /// Writes the accumulated impulses into the contacts' manifolds for the next warm start;
     /// the first substep of a step also writes each point's approach speed (hit events).
     void storeImpulses(IndexRange range, SlotPool<Contact>& pool, bool firstSubstep) const;
@@ -109,11 +112,14 @@ public:
                                std::int32_t movableB, float bias) const;
     /// m/s, how fast point j of constraint k closed when prepare measured it.
     float approachSpeed(int k, int j) const { return velocity_[k].points[j].approachSpeed; }
+    /// For tests, process-wide: off, independent batches are solved one contact at a time too,
+    /// the reference the four-wide path must match bit for bit.
+    static void setWideSolving(bool enabled);
     /// Whether any contact takes part in the NGS position phase.
     bool hasPositionConstraints() const { return !position_.empty(); }
     /// Soft contacts: whether they relax, and one relax sweep over [range) (rigid, no spring).
     bool relaxes() const { return soft_ && !velocity_.empty(); }
-    void relax(IndexRange range, SolverVelocity* velocities);
+    void relax(IndexRange range, SolverVelocity* velocities, bool independent = false);
 
     /// A sweep's contacts count as solved when no point is deeper than three slops.
     static bool withinTolerance(float minSeparation) {
@@ -124,6 +130,9 @@ public:
     static float minSeparation(float a, float b) { return !(b >= a) ? b : a; }
 
 private:
+    /// Solves contacts [range.begin, returned) four at a time (a sweep's work, or with
+    /// `relaxing` a relax sweep's); the caller solves the rest one by one.
+    int solveWide(IndexRange range, SolverVelocity* velocities, bool relaxing);
     /// One NGS sweep; a body moves if every body may (movableA = kNoSlot) or it is in one of the
     /// two slots.
     float positionSweep(IndexRange range, SolverPose* positions, float bias, std::int32_t movableA,

@@ -64,6 +64,17 @@ private:
     int size_ = 1;
 };
 
+/// Runs f(range, independent) on this member's share of each batch in turn, syncing after
+/// each; `independent` says the batch is one colour (no two of its constraints share a solver
+/// slot), which lets f solve several of them at once.
+template <typename F>
+void forEachBatchSaying(const Team& team, const std::vector<Batch>& batches, F&& f) {
+    for (const Batch& batch : batches) {
+        f(team.share(batch), !batch.serial);
+        team.sync();
+    }
+}
+
 /// Runs f(range) on this member's share of each batch in turn, syncing after each.
 template <typename F>
 void forEachBatch(const Team& team, const std::vector<Batch>& batches, F&& f) {

@@ -293,8 +293,8 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
             team.sync();
         }
         solveVelocitySweep(team, work.groups, schedule, velocities);
-        forEachBatch(team, schedule.contactBatches, [&](IndexRange range) {
-            work.contactSolver.solveVelocities(range, velocities);
+        forEachBatchSaying(team, schedule.contactBatches, [&](IndexRange range, bool independent) {
+            work.contactSolver.solveVelocities(range, velocities, independent);
         });
     }
 

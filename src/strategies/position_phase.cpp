@@ -63,8 +63,10 @@ void solveRelaxSweeps(const Team& team, JointGroups& groups, const IslandSchedul
             }
         });
         if (contacts.relaxes()) {
-            forEachBatch(team, schedule.contactBatches,
-                         [&](IndexRange range) { contacts.relax(range, velocities); });
+            forEachBatchSaying(team, schedule.contactBatches,
+                               [&](IndexRange range, bool independent) {
+                                   contacts.relax(range, velocities, independent);
+                               });
         }
     }
 }
