@@ -361,8 +361,15 @@ void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool,
     }
 }
 
-float ContactSolver::solvePositions(IndexRange range, SolverPose* positions) const {
-    return positionSweep(range, positions, positionBias_, kNoSlot, kNoSlot);
+float ContactSolver::solvePositions(IndexRange range, SolverPose* positions,
+                                    bool independent) const {
+    if (!independent || position_.empty()) {
+        return positionSweep(range, positions, positionBias_, kNoSlot, kNoSlot);
+    }
+    // One fold of the separations, as the one-by-one sweep makes it: the wide part's, then on.
+    float smallest = 0.0f;
+    const int first = positionSweepWide(range, positions, positionBias_, smallest);
+    return positionSweep({first, range.end}, positions, positionBias_, kNoSlot, kNoSlot, smallest);
 }
 
 float ContactSolver::solveImpactPositions(IndexRange range, SolverPose* positions,
@@ -372,8 +379,8 @@ float ContactSolver::solveImpactPositions(IndexRange range, SolverPose* position
 }
 
 float ContactSolver::positionSweep(IndexRange range, SolverPose* positions, float bias,
-                                   std::int32_t movableA, std::int32_t movableB) const {
-    float smallest = 0.0f;
+                                   std::int32_t movableA, std::int32_t movableB,
+                                   float smallest) const {
     if (position_.empty()) return smallest;
     auto moves = [&](std::int32_t slot) {
         return movableA == kNoSlot || slot == movableA || slot == movableB;

@@ -104,7 +104,8 @@ public:
     void storeImpulses(IndexRange range, SlotPool<Contact>& pool, bool firstSubstep) const;
     /// One NGS sweep over the points of contacts [range). Returns the smallest separation
     /// measured (m, before each correction; NaN if any was NaN); 0 when there are none.
-    float solvePositions(IndexRange range, SolverPose* positions) const;
+    /// `independent`: as for solveVelocities (four at a time, the same bits).
+    float solvePositions(IndexRange range, SolverPose* positions, bool independent = false) const;
     /// Continuous collision's position sweep (world/continuous_solver.h): as solvePositions,
     /// with the given bias, moving only the bodies in solver slots movableA and movableB (the
     /// others are held as if infinitely heavy). Needs NGS constraints (reset with NGS).
@@ -133,10 +134,15 @@ private:
     /// Solves contacts [range.begin, returned) four at a time (a sweep's work, or with
     /// `relaxing` a relax sweep's); the caller solves the rest one by one.
     int solveWide(IndexRange range, SolverVelocity* velocities, bool relaxing);
+    /// Likewise for an NGS sweep in which every body moves, folding the separations it measures
+    /// into `smallest`.
+    int positionSweepWide(IndexRange range, SolverPose* positions, float bias,
+                          float& smallest) const;
     /// One NGS sweep; a body moves if every body may (movableA = kNoSlot) or it is in one of the
     /// two slots.
+    /// The separations measured are folded into `smallest` (minSeparation), which it returns.
     float positionSweep(IndexRange range, SolverPose* positions, float bias, std::int32_t movableA,
-                        std::int32_t movableB) const;
+                        std::int32_t movableB, float smallest = 0.0f) const;
 
     std::vector<ContactVelocityConstraint> velocity_;
     std::vector<ContactPositionConstraint> position_;

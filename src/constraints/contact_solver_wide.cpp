@@ -1,6 +1,7 @@
-// The contact solver's velocity sweeps four contacts at a time (SSE2, the x86-64 baseline), for
-// a batch of independent contacts: one colour of a coloured island (island_schedule.h), where no
-// two contacts share a solver slot, so solving them together is solving them one after another.
+// The contact solver's velocity, relax and NGS position sweeps, four contacts at a time (SSE2,
+// the x86-64 baseline), for a batch of independent contacts: one colour of a coloured island
+// (island_schedule.h), where no two contacts share a solver slot, so solving them together is
+// solving them one after another.
 //
 // Each lane does exactly the arithmetic of the one-contact code in contact_solver.cpp, operation
 // for operation and in the same order (the build never contracts a*b+c into one rounding), and
@@ -10,7 +11,9 @@
 //
 // The maths is contact_solver.h's: per point, vn = (vB + wB x rB - vA - wA x rA) . n, friction
 // clamped by friction * normal impulse, the two points of a manifold solved together as a 2x2
-// complementarity problem (the first of its four cases that holds), or point by point.
+// complementarity problem (the first of its four cases that holds), or point by point; and the
+// NGS sweep's -K^-1 C per point, from the separation re-measured at the current poses (the
+// sines and cosines of those poses stay libm's, lane by lane).
 #include "constraints/contact_solver.h"
 
 #include <atomic>
@@ -293,6 +296,168 @@ void solveFour(ContactVelocityConstraint* const c[4], SolverVelocity* velocities
     storeVelocities(B, bodyB);
 }
 
+// --- position sweeps (NGS) ---------------------------------------------------------------------
+
+struct Pose4 {
+    F4 cx, cy, a;
+};
+
+struct Rot4 {
+    F4 s, c;
+};
+
+// The rotation of each lane's angle, by the scalar Rot (libm's sine and cosine: no wide
+// routine rounds as they do).
+Rot4 rotations(F4 angles) {
+    float a[4], s[4], c[4];
+    store(angles, a);
+    for (int lane = 0; lane < 4; ++lane) {
+        const Rot q(a[lane]);
+        s[lane] = q.s;
+        c[lane] = q.c;
+    }
+    return {F4(_mm_loadu_ps(s)), F4(_mm_loadu_ps(c))};
+}
+
+struct Vec4 {
+    F4 x, y;
+};
+
+// rotate(q, v) and transformPoint({p, q}, v).
+Vec4 rotate4(const Rot4& q, const Vec4& v) {
+    return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
+}
+Vec4 transform4(const Rot4& q, const Vec4& p, const Vec4& v) {
+    const Vec4 r = rotate4(q, v);
+    return {r.x + p.x, r.y + p.y};
+}
+
+template <typename Get>
+F4 gatherPosition(const ContactPositionConstraint* const c[4], Get get) {
+    return F4(_mm_setr_ps(get(*c[0]), get(*c[1]), get(*c[2]), get(*c[3])));
+}
+
+// A lane mask from a per-constraint test.
+template <typename Test>
+F4 maskOf(const ContactPositionConstraint* const c[4], Test test) {
+    return F4(_mm_castsi128_ps(_mm_setr_epi32(test(*c[0]) ? -1 : 0, test(*c[1]) ? -1 : 0,
+                                              test(*c[2]) ? -1 : 0, test(*c[3]) ? -1 : 0)));
+}
+
+// One NGS sweep over four contacts whose bodies all move (ContactSolver::positionSweep); writes
+// each lane's separations, point by point, into separations[point][lane].
+void positionFour(const ContactPositionConstraint* const c[4], SolverPose* positions, float bias,
+                  float separations[2][4]) {
+    using P = const ContactPositionConstraint&;
+    SolverPose* poseA[4];
+    SolverPose* poseB[4];
+    for (int lane = 0; lane < 4; ++lane) {
+        poseA[lane] = &positions[c[lane]->indexA];
+        poseB[lane] = &positions[c[lane]->indexB];
+    }
+    Pose4 A{F4(_mm_setr_ps(poseA[0]->c.x, poseA[1]->c.x, poseA[2]->c.x, poseA[3]->c.x)),
+            F4(_mm_setr_ps(poseA[0]->c.y, poseA[1]->c.y, poseA[2]->c.y, poseA[3]->c.y)),
+            F4(_mm_setr_ps(poseA[0]->a, poseA[1]->a, poseA[2]->a, poseA[3]->a))};
+    Pose4 B{F4(_mm_setr_ps(poseB[0]->c.x, poseB[1]->c.x, poseB[2]->c.x, poseB[3]->c.x)),
+            F4(_mm_setr_ps(poseB[0]->c.y, poseB[1]->c.y, poseB[2]->c.y, poseB[3]->c.y)),
+            F4(_mm_setr_ps(poseB[0]->a, poseB[1]->a, poseB[2]->a, poseB[3]->a))};
+    const F4 mA = gatherPosition(c, [](P x) { return x.mA; });
+    const F4 mB = gatherPosition(c, [](P x) { return x.mB; });
+    const F4 iA = gatherPosition(c, [](P x) { return x.iA; });
+    const F4 iB = gatherPosition(c, [](P x) { return x.iB; });
+    const F4 radiusA = gatherPosition(c, [](P x) { return x.radiusA; });
+    const F4 radiusB = gatherPosition(c, [](P x) { return x.radiusB; });
+    const Vec4 centerA{gatherPosition(c, [](P x) { return x.localCenterA.x; }),
+                       gatherPosition(c, [](P x) { return x.localCenterA.y; })};
+    const Vec4 centerB{gatherPosition(c, [](P x) { return x.localCenterB.x; }),
+                       gatherPosition(c, [](P x) { return x.localCenterB.y; })};
+    const Vec4 localNormal{gatherPosition(c, [](P x) { return x.localNormal.x; }),
+                           gatherPosition(c, [](P x) { return x.localNormal.y; })};
+    const Vec4 localPoint{gatherPosition(c, [](P x) { return x.localPoint.x; }),
+                          gatherPosition(c, [](P x) { return x.localPoint.y; })};
+    const F4 circles = maskOf(c, [](P x) { return x.type == ManifoldType::Circles; });
+    const F4 faceA = maskOf(c, [](P x) { return x.type == ManifoldType::FaceA; });
+    const F4 zero(0.0f), one(1.0f), half(0.5f);
+
+    for (int j = 0; j < 2; ++j) {
+        const F4 active = maskOf(c, [j](P x) { return x.pointCount > j; });
+        const Vec4 local{gatherPosition(c, [j](P x) { return x.localPoints[j].x; }),
+                         gatherPosition(c, [j](P x) { return x.localPoints[j].y; })};
+        const Vec4 first{gatherPosition(c, [](P x) { return x.localPoints[0].x; }),
+                         gatherPosition(c, [](P x) { return x.localPoints[0].y; })};
+        // solverTransform of each body: xf.p = c - rotate(q, localCenter).
+        const Rot4 qA = rotations(A.a), qB = rotations(B.a);
+        const Vec4 turnedA = rotate4(qA, centerA), turnedB = rotate4(qB, centerB);
+        const Vec4 pA{A.cx - turnedA.x, A.cy - turnedA.y};
+        const Vec4 pB{B.cx - turnedB.x, B.cy - turnedB.y};
+
+        // measure(), each manifold type, then the lane's own.
+        // Circles: from centre A to centre B.
+        const Vec4 centreA = transform4(qA, pA, localPoint);
+        const Vec4 centreB = transform4(qB, pB, first);
+        const Vec4 d{centreB.x - centreA.x, centreB.y - centreA.y};
+        const F4 len(_mm_sqrt_ps((d.x * d.x + d.y * d.y).v));
+        const F4 positive = lessThan(zero, len);
+        const F4 inverse(_mm_div_ps(one.v, len.v));
+        const Vec4 circleNormal{select(positive, inverse * d.x, one),
+                                select(positive, inverse * d.y, zero)};
+        const Vec4 circlePoint{half * (centreA.x + centreB.x), half * (centreA.y + centreB.y)};
+        const F4 circleSeparation =
+            ((d.x * circleNormal.x + d.y * circleNormal.y) - radiusA) - radiusB;
+        // FaceA: A's face, B's point.
+        const Vec4 normalA = rotate4(qA, localNormal);
+        const Vec4 planeA = transform4(qA, pA, localPoint);
+        const Vec4 pointOnB = transform4(qB, pB, local);
+        const F4 faceASeparation =
+            (((pointOnB.x - planeA.x) * normalA.x + (pointOnB.y - planeA.y) * normalA.y) -
+             radiusA) -
+            radiusB;
+        // FaceB: B's face, A's point, the normal turned to point from A to B.
+        const Vec4 normalB = rotate4(qB, localNormal);
+        const Vec4 planeB = transform4(qB, pB, localPoint);
+        const Vec4 pointOnA = transform4(qA, pA, local);
+        const F4 faceBSeparation =
+            (((pointOnA.x - planeB.x) * normalB.x + (pointOnA.y - planeB.y) * normalB.y) -
+             radiusA) -
+            radiusB;
+
+        const Vec4 normal{select(circles, circleNormal.x, select(faceA, normalA.x, -normalB.x)),
+                          select(circles, circleNormal.y, select(faceA, normalA.y, -normalB.y))};
+        const Vec4 point{select(circles, circlePoint.x, select(faceA, pointOnB.x, pointOnA.x)),
+                         select(circles, circlePoint.y, select(faceA, pointOnB.y, pointOnA.y))};
+        const F4 separation =
+            select(circles, circleSeparation, select(faceA, faceASeparation, faceBSeparation));
+        store(separation, separations[j]);
+
+        const Vec4 rA{point.x - A.cx, point.y - A.cy};
+        const Vec4 rB{point.x - B.cx, point.y - B.cy};
+        const F4 C =
+            clampOf(F4(bias) * (separation + F4(kLinearSlop)), F4(-kMaxLinearCorrection), zero);
+        const F4 rnA = rA.x * normal.y - rA.y * normal.x;
+        const F4 rnB = rB.x * normal.y - rB.y * normal.x;
+        const F4 K = ((mA + mB) + iA * rnA * rnA) + iB * rnB * rnB;
+        const F4 impulse = select(lessThan(zero, K), F4(_mm_div_ps((-C).v, K.v)), zero);
+        const F4 Px = impulse * normal.x, Py = impulse * normal.y;
+        A.cx = select(active, A.cx - mA * Px, A.cx);
+        A.cy = select(active, A.cy - mA * Py, A.cy);
+        A.a = select(active, A.a - iA * (rA.x * Py - rA.y * Px), A.a);
+        B.cx = select(active, B.cx + mB * Px, B.cx);
+        B.cy = select(active, B.cy + mB * Py, B.cy);
+        B.a = select(active, B.a + iB * (rB.x * Py - rB.y * Px), B.a);
+    }
+    float ax[4], ay[4], aa[4], bx[4], by[4], ba[4];
+    store(A.cx, ax);
+    store(A.cy, ay);
+    store(A.a, aa);
+    store(B.cx, bx);
+    store(B.cy, by);
+    store(B.a, ba);
+    for (int lane = 0; lane < 4; ++lane) {
+        *poseA[lane] = {{ax[lane], ay[lane]}, aa[lane]};
+        *poseB[lane] = {{bx[lane], by[lane]}, ba[lane]};
+    }
+}
+
 }  // namespace
 
 namespace {
@@ -318,9 +483,33 @@ int ContactSolver::solveWide(IndexRange range, SolverVelocity* velocities, bool 
     return k;
 }
 
+int ContactSolver::positionSweepWide(IndexRange range, SolverPose* positions, float bias,
+                                     float& smallest) const {
+    int k = range.begin;
+    if (!wideEnabled.load(std::memory_order_relaxed)) return k;
+    for (; k + 4 <= range.end; k += 4) {
+        const ContactPositionConstraint* const four[4] = {&position_[k], &position_[k + 1],
+                                                          &position_[k + 2], &position_[k + 3]};
+        float separations[2][4];
+        positionFour(four, positions, bias, separations);
+        // Folded in the order the one-by-one sweep meets them: contact by contact, point by
+        // point (minSeparation's NaN rule makes the order matter).
+        for (int lane = 0; lane < 4; ++lane) {
+            for (int j = 0; j < four[lane]->pointCount; ++j) {
+                smallest = minSeparation(smallest, separations[j][lane]);
+            }
+        }
+    }
+    return k;
+}
+
 #else
 
 void ContactSolver::setWideSolving(bool) {}
+
+int ContactSolver::positionSweepWide(IndexRange range, SolverPose*, float, float&) const {
+    return range.begin;
+}
 
 int ContactSolver::solveWide(IndexRange range, SolverVelocity*, bool) {
     return range.begin;  // no wide path on this target: the caller solves every contact

@@ -143,9 +143,9 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
     while (result.sweeps < iterations) {
         ++result.sweeps;
         SweepTally tally;
-        forEachBatch(team, schedule.contactBatches, [&](IndexRange range) {
+        forEachBatchSaying(team, schedule.contactBatches, [&](IndexRange range, bool independent) {
             tally.minSeparation = ContactSolver::minSeparation(
-                tally.minSeparation, contacts.solvePositions(range, poses));
+                tally.minSeparation, contacts.solvePositions(range, poses, independent));
         });
         groups.forEachGroup([&](auto strategy, auto& group, int g) {
             using S = decltype(strategy);

@@ -1,7 +1,8 @@
-// The four-wide contact sweeps (src/constraints/contact_solver_wide.cpp) against the same sweeps
-// one contact at a time: a coloured island must step to the same bits either way, with every
-// kind of contact the wide path meets (two-point boxes solved as blocks, one-point discs and
-// capsules, friction, restitution) and every contact correction (NGS, Baumgarte, soft with
+// The four-wide contact sweeps, velocity, relax and NGS position
+// (src/constraints/contact_solver_wide.cpp), against the same sweeps one contact at a time: a
+// coloured island must step to the same bits either way, with every kind of contact the wide
+// path meets (two-point boxes solved as blocks, one-point discs, capsules, circle pairs, faces of
+// A and of B, friction, restitution) and every contact correction (NGS, Baumgarte, soft with
 // relax sweeps), on one worker and on two.
 #include <gtest/gtest.h>
 
