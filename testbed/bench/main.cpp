@@ -273,7 +273,15 @@ int main(int argc, char** argv) {
         for (const SuiteScene& scene : suiteScenes()) {
             if (!options.only.empty() && scene.name != options.only) continue;
             if (!options.csv) std::cerr << "timing " << scene.name << "...\n";
-            for (Row& row : runScene(scene, kinds, options)) rows.push_back(row);
+            for (Row& row : runScene(scene, kinds, options)) {
+                // As each scene is done, so that a stopped run keeps what it measured (the
+                // table at the end has them all, one-thread rows first).
+                if (!options.csv) {
+                    std::fprintf(stderr, "  %-12s %d thread%s %9.3f ms\n", row.engine.c_str(),
+                                 row.threads, row.threads == 1 ? " " : "s", row.ms);
+                }
+                rows.push_back(row);
+            }
         }
     }
     // One-thread rows first: like against like (Box2D 2.4.1 has one thread).
