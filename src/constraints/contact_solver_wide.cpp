@@ -375,6 +375,9 @@ void positionFour(const ContactPositionConstraint* const c[4], SolverPose* posit
                            gatherPosition(c, [](P x) { return x.localNormal.y; })};
     const Vec4 localPoint{gatherPosition(c, [](P x) { return x.localPoint.x; }),
                           gatherPosition(c, [](P x) { return x.localPoint.y; })};
+    // A circles manifold's centre on B (its only point, whichever point is being solved).
+    const Vec4 first{gatherPosition(c, [](P x) { return x.localPoints[0].x; }),
+                     gatherPosition(c, [](P x) { return x.localPoints[0].y; })};
     const F4 circles = maskOf(c, [](P x) { return x.type == ManifoldType::Circles; });
     const F4 faceA = maskOf(c, [](P x) { return x.type == ManifoldType::FaceA; });
     const F4 zero(0.0f), one(1.0f), half(0.5f);
@@ -383,8 +386,6 @@ void positionFour(const ContactPositionConstraint* const c[4], SolverPose* posit
         const F4 active = maskOf(c, [j](P x) { return x.pointCount > j; });
         const Vec4 local{gatherPosition(c, [j](P x) { return x.localPoints[j].x; }),
                          gatherPosition(c, [j](P x) { return x.localPoints[j].y; })};
-        const Vec4 first{gatherPosition(c, [](P x) { return x.localPoints[0].x; }),
-                         gatherPosition(c, [](P x) { return x.localPoints[0].y; })};
         // solverTransform of each body: xf.p = c - rotate(q, localCenter).
         const Rot4 qA = rotations(A.a), qB = rotations(B.a);
         const Vec4 turnedA = rotate4(qA, centerA), turnedB = rotate4(qB, centerB);
