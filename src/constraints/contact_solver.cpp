@@ -267,9 +267,8 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
                              std::min(0.0f, wm.separations[j] + kLinearSlop);
                 p.velocityBias = std::max(p.velocityBias, push);
             } else if (soft_) {
-                p.softTarget =
-                    std::min(-softness_.biasRate * std::min(0.0f, wm.separations[j] + kLinearSlop),
-                             pushSpeed_);
+                p.softTarget = softTarget(wm.separations[j]);
+                p.baseSeparation = wm.separations[j] - dot(p.rB - p.rA, c.normal);
             }
         }
 
@@ -292,6 +291,19 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
 
         velocity_[k] = c;
         if (!baumgarte_) position_[k] = pc;
+    }
+}
+
+void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* motion) {
+    for (int k = range.begin; k < range.end; ++k) {
+        ContactVelocityConstraint& c = velocity_[k];
+        const SolverMotion& A = motion[c.indexA];
+        const SolverMotion& B = motion[c.indexB];
+        for (int j = 0; j < c.pointCount; ++j) {
+            ContactVelocityPoint& p = c.points[j];
+            const Vec2 gap = (B.dp - A.dp) + (rotate(B.dq, p.rB) - rotate(A.dq, p.rA));
+            p.softTarget = softTarget(dot(gap, c.normal) + p.baseSeparation);
+        }
     }
 }
 
@@ -340,12 +352,11 @@ void ContactSolver::relax(IndexRange range, SolverVelocity* velocities, bool ind
 }
 
 void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool,
-                                  bool firstSubstep) const {
+                                  bool approachSpeeds) const {
     for (int k = range.begin; k < range.end; ++k) {
         const ContactVelocityConstraint& c = velocity_[k];
         Manifold& m = pool[c.contactIndex].manifold;
-        if (firstSubstep) {
-            // Later substeps measure what the first one left, not the hit.
+        if (approachSpeeds) {
             for (int j = 0; j < m.pointCount; ++j) {
                 m.points[j].approachSpeed = c.points[j].approachSpeed;
             }

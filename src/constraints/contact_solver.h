@@ -18,8 +18,16 @@
 //   Soft:      a spring (rows.h) with the target min(biasRate max(0, -(separation + slop)),
 //              push speed), softened, point by point; after integration, relax sweeps solve
 //              the rigid rows without it (restitution's target only).
+//
+// Soft contacts are built once a step, at the first substep (Box2D v3's way): normal, anchors
+// and masses stay the step's, and each later substep re-measures only the separation, from
+// the bodies' moves since the start of the step (SolverMotion dp, dq):
+//   s = s0 + ((dpB + dqB rB) - (dpA + dqA rA) - (rB - rA)) . n
+// exact for rigid motion of the two anchor points (rA = rB + cB - cA at the start, so the
+// anchors' gap starts at zero), the normal taken as fixed over the step.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -41,9 +49,10 @@ struct ContactVelocityPoint {
     float tangentImpulse = 0.0f;
     float normalMass = 0.0f;
     float tangentMass = 0.0f;
-    float velocityBias = 0.0f;   // restitution or Baumgarte target, m/s
-    float softTarget = 0.0f;     // soft contacts: the spring's push-out speed, m/s
-    float approachSpeed = 0.0f;  // m/s, -vn at the start of the step (hit events)
+    float velocityBias = 0.0f;    // restitution or Baumgarte target, m/s
+    float softTarget = 0.0f;      // soft contacts: the spring's push-out speed, m/s
+    float approachSpeed = 0.0f;   // m/s, -vn at the start of the step (hit events)
+    float baseSeparation = 0.0f;  // soft contacts: m, s0 - (rB - rA) . n (see above)
 };
 
 struct ContactVelocityConstraint {
@@ -93,6 +102,13 @@ public:
                  const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
                  const SlotPool<Shape>& shapes, const StepContext& step,
                  const SolverPose* positions);
+    /// Whether constraints are built once a step (soft contacts): later substeps call
+    /// updateSeparations instead of prepare, and storeImpulses only at the last.
+    bool builtOncePerStep() const { return soft_; }
+    /// Soft contacts, at a substep after the first: re-measures each point's separation from
+    /// the bodies' motion since the start of the step (indexed by solver slot) and sets its
+    /// spring's target from it.
+    void updateSeparations(IndexRange range, const SolverMotion* motion);
     /// Applies last step's impulses (scaled by step.dtRatio in prepare) before iterating.
     void warmStart(IndexRange range, SolverVelocity* velocities) const;
     /// One velocity sweep over [range). `independent`: no two of these contacts share a solver
@@ -100,8 +116,9 @@ public:
     /// (contact_solver_wide.cpp), to the same bits.
     void solveVelocities(IndexRange range, SolverVelocity* velocities, bool independent = false);
     /// Writes the accumulated impulses into the contacts' manifolds for the next warm start;
-    /// the first substep of a step also writes each point's approach speed (hit events).
-    void storeImpulses(IndexRange range, SlotPool<Contact>& pool, bool firstSubstep) const;
+    /// with `approachSpeeds` (once a step: what later substeps measure is what the first left,
+    /// not the hit), also each point's approach speed (hit events).
+    void storeImpulses(IndexRange range, SlotPool<Contact>& pool, bool approachSpeeds) const;
     /// One NGS sweep over the points of contacts [range). Returns the smallest separation
     /// measured (m, before each correction; NaN if any was NaN); 0 when there are none.
     /// `independent`: as for solveVelocities (four at a time, the same bits).
@@ -143,6 +160,11 @@ private:
     /// The separations measured are folded into `smallest` (minSeparation), which it returns.
     float positionSweep(IndexRange range, SolverPose* positions, float bias, std::int32_t movableA,
                         std::int32_t movableB, float smallest = 0.0f) const;
+
+    /// Soft contacts: the spring's push-out speed at a separation of `separation` m.
+    float softTarget(float separation) const {
+        return std::min(-softness_.biasRate * std::min(0.0f, separation + kLinearSlop), pushSpeed_);
+    }
 
     std::vector<ContactVelocityConstraint> velocity_;
     std::vector<ContactPositionConstraint> position_;

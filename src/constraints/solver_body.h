@@ -21,6 +21,14 @@ struct SolverPose {
     float a = 0.0f;
 };
 
+/// How far a solver slot has moved since the start of the step: its centre's displacement and
+/// the rotation by its angle's change. Soft contacts, built once a step, measure their
+/// separation at later substeps from these (contact_solver.h).
+struct SolverMotion {
+    Vec2 dp;
+    Rot dq;
+};
+
 /// The solver slots of a constraint's two bodies within its island.
 using BodyPair = std::array<std::int32_t, 2>;
 

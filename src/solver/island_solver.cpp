@@ -12,22 +12,33 @@ namespace pivot {
 namespace {
 
 // Copy body state into the solver slots, with private copies of the bodies that never move
-// (nothing integrates them, so a copy is simply the body's own state).
+// (nothing integrates them, so a copy is simply the body's own state); with `keepStart`, the
+// poses also into stepStart.
 void loadBodies(const Team& team, const IslandView& island, IslandWorkspace& work,
-                const SlotPool<Body>& bodies) {
+                const SlotPool<Body>& bodies, bool keepStart) {
+    const auto load = [&](std::size_t slot, const Body& b) {
+        work.positions[slot] = {b.center, b.angle};
+        work.velocities[slot] = {b.linearVelocity, b.angularVelocity};
+        if (keepStart) work.stepStart[slot] = work.positions[slot];
+    };
     const IndexRange mine = team.share(island.bodyCount);
     for (int i = mine.begin; i < mine.end; ++i) {
-        const Body& b = bodies[island.bodies[i]];
-        work.positions[i] = {b.center, b.angle};
-        work.velocities[i] = {b.linearVelocity, b.angularVelocity};
+        load(static_cast<std::size_t>(i), bodies[island.bodies[i]]);
     }
     const std::vector<std::int32_t>& copies = work.schedule.fixedCopies;
     const IndexRange myCopies = team.share(static_cast<int>(copies.size()));
     for (int k = myCopies.begin; k < myCopies.end; ++k) {
-        const Body& b = bodies[island.bodies[copies[k]]];
-        const std::size_t slot = static_cast<std::size_t>(island.bodyCount + k);
-        work.positions[slot] = {b.center, b.angle};
-        work.velocities[slot] = {b.linearVelocity, b.angularVelocity};
+        load(static_cast<std::size_t>(island.bodyCount + k), bodies[island.bodies[copies[k]]]);
+    }
+}
+
+// Where each solver slot has moved since the start of the step (for contacts built once a step).
+void measureMotion(const Team& team, IslandWorkspace& work) {
+    const IndexRange mine = team.share(static_cast<int>(work.positions.size()));
+    for (int i = mine.begin; i < mine.end; ++i) {
+        const SolverPose& now = work.positions[i];
+        const SolverPose& start = work.stepStart[i];
+        work.motion[i] = {now.c - start.c, Rot(now.a - start.a)};
     }
 }
 
@@ -260,15 +271,24 @@ void writeBack(const Team& team, const IslandView& island, const IslandWorkspace
 // poses, warm start, velocity iterations, impulses stored, integration, then the position phase
 // of each strategy. Returns what the position phase did.
 PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& work,
-                                 SolverStorage& storage, const StepContext& step, bool firstSubstep,
+                                 SolverStorage& storage, const StepContext& step, int substep,
                                  IslandReport& mine) {
     const IslandSchedule& schedule = work.schedule;
     SlotPool<Body>& bodies = storage.bodies;
+    const bool firstSubstep = substep == 0;
+    const bool lastSubstep = substep == step.substepCount - 1;
+    const bool contactsBuilt = !firstSubstep && work.contactSolver.builtOncePerStep();
     integrateVelocities(team, island, work, bodies, step);
+    if (contactsBuilt) measureMotion(team, work);
     team.sync();
-    work.contactSolver.prepare(team.share(island.contactCount), schedule.contactIds.data(),
-                               schedule.contactPairs.data(), storage.contacts, bodies,
-                               storage.shapes, step, work.positions.data());
+    const IndexRange myContacts = team.share(island.contactCount);
+    if (contactsBuilt) {
+        work.contactSolver.updateSeparations(myContacts, work.motion.data());
+    } else {
+        work.contactSolver.prepare(myContacts, schedule.contactIds.data(),
+                                   schedule.contactPairs.data(), storage.contacts, bodies,
+                                   storage.shapes, step, work.positions.data());
+    }
     prepareJoints(team, work, bodies, storage.joints, step, firstSubstep, mine);
     team.sync();
 
@@ -312,8 +332,13 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
                            velocities, work.positionScratch, step.positionIterations, step.dt);
     // After the relax sweeps, which add to the impulses (the contacts' NGS solves do not).
     storeJointImpulses(team, work, storage.joints, bodies, step.invDt, true, mine);
-    work.contactSolver.storeImpulses(team.share(island.contactCount), storage.contacts,
-                                     firstSubstep);
+    // Constraints rebuilt each substep read the impulses back from the manifolds; those built
+    // once a step keep them until its end, where they also keep the first substep's approach.
+    if (work.contactSolver.builtOncePerStep()) {
+        if (lastSubstep) work.contactSolver.storeImpulses(myContacts, storage.contacts, true);
+    } else {
+        work.contactSolver.storeImpulses(myContacts, storage.contacts, firstSubstep);
+    }
     // The next substep's set-up reads the poses and stored impulses this one wrote.
     if (step.substepCount > 1) team.sync();
     return phase;
@@ -326,6 +351,8 @@ void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
     work.schedule.reserve(bound);
     work.velocities.reserve(bound.bodies);
     work.positions.reserve(bound.bodies);
+    work.stepStart.reserve(bound.bodies);
+    work.motion.reserve(bound.bodies);
     work.positionScratch.pseudo.reserve(bound.bodies);
     work.positionScratch.xpbdStart.reserve(bound.bodies);
     work.mouseConstraints.reserve(bound.mouseJoints);
@@ -340,6 +367,8 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     const std::size_t slots = static_cast<std::size_t>(schedule.slotCount(island));
     resizeBuffer(work.velocities, slots);
     resizeBuffer(work.positions, slots);
+    resizeBuffer(work.stepStart, slots);
+    resizeBuffer(work.motion, slots);
     work.groups.resize(schedule.groupStart);
     work.contactSolver.reset(island.contactCount, step);
     resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
@@ -359,15 +388,16 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index, Isla
     mine = IslandReport{};
 
     // No sync before the first substep's forces: each member integrates the bodies it loaded.
-    loadBodies(team, island, work, bodies);
+    loadBodies(team, island, work, bodies,
+               work.contactSolver.builtOncePerStep() && step.substepCount > 1);
     // Later substeps warm-start from the substep before, of the same length.
     StepContext later = step;
     later.dtRatio = 1.0f;
     PositionPhaseResult phase;
     int positionSweeps = 0;
     for (int substep = 0; substep < step.substepCount; ++substep) {
-        phase = solveSubstep(team, island, work, storage, substep == 0 ? step : later, substep == 0,
-                             mine);
+        phase =
+            solveSubstep(team, island, work, storage, substep == 0 ? step : later, substep, mine);
         positionSweeps += phase.sweeps;
     }
     writeBack(team, island, work, bodies, mine);

@@ -44,6 +44,10 @@ struct IslandWorkspace {
     IslandSchedule schedule;
     std::vector<SolverVelocity> velocities;  // one per solver slot
     std::vector<SolverPose> positions;
+    // Contacts built once a step (soft): the poses the step started from, and each slot's
+    // motion since, measured at every later substep.
+    std::vector<SolverPose> stepStart;
+    std::vector<SolverMotion> motion;
     JointGroups groups;
     std::vector<MouseConstraint> mouseConstraints;
     ContactSolver contactSolver;
