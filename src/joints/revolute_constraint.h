@@ -8,6 +8,7 @@
 //   solveVelocity<rows>      motor, limits, then the pin; the position rows Rigid, Biased by
 //                            setBias, or Soft with the factors in `soft` (constraints/rows.h)
 //   setBias(k)               velocity bias k C from the error at the current radius vectors
+//   remeasure                at a later substep, what prepare measures at the poses
 //   restartAt(h)             re-measure radius vectors, effective mass and angle at the given
 //                            poses as at the start of a step of length h, limits unloaded
 //   solvePseudoVelocity      the velocity rows with the bias and without the motor, not
@@ -67,6 +68,13 @@ struct RevoluteConstraint {
         const Vec2 separation = preparePoint(bodies, point, poses);
         prepareAngle(bodies, angle, poses, step.invDt);
         return lengthSquared(separation);
+    }
+
+    /// A later substep: the constraint kept from the one before, its impulses as stored, is
+    /// measured again at the current poses (the same operations as in prepare).
+    void remeasure(const SolverPose* poses, const StepContext& step) {
+        preparePoint(bodies, point, poses);
+        prepareAngle(bodies, angle, poses, step.invDt);
     }
 
     /// Warm starting: impulses scale with the step, so that they keep the force they stand

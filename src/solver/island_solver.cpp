@@ -1,6 +1,7 @@
 #include "solver/island_solver.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -10,6 +11,8 @@
 namespace pivot {
 
 namespace {
+
+std::atomic<bool> jointRemeasuring{true};
 
 // Copy body state into the solver slots, with private copies of the bodies that never move
 // (nothing integrates them, so a copy is simply the body's own state); with `keepStart`, the
@@ -75,11 +78,16 @@ bool beyondLetGoSeparation(const Joint& joint, float separationSquared, const St
 // Build each joint's solver constraint in its group (no velocity is touched: the warm start
 // comes after, in warmStartJoints). The first substep of a step lets go of the joints beyond
 // their let-go separation; later substeps rebuild each constraint at the current poses from the
-// impulses the substep before stored, and keep a let-go joint inert.
+// impulses the substep before stored, or re-measure it where it already holds those
+// (kKeptAcrossSubsteps: the same values without reading the joint and its bodies again), and
+// keep a let-go joint inert.
 void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
                    SlotPool<Joint>& joints, const StepContext& step, bool firstSubstep,
                    IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
+    // Without warm starting, each substep's impulses start at zero: rebuilt.
+    const bool remeasure = !firstSubstep && step.warmStarting &&
+                           jointRemeasuring.load(std::memory_order_relaxed);
     work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
         const IndexRange mine = team.share(static_cast<int>(group.size()));
@@ -88,6 +96,17 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
             const std::int32_t jointIndex = schedule.jointIds[at];
             auto& joint = joints[jointIndex];
             auto& c = group[k];
+            using C = std::decay_t<decltype(c)>;
+            if constexpr (S::kKeptAcrossSubsteps && CanRemeasure<C>::value) {
+                if (remeasure) {
+                    if (joint.letGo) {
+                        c.makeInert();
+                    } else {
+                        c.remeasure(work.positions.data(), step);
+                    }
+                    continue;
+                }
+            }
             c = {};
             const float separationSquared = c.prepare(
                 joint, jointIndex, bodies, schedule.jointPairs[at], work.positions.data(), step);
@@ -99,7 +118,6 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                 ++report.letGoJoints;
                 c.makeInert();
             } else {
-                using C = std::decay_t<decltype(c)>;
                 const bool warm = S::kWarmStart || isVelocityOnly<C>();
                 c.startImpulses(joint, step.warmStarting && warm, step.dtRatio);
             }
@@ -345,6 +363,10 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
 }
 
 }  // namespace
+
+void setJointRemeasuring(bool enabled) {
+    jointRemeasuring = enabled;
+}
 
 void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
     work.scheduler.reserve(bound);

@@ -72,6 +72,10 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
                          IslandWorkspace& workspace, SolverStorage& storage,
                          const StepContext& step);
 
+/// For tests, process-wide: off, later substeps rebuild every joint constraint from its joint,
+/// the reference that re-measuring the kept ones (kKeptAcrossSubsteps) must match bit for bit.
+void setJointRemeasuring(bool enabled);
+
 /// Plans and solves island `index` on the calling thread.
 inline IslandReport solveIsland(const IslandSet& set, int index, IslandWorkspace& workspace,
                                 SolverStorage& storage, const StepContext& step) {

@@ -17,6 +17,10 @@
 //     relax(c, velocities)                   one rigid velocity solve without bias
 //   kStoreAfterPositionPhase               its impulses are stored after the position phase
 //                                            (relax or XPBD adds to them), not before
+//   kKeptAcrossSubsteps                    its constraints hold at a substep's end what the
+//                                            next would rebuild them with (the impulses it
+//                                            stored), so later substeps re-measure them at the
+//                                            new poses (remeasure) instead of rebuilding them
 //   kPseudoVelocityPass                    runs the pseudo-velocity pass after integration, with
 //     beginPass(c, poses, invH), solvePass(c, pseudo)
 //   kNgsSweeps                             joins the NGS sweeps of the position phase, with
@@ -27,6 +31,7 @@
 
 #include <algorithm>
 #include <type_traits>
+#include <utility>
 
 #include "constraints/rows.h"
 #include "constraints/soft_factors.h"
@@ -54,6 +59,16 @@ constexpr bool isVelocityOnly() {
     }
 }
 
+/// Joint constraints that can be re-measured at later substeps without their joint and bodies
+/// (remeasure(poses, step): the part of prepare that depends on the poses); the others are
+/// rebuilt.
+template <typename C, typename = void>
+struct CanRemeasure : std::false_type {};
+template <typename C>
+struct CanRemeasure<C, std::void_t<decltype(std::declval<C&>().remeasure(
+                           std::declval<const SolverPose*>(), std::declval<const StepContext&>()))>>
+    : std::true_type {};
+
 /// What a strategy does unless it says otherwise: rigid velocities, no bias, no position phase.
 struct StrategyDefaults {
     static constexpr bool kPseudoVelocityPass = false;
@@ -62,6 +77,7 @@ struct StrategyDefaults {
     static constexpr bool kStoreAfterPositionPhase = false;
     static constexpr bool kWarmStart = true;
     static constexpr bool kXpbdSweeps = false;
+    static constexpr bool kKeptAcrossSubsteps = false;
 
     template <typename C>
     static void prepareSoftness(C&, const Joint&, const StepContext&) {}
@@ -85,6 +101,7 @@ struct BaumgarteStrategy : StrategyDefaults {
     static constexpr PositionSolver kSolver = PositionSolver::Baumgarte;
     static constexpr const char* kName = "baumgarte";
     static constexpr float kDefaultBias = kDefaultBaumgarteBias;
+    static constexpr bool kKeptAcrossSubsteps = true;
 
     template <typename C>
     static void prepareBias(C& c, const SolverPose* poses, float invDt) {
@@ -103,6 +120,7 @@ struct PseudoVelocityStrategy : StrategyDefaults {
     static constexpr const char* kName = "pseudo_velocity";
     static constexpr float kDefaultBias = kDefaultPseudoVelocityBias;
     static constexpr bool kPseudoVelocityPass = true;
+    // Not kKeptAcrossSubsteps: the pass leaves its own accumulators in the constraint.
 
     /// The pass's set-up at the integrated poses (the velocity phase's impulses are stored by
     /// then, so the constraint's accumulators and bias are free to hold the pass's own).
@@ -124,6 +142,7 @@ struct ModifiedNgsStrategy : StrategyDefaults {
     static constexpr const char* kName = "modified_ngs";
     static constexpr float kDefaultBias = kDefaultNgsBias;
     static constexpr bool kNgsSweeps = true;
+    static constexpr bool kKeptAcrossSubsteps = true;
 
     template <typename C>
     static void beginSweeps(C& c, const SolverPose* poses) {
@@ -141,6 +160,7 @@ struct FullNgsStrategy : StrategyDefaults {
     static constexpr const char* kName = "full_ngs";
     static constexpr float kDefaultBias = kDefaultNgsBias;
     static constexpr bool kNgsSweeps = true;
+    static constexpr bool kKeptAcrossSubsteps = true;
 
     template <typename C>
     static bool solvePosition(const C& c, SolverPose* poses) {
@@ -158,6 +178,7 @@ struct SoftStepStrategy : StrategyDefaults {
     static constexpr float kDefaultBias = 0.0f;  // none: hertz and damping ratio take its place
     static constexpr bool kRelax = true;
     static constexpr bool kStoreAfterPositionPhase = true;
+    static constexpr bool kKeptAcrossSubsteps = true;
 
     template <typename C>
     static void prepareSoftness(C& c, const Joint& joint, const StepContext& step) {
@@ -192,6 +213,7 @@ struct XpbdStrategy : StrategyDefaults {
     static constexpr float kDefaultBias = 0.0f;  // none: the compliance takes its place
     static constexpr bool kWarmStart = false;
     static constexpr bool kXpbdSweeps = true;
+    // Not kKeptAcrossSubsteps: each substep's multipliers start at zero.
     static constexpr bool kStoreAfterPositionPhase = true;
 
     template <typename C>
