@@ -205,7 +205,10 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
         const Body& bodyA = bodies[contact.bodyA()];
         const Body& bodyB = bodies[contact.bodyB()];
 
-        ContactVelocityConstraint c;
+        // Built in place: a copy of a constraint assembled on the stack reads back, in wide
+        // loads, fields just written narrow, which stalls each store-to-load forward.
+        ContactVelocityConstraint& c = velocity_[k];
+        c = ContactVelocityConstraint{};
         c.indexA = pairs[k][0];
         c.indexB = pairs[k][1];
         c.contactIndex = contactIndex;
@@ -216,7 +219,9 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
         c.friction = contact.friction;
         c.pointCount = manifold.pointCount;
 
-        ContactPositionConstraint pc;
+        // Only NGS contacts keep theirs (the array is empty otherwise).
+        ContactPositionConstraint scratch;
+        ContactPositionConstraint& pc = position_.empty() ? scratch : position_[k];
         pc.indexA = c.indexA;
         pc.indexB = c.indexB;
         pc.mA = c.mA;
@@ -288,9 +293,6 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
                 c.pointCount = 1;
             }
         }
-
-        velocity_[k] = c;
-        if (!baumgarte_) position_[k] = pc;
     }
 }
 

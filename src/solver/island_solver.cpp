@@ -86,8 +86,8 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                    IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
     // Without warm starting, each substep's impulses start at zero: rebuilt.
-    const bool remeasure = !firstSubstep && step.warmStarting &&
-                           jointRemeasuring.load(std::memory_order_relaxed);
+    const bool remeasure =
+        !firstSubstep && step.warmStarting && jointRemeasuring.load(std::memory_order_relaxed);
     work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
         const IndexRange mine = team.share(static_cast<int>(group.size()));

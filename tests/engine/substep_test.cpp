@@ -129,8 +129,8 @@ TEST(Substeps, JointsKeptAcrossSubstepsStepToTheSameBitsAsRebuilt) {
     // joint (pendulum_drag), let-go joints (platformer), every joint type (weld_beam, car,
     // elevator, pulley_gear, distance_pendulum) and a coloured island (bridge_heavy is not
     // one: chain_drag's hundred links are not either; the team tests cover colours).
-    const char* names[] = {"pendulum_limit", "motor_wheel", "bridge",        "ragdoll_motorized",
-                           "pendulum_drag",  "platformer",  "weld_beam",     "car",
+    const char* names[] = {"pendulum_limit", "motor_wheel", "bridge",           "ragdoll_motorized",
+                           "pendulum_drag",  "platformer",  "weld_beam",        "car",
                            "elevator",       "pulley_gear", "distance_pendulum"};
     for (const char* name : names) {
         for (int s = 0; s < kPositionSolverCount; ++s) {
