@@ -144,8 +144,12 @@ public:
         return minSeparation >= -3.0f * kLinearSlop;
     }
 
-    /// The smaller separation, NaN winning (so a blown-up contact is never taken as solved).
-    static float minSeparation(float a, float b) { return !(b >= a) ? b : a; }
+    /// The smaller separation, a NaN on either side winning (so a blown-up contact is never
+    /// taken as solved, however its sweep's contacts are split up and folded).
+    static float minSeparation(float a, float b) {
+        if (a != a) return a;
+        return !(b >= a) ? b : a;
+    }
 
 private:
     /// Solves contacts [range.begin, returned) four at a time (a sweep's work, or with

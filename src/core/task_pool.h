@@ -13,6 +13,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/stage_board.h"
+
 namespace pivot {
 
 class TaskPool {
@@ -39,9 +41,10 @@ public:
         });
     }
 
-    /// Runs body(worker) on every worker at once (the caller is worker 0) and returns when all
-    /// have returned. Inside, workers meet with barrier(): the island solver uses this to solve
-    /// one graph colour at a time on every worker.
+    /// Runs body(worker) on the caller (worker 0) and on every worker that joins while the
+    /// caller is still in its own body(0), and returns when all of them have returned. Inside,
+    /// members share out stages through stages() (islands/team.h): the island solver solves
+    /// one graph colour at a time that way, with whoever is there.
     template <typename Body>
     void region(Body&& body) {
         if (threads_.empty()) {
@@ -52,9 +55,8 @@ public:
             [](void* context, int, int, int worker) { (*static_cast<Body*>(context))(worker); });
     }
 
-    /// Inside region(): waits until every worker has arrived. It spins a little first (the work
-    /// between two barriers is a few microseconds, less than a wake-up costs), then sleeps.
-    void barrier();
+    /// Inside region(): where its members claim the blocks of its stages (cleared for each).
+    StageBoard& stages() { return stages_; }
 
 private:
     using Trampoline = void (*)(void*, int, int, int);
@@ -68,10 +70,13 @@ private:
     std::condition_variable wake_;
     std::condition_variable done_;
     // The current job. generation_ counts jobs, so a worker can tell a new job from a spurious
-    // wake-up; busy_ counts workers still inside the job. Both are atomic so that a worker can
-    // watch for the next job, and the caller for the end of this one, without the lock.
+    // wake-up; busy_ counts workers inside the job (joined while it was open_: a worker that
+    // wakes after the caller has done its part stays out, so it never holds the caller up).
+    // Both are atomic so that a worker can watch for the next job, and the caller for the end
+    // of this one, without the lock.
     std::atomic<std::uint64_t> generation_{0};
     std::atomic<int> busy_{0};
+    bool open_ = false;
     bool stopping_ = false;
     void* context_ = nullptr;
     Trampoline trampoline_ = nullptr;
@@ -80,17 +85,9 @@ private:
     std::atomic<int> next_{0};
     // How long a waiting thread spins before it sleeps. The stages of a step follow each other
     // within tens of microseconds, less than a wake-up costs, so a worker waiting for the next
-    // job, or the caller for the end of one, watches for about kJobSpin. Members at a barrier
-    // wait for each other only a few microseconds when all have a core; when one has not (more
-    // busy threads than cores), spinning holds the core it needs, so kBarrierSpin is short.
+    // job, or the caller for the end of one, watches for about kJobSpin.
     static constexpr std::chrono::microseconds kJobSpin{100};
-    static constexpr std::chrono::microseconds kBarrierSpin{25};
-    // The region barrier: arrivals in this round, the round number, and where members sleep
-    // once they have spun for kBarrierSpin.
-    std::atomic<int> arrived_{0};
-    std::atomic<std::uint64_t> round_{0};
-    std::mutex barrierMutex_;
-    std::condition_variable barrierWake_;
+    StageBoard stages_;
 };
 
 }  // namespace pivot

@@ -1,24 +1,31 @@
 // The workers solving one island together. Every member runs the same sequence of stages (the
-// island solver's program); a stage gives each member its share of an index range, and members
-// meet at sync() before a stage that reads what another member wrote. A team of one is the
-// plain sequential solver: its share is everything and sync() is free.
+// island solver's program); a stage cuts its index range into blocks, each done by whichever
+// member claims it first (core/stage_board.h), and members wait with sync() before a stage that
+// reads what another stage wrote. A member without a core for a while holds nobody up: the
+// others take its blocks. A team of one is the plain sequential solver: its stage is one
+// range and sync() is free.
 //
-// Shares are fixed by the member's number, never by timing, and constraints solved in the same
-// stage are independent (a batch of one graph colour), so the result does not depend on the
-// size of the team.
+// Blocks are fixed by the item count, never by timing, and the items of a stage are
+// independent (constraints of one graph colour, distinct bodies), so the result depends neither
+// on the size of the team nor on who solved which block. Work that is summed per member (the
+// island report) is summed the same whatever the split; nothing else is kept per member.
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/index_range.h"
+#include "core/spin_wait.h"
+#include "core/stage_board.h"
 #include "core/task_pool.h"
 
 namespace pivot {
 
 /// Constraints [begin, end) of one array that may be solved in any order, or, if serial, only
-/// in order (on member 0).
+/// in order (by one member).
 struct Batch {
     std::int32_t begin = 0;
     std::int32_t end = 0;
@@ -29,57 +36,118 @@ class Team {
 public:
     /// A team of one, on the calling thread.
     Team() = default;
-    Team(TaskPool& pool, int member) : pool_(&pool), member_(member), size_(pool.workerCount()) {}
+    Team(TaskPool& pool, int member)
+        : board_(&pool.stages()), member_(member), size_(pool.workerCount()) {}
 
     int member() const { return member_; }
     int size() const { return size_; }
     bool leader() const { return member_ == 0; }
 
-    /// Waits for every member (after a stage whose results the next one reads).
-    void sync() const {
-        if (size_ > 1) pool_->barrier();
+    /// A stage of work on [0, count) whose items are independent: f(range) runs on the blocks
+    /// this member claims (the blocks depend on count and minBlock only). Returns once no block
+    /// is left to claim, not once all are done: sync() waits for that.
+    template <typename F>
+    void forBlocks(int count, int minBlock, F&& f) const {
+        if (count <= 0) return;
+        if (size_ == 1) {
+            f(IndexRange{0, count});
+            return;
+        }
+        const int blocks = std::clamp(count / std::max(minBlock, 1), 1,
+                                      std::min(kBlocksPerMember * size_, StageBoard::kMaxBlocks));
+        claimBlocks(blocks, [&](int b) {
+            const auto at = [&](int k) {
+                return static_cast<int>(static_cast<std::int64_t>(count) * k / blocks);
+            };
+            f(IndexRange{at(b), at(b + 1)});
+        });
     }
 
-    /// This member's share of [0, count), for work on independent items.
-    IndexRange share(int count) const { return share({0, count, false}); }
+    /// A stage over bodies or constraints [0, count) in blocks of at least kMinBlock.
+    template <typename F>
+    void forBlocks(int count, F&& f) const {
+        forBlocks(count, kMinBlock, std::forward<F>(f));
+    }
 
-    /// This member's share of a batch. A small batch goes whole to the leader: splitting it
-    /// would cost more in cache traffic than it saves.
-    IndexRange share(const Batch& batch) const {
+    /// A stage over one batch: a serial batch is one block, so one member solves it in order.
+    template <typename F>
+    void forBlocks(const Batch& batch, F&& f) const {
         const int count = batch.end - batch.begin;
-        if (size_ == 1 || batch.serial || count < kMinSplit) {
-            return leader() ? IndexRange{batch.begin, batch.end}
-                            : IndexRange{batch.begin, batch.begin};
-        }
-        const auto at = [&](int m) {
-            return batch.begin + static_cast<int>(static_cast<std::int64_t>(count) * m / size_);
+        const auto shifted = [&](IndexRange r) {
+            f(IndexRange{batch.begin + r.begin, batch.begin + r.end});
         };
-        return {at(member_), at(member_ + 1)};
+        forBlocks(count, batch.serial ? count : kMinBlock, shifted);
+    }
+
+    /// Work for one member (whichever gets there first), as a stage of one block.
+    template <typename F>
+    void once(F&& f) const {
+        forBlocks(1, 1, [&](IndexRange) { f(); });
+    }
+
+    /// Waits until every stage this member has taken part in since its last sync is done
+    /// (before a stage that reads what those wrote).
+    void sync() const {
+        for (int k = 0; k < openCount_; ++k) {
+            const Open stage = open_[k];
+            waitUntil(kSyncSpin, [&] { return board_->finished(stage.number, stage.blocks); });
+        }
+        openCount_ = 0;
     }
 
 private:
-    static constexpr int kMinSplit = 32;
-    TaskPool* pool_ = nullptr;
+    struct Open {
+        std::uint32_t number;
+        int blocks;
+    };
+
+    template <typename Run>
+    void claimBlocks(int blocks, Run&& run) const {
+        // A board slot is reused kSlots stages on: syncing before then keeps the stages this
+        // member has open apart from the ones it will open.
+        if (openCount_ == kMaxOpen) sync();
+        const std::uint32_t number = nextStage_++;
+        open_[openCount_++] = {number, blocks};
+        for (int b; (b = board_->claim(number, blocks)) >= 0;) {
+            run(b);
+            board_->finish(number);
+        }
+    }
+
+    // A stage is cut into up to this many blocks per member: enough for a member that finds
+    // the others slow to take their share, few enough that claiming costs little.
+    static constexpr int kBlocksPerMember = 4;
+    // Below this, a block costs more in hand-off and cache traffic than it saves.
+    static constexpr int kMinBlock = 32;
+    static constexpr int kMaxOpen = 8;
+    static_assert(kMaxOpen < StageBoard::kSlots, "open stages must not share a slot");
+    // Members that all have a core finish a stage within microseconds of each other.
+    static constexpr std::chrono::microseconds kSyncSpin{25};
+
+    StageBoard* board_ = nullptr;
     int member_ = 0;
     int size_ = 1;
+    mutable std::uint32_t nextStage_ = 1;  // numbered alike by every member: same program
+    mutable Open open_[kMaxOpen] = {};
+    mutable int openCount_ = 0;
 };
 
-/// Runs f(range, independent) on this member's share of each batch in turn, syncing after
-/// each; `independent` says the batch is one colour (no two of its constraints share a solver
-/// slot), which lets f solve several of them at once.
+/// Runs f(range, independent) on the blocks this member claims of each batch in turn, syncing
+/// after each; `independent` says the batch is one colour (no two of its constraints share a
+/// solver slot), which lets f solve several of them at once.
 template <typename F>
 void forEachBatchSaying(const Team& team, const std::vector<Batch>& batches, F&& f) {
     for (const Batch& batch : batches) {
-        f(team.share(batch), !batch.serial);
+        team.forBlocks(batch, [&](IndexRange range) { f(range, !batch.serial); });
         team.sync();
     }
 }
 
-/// Runs f(range) on this member's share of each batch in turn, syncing after each.
+/// Runs f(range) on the blocks this member claims of each batch in turn, syncing after each.
 template <typename F>
 void forEachBatch(const Team& team, const std::vector<Batch>& batches, F&& f) {
     for (const Batch& batch : batches) {
-        f(team.share(batch));
+        team.forBlocks(batch, f);
         team.sync();
     }
 }

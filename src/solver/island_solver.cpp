@@ -24,25 +24,28 @@ void loadBodies(const Team& team, const IslandView& island, IslandWorkspace& wor
         work.velocities[slot] = {b.linearVelocity, b.angularVelocity};
         if (keepStart) work.stepStart[slot] = work.positions[slot];
     };
-    const IndexRange mine = team.share(island.bodyCount);
-    for (int i = mine.begin; i < mine.end; ++i) {
-        load(static_cast<std::size_t>(i), bodies[island.bodies[i]]);
-    }
+    team.forBlocks(island.bodyCount, [&](IndexRange mine) {
+        for (int i = mine.begin; i < mine.end; ++i) {
+            load(static_cast<std::size_t>(i), bodies[island.bodies[i]]);
+        }
+    });
     const std::vector<std::int32_t>& copies = work.schedule.fixedCopies;
-    const IndexRange myCopies = team.share(static_cast<int>(copies.size()));
-    for (int k = myCopies.begin; k < myCopies.end; ++k) {
-        load(static_cast<std::size_t>(island.bodyCount + k), bodies[island.bodies[copies[k]]]);
-    }
+    team.forBlocks(static_cast<int>(copies.size()), [&](IndexRange mine) {
+        for (int k = mine.begin; k < mine.end; ++k) {
+            load(static_cast<std::size_t>(island.bodyCount + k), bodies[island.bodies[copies[k]]]);
+        }
+    });
 }
 
 // Where each solver slot has moved since the start of the step (for contacts built once a step).
 void measureMotion(const Team& team, IslandWorkspace& work) {
-    const IndexRange mine = team.share(static_cast<int>(work.positions.size()));
-    for (int i = mine.begin; i < mine.end; ++i) {
-        const SolverPose& now = work.positions[i];
-        const SolverPose& start = work.stepStart[i];
-        work.motion[i] = {now.c - start.c, Rot(now.a - start.a)};
-    }
+    team.forBlocks(static_cast<int>(work.positions.size()), [&](IndexRange mine) {
+        for (int i = mine.begin; i < mine.end; ++i) {
+            const SolverPose& now = work.positions[i];
+            const SolverPose& start = work.stepStart[i];
+            work.motion[i] = {now.c - start.c, Rot(now.a - start.a)};
+        }
+    });
 }
 
 // Gravity, forces and damping over one substep, on the dynamic bodies' solver velocities
@@ -50,20 +53,21 @@ void measureMotion(const Team& team, IslandWorkspace& work) {
 void integrateVelocities(const Team& team, const IslandView& island, IslandWorkspace& work,
                          const SlotPool<Body>& bodies, const StepContext& step) {
     const float h = step.dt;
-    const IndexRange mine = team.share(island.bodyCount);
-    for (int i = mine.begin; i < mine.end; ++i) {
-        const Body& b = bodies[island.bodies[i]];
-        if (b.type != BodyType::Dynamic) continue;
-        Vec2 v = work.velocities[i].v;
-        float w = work.velocities[i].w;
-        v += h * b.invMass * (b.gravityScale * b.mass * step.gravity + b.force);
-        w += h * b.invInertia * b.torque;
-        // Damping, dv/dt = -c v, integrated with the Pade approximation
-        // exp(-c h) ~ 1 / (1 + c h): stable for any c h >= 0.
-        v *= 1.0f / (1.0f + h * b.linearDamping);
-        w *= 1.0f / (1.0f + h * b.angularDamping);
-        work.velocities[i] = {v, w};
-    }
+    team.forBlocks(island.bodyCount, [&](IndexRange mine) {
+        for (int i = mine.begin; i < mine.end; ++i) {
+            const Body& b = bodies[island.bodies[i]];
+            if (b.type != BodyType::Dynamic) continue;
+            Vec2 v = work.velocities[i].v;
+            float w = work.velocities[i].w;
+            v += h * b.invMass * (b.gravityScale * b.mass * step.gravity + b.force);
+            w += h * b.invInertia * b.torque;
+            // Damping, dv/dt = -c v, integrated with the Pade approximation
+            // exp(-c h) ~ 1 / (1 + c h): stable for any c h >= 0.
+            v *= 1.0f / (1.0f + h * b.linearDamping);
+            w *= 1.0f / (1.0f + h * b.angularDamping);
+            work.velocities[i] = {v, w};
+        }
+    });
 }
 
 // Whether a step that reaches `joint` at a separation of sqrt(separationSquared) lets it go:
@@ -88,42 +92,49 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
     // Without warm starting, each substep's impulses start at zero: rebuilt.
     const bool remeasure =
         !firstSubstep && step.warmStarting && jointRemeasuring.load(std::memory_order_relaxed);
+    const SolverPose* poses = work.positions.data();
     work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
-        const IndexRange mine = team.share(static_cast<int>(group.size()));
-        for (int k = mine.begin; k < mine.end; ++k) {
-            const std::size_t at = static_cast<std::size_t>(schedule.groupStart[g] + k);
-            const std::int32_t jointIndex = schedule.jointIds[at];
-            auto& joint = joints[jointIndex];
-            auto& c = group[k];
-            using C = std::decay_t<decltype(c)>;
-            if constexpr (S::kKeptAcrossSubsteps && CanRemeasure<C>::value) {
-                if (remeasure) {
-                    if (joint.letGo) {
+        team.forBlocks(static_cast<int>(group.size()), [&](IndexRange mine) {
+            for (int k = mine.begin; k < mine.end; ++k) {
+                const std::size_t at = static_cast<std::size_t>(schedule.groupStart[g] + k);
+                const std::int32_t jointIndex = schedule.jointIds[at];
+                auto& joint = joints[jointIndex];
+                auto& c = group[k];
+                using C = std::decay_t<decltype(c)>;
+                bool remeasured = false;
+                if constexpr (S::kKeptAcrossSubsteps && CanRemeasure<C>::value) {
+                    if (remeasure) {
+                        if (joint.letGo) {
+                            c.makeInert();
+                        } else {
+                            c.remeasure(poses, step);
+                        }
+                        remeasured = true;
+                    }
+                }
+                if (!remeasured) {
+                    c = {};
+                    const float separationSquared =
+                        c.prepare(joint, jointIndex, bodies, schedule.jointPairs[at], poses, step);
+                    S::prepareSoftness(c, joint, step);
+                    if (!firstSubstep && joint.letGo) {
+                        c.makeInert();
+                    } else if (firstSubstep &&
+                               beyondLetGoSeparation(joint, separationSquared, step)) {
+                        joint.letGoFor(JointLetGoReason::Separation, std::sqrt(separationSquared));
+                        ++report.letGoJoints;
                         c.makeInert();
                     } else {
-                        c.remeasure(work.positions.data(), step);
+                        const bool warm = S::kWarmStart || isVelocityOnly<C>();
+                        c.startImpulses(joint, step.warmStarting && warm, step.dtRatio);
                     }
-                    continue;
                 }
+                // The strategy's bias from the error at these poses (the constraint's own).
+                S::prepareBias(c, poses, step.invDt);
             }
-            c = {};
-            const float separationSquared = c.prepare(
-                joint, jointIndex, bodies, schedule.jointPairs[at], work.positions.data(), step);
-            S::prepareSoftness(c, joint, step);
-            if (!firstSubstep && joint.letGo) {
-                c.makeInert();
-            } else if (firstSubstep && beyondLetGoSeparation(joint, separationSquared, step)) {
-                joint.letGoFor(JointLetGoReason::Separation, std::sqrt(separationSquared));
-                ++report.letGoJoints;
-                c.makeInert();
-            } else {
-                const bool warm = S::kWarmStart || isVelocityOnly<C>();
-                c.startImpulses(joint, step.warmStarting && warm, step.dtRatio);
-            }
-        }
+        });
     });
-    prepareVelocityBias(team, work.groups, work.positions.data(), step.invDt);
 }
 
 // A joint whose impulses (or the force and torque they stand for) went non-finite during the
@@ -136,32 +147,34 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
                         IslandReport& report) {
     work.groups.forEachGroup([&](auto strategy, auto& group, int) {
         if (decltype(strategy)::kStoreAfterPositionPhase != afterPositionPhase) return;
-        const IndexRange mine = team.share(static_cast<int>(group.size()));
-        for (int k = mine.begin; k < mine.end; ++k) {
-            const auto& c = group[k];
-            auto& joint = joints[c.jointIndex];
-            // Let go when this step prepared it: it keeps no impulse (an inert constraint's
-            // zero impulse can still be 0 * inf = NaN when its island diverged).
-            if (joint.letGo) continue;
-            c.storeImpulses(joint, invDt);
-            // The bodies are still at their start-of-step poses (written back later).
-            if (!joint.hasFiniteReactions()) {
-                joint.letGoFor(JointLetGoReason::NonFinite, joint.separation(bodies));
-                ++report.letGoJoints;
-            } else if (joint.breakForce > 0.0f || joint.breakTorque > 0.0f) {
-                // Finite components can still square past the float range: such a force is
-                // reported as the largest float.
-                const float force =
-                    std::min(length(joint.reactionForce()), std::numeric_limits<float>::max());
-                const float torque = std::fabs(joint.reactionTorque());
-                const bool forceBroke = joint.breakForce > 0.0f && force > joint.breakForce;
-                if (forceBroke || (joint.breakTorque > 0.0f && torque > joint.breakTorque)) {
-                    joint.letGoFor(forceBroke ? JointLetGoReason::Force : JointLetGoReason::Torque,
-                                   joint.separation(bodies), forceBroke ? force : torque);
+        team.forBlocks(static_cast<int>(group.size()), [&](IndexRange mine) {
+            for (int k = mine.begin; k < mine.end; ++k) {
+                const auto& c = group[k];
+                auto& joint = joints[c.jointIndex];
+                // Let go when this step prepared it: it keeps no impulse (an inert constraint's
+                // zero impulse can still be 0 * inf = NaN when its island diverged).
+                if (joint.letGo) continue;
+                c.storeImpulses(joint, invDt);
+                // The bodies are still at their start-of-step poses (written back later).
+                if (!joint.hasFiniteReactions()) {
+                    joint.letGoFor(JointLetGoReason::NonFinite, joint.separation(bodies));
                     ++report.letGoJoints;
+                } else if (joint.breakForce > 0.0f || joint.breakTorque > 0.0f) {
+                    // Finite components can still square past the float range: such a force is
+                    // reported as the largest float.
+                    const float force =
+                        std::min(length(joint.reactionForce()), std::numeric_limits<float>::max());
+                    const float torque = std::fabs(joint.reactionTorque());
+                    const bool forceBroke = joint.breakForce > 0.0f && force > joint.breakForce;
+                    if (forceBroke || (joint.breakTorque > 0.0f && torque > joint.breakTorque)) {
+                        joint.letGoFor(
+                            forceBroke ? JointLetGoReason::Force : JointLetGoReason::Torque,
+                            joint.separation(bodies), forceBroke ? force : torque);
+                        ++report.letGoJoints;
+                    }
                 }
             }
-        }
+        });
     });
 }
 
@@ -194,23 +207,24 @@ void integratePositions(const Team& team, IslandWorkspace& work, const StepConte
     const float substeps = static_cast<float>(step.substepCount);
     const float maxTranslation = kMaxTranslation / substeps;
     const float maxRotation = kMaxRotation / substeps;
-    const IndexRange mine = team.share(static_cast<int>(work.velocities.size()));
-    for (int i = mine.begin; i < mine.end; ++i) {
-        SolverVelocity& vel = work.velocities[i];
-        SolverPose& pos = work.positions[i];
-        Vec2 translation = h * vel.v;
-        if (dot(translation, translation) > maxTranslation * maxTranslation) {
-            vel.v *= maxTranslation / length(translation);
-            ++report.translationClamps;
+    team.forBlocks(static_cast<int>(work.velocities.size()), [&](IndexRange mine) {
+        for (int i = mine.begin; i < mine.end; ++i) {
+            SolverVelocity& vel = work.velocities[i];
+            SolverPose& pos = work.positions[i];
+            Vec2 translation = h * vel.v;
+            if (dot(translation, translation) > maxTranslation * maxTranslation) {
+                vel.v *= maxTranslation / length(translation);
+                ++report.translationClamps;
+            }
+            float rotation = h * vel.w;
+            if (rotation * rotation > maxRotation * maxRotation) {
+                vel.w *= maxRotation / std::fabs(rotation);
+                ++report.rotationClamps;
+            }
+            pos.c += h * vel.v;
+            pos.a += h * vel.w;
         }
-        float rotation = h * vel.w;
-        if (rotation * rotation > maxRotation * maxRotation) {
-            vel.w *= maxRotation / std::fabs(rotation);
-            ++report.rotationClamps;
-        }
-        pos.c += h * vel.v;
-        pos.a += h * vel.w;
-    }
+    });
 }
 
 // Bodies slower than the sleep tolerances accumulate rest time; once every body of the island
@@ -250,39 +264,40 @@ bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepCon
 // API would accept (angleWithinLimits, holdAtWorldEdge).
 void writeBack(const Team& team, const IslandView& island, const IslandWorkspace& work,
                SlotPool<Body>& bodies, IslandReport& report) {
-    const IndexRange mine = team.share(island.bodyCount);
-    for (int i = mine.begin; i < mine.end; ++i) {
-        Body& b = bodies[island.bodies[i]];
-        if (b.type == BodyType::Static) continue;
-        restartSweep(b);  // the step's motion starts where the body was (continuous collision)
-        const SolverPose& p = work.positions[i];
-        const SolverVelocity& v = work.velocities[i];
-        if (!isFinite(p.c) || !std::isfinite(p.a) || !isFinite(v.v) || !std::isfinite(v.w)) {
-            // A kinematic body keeps the velocity its owner set; a dynamic one stops.
-            if (b.type == BodyType::Dynamic) {
-                b.linearVelocity = Vec2{};
-                b.angularVelocity = 0.0f;
+    team.forBlocks(island.bodyCount, [&](IndexRange mine) {
+        for (int i = mine.begin; i < mine.end; ++i) {
+            Body& b = bodies[island.bodies[i]];
+            if (b.type == BodyType::Static) continue;
+            restartSweep(b);  // the step's motion starts where the body was (continuous collision)
+            const SolverPose& p = work.positions[i];
+            const SolverVelocity& v = work.velocities[i];
+            if (!isFinite(p.c) || !std::isfinite(p.a) || !isFinite(v.v) || !std::isfinite(v.w)) {
+                // A kinematic body keeps the velocity its owner set; a dynamic one stops.
+                if (b.type == BodyType::Dynamic) {
+                    b.linearVelocity = Vec2{};
+                    b.angularVelocity = 0.0f;
+                }
+                b.discarded = true;
+                ++report.discardedBodies;
+                continue;
             }
-            b.discarded = true;
-            ++report.discardedBodies;
-            continue;
+            b.center = flushDenormal(p.c);
+            b.angle = flushDenormal(angleWithinLimits(p.a));
+            // Relax sweeps (soft step) act after integration's limit: what they leave is held
+            // within the speeds the API takes, and counted with the clamps.
+            Vec2 linear = v.v;
+            float angular = v.w;
+            if (holdLinearSpeed(linear)) ++report.translationClamps;
+            if (holdAngularSpeed(angular)) ++report.rotationClamps;
+            b.linearVelocity = flushDenormal(linear);
+            b.angularVelocity = flushDenormal(angular);
+            synchronizeTransform(b);
+            b.xf.p = flushDenormal(b.xf.p);
+            const bool inside =
+                std::fabs(b.xf.p.x) <= kMaxCoordinate && std::fabs(b.xf.p.y) <= kMaxCoordinate;
+            if (!inside && holdAtWorldEdge(b)) ++report.edgeBodies;
         }
-        b.center = flushDenormal(p.c);
-        b.angle = flushDenormal(angleWithinLimits(p.a));
-        // Relax sweeps (soft step) act after integration's limit: what they leave is held
-        // within the speeds the API takes, and counted with the clamps.
-        Vec2 linear = v.v;
-        float angular = v.w;
-        if (holdLinearSpeed(linear)) ++report.translationClamps;
-        if (holdAngularSpeed(angular)) ++report.rotationClamps;
-        b.linearVelocity = flushDenormal(linear);
-        b.angularVelocity = flushDenormal(angular);
-        synchronizeTransform(b);
-        b.xf.p = flushDenormal(b.xf.p);
-        const bool inside =
-            std::fabs(b.xf.p.x) <= kMaxCoordinate && std::fabs(b.xf.p.y) <= kMaxCoordinate;
-        if (!inside && holdAtWorldEdge(b)) ++report.edgeBodies;
-    }
+    });
 }
 
 // One substep (the whole step when there is one): forces, constraints built at the current
@@ -299,14 +314,15 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
     integrateVelocities(team, island, work, bodies, step);
     if (contactsBuilt) measureMotion(team, work);
     team.sync();
-    const IndexRange myContacts = team.share(island.contactCount);
-    if (contactsBuilt) {
-        work.contactSolver.updateSeparations(myContacts, work.motion.data());
-    } else {
-        work.contactSolver.prepare(myContacts, schedule.contactIds.data(),
-                                   schedule.contactPairs.data(), storage.contacts, bodies,
-                                   storage.shapes, step, work.positions.data());
-    }
+    team.forBlocks(island.contactCount, [&](IndexRange range) {
+        if (contactsBuilt) {
+            work.contactSolver.updateSeparations(range, work.motion.data());
+        } else {
+            work.contactSolver.prepare(range, schedule.contactIds.data(),
+                                       schedule.contactPairs.data(), storage.contacts, bodies,
+                                       storage.shapes, step, work.positions.data());
+        }
+    });
     prepareJoints(team, work, bodies, storage.joints, step, firstSubstep, mine);
     team.sync();
 
@@ -318,16 +334,16 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
     warmStartJoints(team, work.groups, schedule, velocities);
     const bool hasMouse = island.mouseCount > 0;
     if (hasMouse) {
-        if (team.leader()) prepareMouseJoints(island, work, bodies, storage.mouseJoints, step);
+        team.once([&] { prepareMouseJoints(island, work, bodies, storage.mouseJoints, step); });
         team.sync();
     }
     for (int it = 0; it < step.velocityIterations; ++it) {
         // A mouse joint is the user's hand: solved first, so the rigid joints and contacts have
         // the last word on what the drag may do to them.
         if (hasMouse) {
-            if (team.leader()) {
+            team.once([&] {
                 for (MouseConstraint& c : work.mouseConstraints) solveMouseVelocity(c, velocities);
-            }
+            });
             team.sync();
         }
         solveVelocitySweep(team, work.groups, schedule, velocities);
@@ -337,28 +353,33 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
     }
 
     storeJointImpulses(team, work, storage.joints, bodies, step.invDt, false, mine);
-    if (team.leader()) {
-        for (const MouseConstraint& c : work.mouseConstraints) {
-            storage.mouseJoints[c.jointIndex].impulse = isFinite(c.impulse) ? c.impulse : Vec2{};
-        }
+    if (hasMouse) {
+        team.once([&] {
+            for (const MouseConstraint& c : work.mouseConstraints) {
+                storage.mouseJoints[c.jointIndex].impulse =
+                    isFinite(c.impulse) ? c.impulse : Vec2{};
+            }
+        });
     }
     integratePositions(team, work, step, mine);
     team.sync();
 
-    PositionPhaseResult phase =
-        solvePositionPhase(team, work.groups, schedule, work.contactSolver, work.positions.data(),
-                           velocities, work.positionScratch, step.positionIterations, step.dt);
+    PositionPhaseResult phase = solvePositionPhase(
+        team, work.groups, schedule, work.contactSolver, work.positions.data(), velocities,
+        work.positionScratch, step.positionIterations, step.dt, substep);
     // After the relax sweeps, which add to the impulses (the contacts' NGS solves do not).
     storeJointImpulses(team, work, storage.joints, bodies, step.invDt, true, mine);
     // Constraints rebuilt each substep read the impulses back from the manifolds; those built
     // once a step keep them until its end, where they also keep the first substep's approach.
-    if (work.contactSolver.builtOncePerStep()) {
-        if (lastSubstep) work.contactSolver.storeImpulses(myContacts, storage.contacts, true);
-    } else {
-        work.contactSolver.storeImpulses(myContacts, storage.contacts, firstSubstep);
+    const bool builtOnce = work.contactSolver.builtOncePerStep();
+    if (!builtOnce || lastSubstep) {
+        team.forBlocks(island.contactCount, [&](IndexRange range) {
+            work.contactSolver.storeImpulses(range, storage.contacts, builtOnce || firstSubstep);
+        });
     }
-    // The next substep's set-up reads the poses and stored impulses this one wrote.
-    if (step.substepCount > 1) team.sync();
+    // The next substep's set-up reads the poses and stored impulses this one wrote; the write
+    // back, the bodies the let-go joints above measured their separation on.
+    team.sync();
     return phase;
 }
 
@@ -396,22 +417,22 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
     resizeBuffer(work.positionScratch.pseudo, slots);
     resizeBuffer(work.positionScratch.xpbdStart, slots);
-    for (std::vector<SweepTally>& round : work.positionScratch.tallies) {
-        resizeBuffer(round, static_cast<std::size_t>(teamSize));
-    }
+    work.positionScratch.clearSweepFlags(static_cast<std::size_t>(step.substepCount) *
+                                         static_cast<std::size_t>(step.positionIterations));
     resizeBuffer(work.memberReports, static_cast<std::size_t>(teamSize));
+    std::fill(work.memberReports.begin(), work.memberReports.end(), IslandReport{});
 }
 
 IslandReport solveIsland(const Team& team, const IslandSet& set, int index, IslandWorkspace& work,
                          SolverStorage& storage, const StepContext& step) {
     const IslandView island = set.view(index);
     SlotPool<Body>& bodies = storage.bodies;
+    // Zeroed by planIsland: a member that joins late, or not at all, adds nothing.
     IslandReport& mine = work.memberReports[team.member()];
-    mine = IslandReport{};
 
-    // No sync before the first substep's forces: each member integrates the bodies it loaded.
     loadBodies(team, island, work, bodies,
                work.contactSolver.builtOncePerStep() && step.substepCount > 1);
+    team.sync();
     // Later substeps warm-start from the substep before, of the same length.
     StepContext later = step;
     later.dtRatio = 1.0f;

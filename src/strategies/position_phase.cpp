@@ -14,15 +14,18 @@ void solvePseudoVelocityPass(const Team& team, JointGroups& groups, const Island
         any = any || (decltype(strategy)::kPseudoVelocityPass && !group.empty());
     });
     if (!any) return;
-    const IndexRange slots = team.share(static_cast<int>(pseudo.size()));
-    std::fill(pseudo.begin() + slots.begin, pseudo.begin() + slots.end, SolverVelocity{});
+    const int slotCount = static_cast<int>(pseudo.size());
+    team.forBlocks(slotCount, [&](IndexRange slots) {
+        std::fill(pseudo.begin() + slots.begin, pseudo.begin() + slots.end, SolverVelocity{});
+    });
 
     const float invH = 1.0f / h;
     groups.forEachGroup([&](auto strategy, auto& group, int) {
         using S = decltype(strategy);
         if constexpr (S::kPseudoVelocityPass) {
-            const IndexRange mine = team.share(static_cast<int>(group.size()));
-            for (int k = mine.begin; k < mine.end; ++k) S::beginPass(group[k], poses, invH);
+            team.forBlocks(static_cast<int>(group.size()), [&](IndexRange mine) {
+                for (int k = mine.begin; k < mine.end; ++k) S::beginPass(group[k], poses, invH);
+            });
         }
     });
     team.sync();
@@ -39,10 +42,12 @@ void solvePseudoVelocityPass(const Team& team, JointGroups& groups, const Island
         });
     }
     // Bodies no pass joint touches have zero pseudo velocity: adding it is a no-op.
-    for (int i = slots.begin; i < slots.end; ++i) {
-        poses[i].c += h * pseudo[i].v;
-        poses[i].a += h * pseudo[i].w;
-    }
+    team.forBlocks(slotCount, [&](IndexRange slots) {
+        for (int i = slots.begin; i < slots.end; ++i) {
+            poses[i].c += h * pseudo[i].v;
+            poses[i].a += h * pseudo[i].w;
+        }
+    });
     team.sync();
 }
 
@@ -79,8 +84,10 @@ void solveXpbdSweeps(const Team& team, JointGroups& groups, const IslandSchedule
         any = any || (decltype(strategy)::kXpbdSweeps && !group.empty());
     });
     if (!any || iterations == 0) return;
-    const IndexRange slots = team.share(static_cast<int>(start.size()));
-    std::copy(poses + slots.begin, poses + slots.end, start.begin() + slots.begin);
+    const int slotCount = static_cast<int>(start.size());
+    team.forBlocks(slotCount, [&](IndexRange slots) {
+        std::copy(poses + slots.begin, poses + slots.end, start.begin() + slots.begin);
+    });
     team.sync();
     for (int it = 0; it < iterations; ++it) {
         groups.forEachGroup([&](auto strategy, auto& group, int g) {
@@ -98,16 +105,19 @@ void solveXpbdSweeps(const Team& team, JointGroups& groups, const IslandSchedule
     groups.forEachGroup([&](auto strategy, auto& group, int) {
         using S = decltype(strategy);
         if constexpr (S::kXpbdSweeps) {
-            const IndexRange mine = team.share(static_cast<int>(group.size()));
-            for (int k = mine.begin; k < mine.end; ++k) group[k].takeXpbdReactions(invH);
+            team.forBlocks(static_cast<int>(group.size()), [&](IndexRange mine) {
+                for (int k = mine.begin; k < mine.end; ++k) group[k].takeXpbdReactions(invH);
+            });
         }
     });
     // The moves become motion (position-based dynamics derives velocities from positions).
     // Bodies no XPBD joint moved get zero.
-    for (int i = slots.begin; i < slots.end; ++i) {
-        velocities[i].v += invH * (poses[i].c - start[i].c);
-        velocities[i].w += invH * (poses[i].a - start[i].a);
-    }
+    team.forBlocks(slotCount, [&](IndexRange slots) {
+        for (int i = slots.begin; i < slots.end; ++i) {
+            velocities[i].v += invH * (poses[i].c - start[i].c);
+            velocities[i].w += invH * (poses[i].a - start[i].a);
+        }
+    });
     team.sync();
 }
 
@@ -116,7 +126,8 @@ void solveXpbdSweeps(const Team& team, JointGroups& groups, const IslandSchedule
 PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
                                        const IslandSchedule& schedule, ContactSolver& contacts,
                                        SolverPose* poses, SolverVelocity* velocities,
-                                       PositionPhaseScratch& scratch, int iterations, float h) {
+                                       PositionPhaseScratch& scratch, int iterations, float h,
+                                       int substep) {
     solveRelaxSweeps(team, groups, schedule, contacts, velocities, iterations);
     solvePseudoVelocityPass(team, groups, schedule, poses, scratch.pseudo, iterations, h);
     solveXpbdSweeps(team, groups, schedule, poses, velocities, scratch.xpbdStart, iterations, h);
@@ -134,18 +145,23 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
     groups.forEachGroup([&](auto strategy, auto& group, int) {
         using S = decltype(strategy);
         if constexpr (S::kNgsSweeps) {
-            const IndexRange mine = team.share(static_cast<int>(group.size()));
-            for (int k = mine.begin; k < mine.end; ++k) S::beginSweeps(group[k], poses);
+            team.forBlocks(static_cast<int>(group.size()), [&](IndexRange mine) {
+                for (int k = mine.begin; k < mine.end; ++k) S::beginSweeps(group[k], poses);
+            });
         }
     });
     team.sync();
 
+    // A sweep is solved when no block of it found a contact out of tolerance (NaN included)
+    // or a joint beyond slop: the same answer however the sweep was cut into blocks.
     while (result.sweeps < iterations) {
+        std::atomic<std::uint8_t>& failed =
+            scratch.sweepFailed[static_cast<std::size_t>(substep * iterations + result.sweeps)];
         ++result.sweeps;
-        SweepTally tally;
         forEachBatchSaying(team, schedule.contactBatches, [&](IndexRange range, bool independent) {
-            tally.minSeparation = ContactSolver::minSeparation(
-                tally.minSeparation, contacts.solvePositions(range, poses, independent));
+            const float smallest = contacts.solvePositions(range, poses, independent);
+            if (!ContactSolver::withinTolerance(smallest))
+                failed.store(1, std::memory_order_relaxed);
         });
         groups.forEachGroup([&](auto strategy, auto& group, int g) {
             using S = decltype(strategy);
@@ -158,22 +174,12 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
                         bool ok = S::solvePosition(group[k], poses);
                         withinSlop = withinSlop && ok;
                     }
-                    tally.jointsWithinSlop = tally.jointsWithinSlop && withinSlop;
+                    if (!withinSlop) failed.store(1, std::memory_order_relaxed);
                 });
             }
         });
-        if (team.size() > 1) {
-            std::vector<SweepTally>& round = scratch.tallies[result.sweeps & 1];
-            round[team.member()] = tally;
-            team.sync();
-            tally = SweepTally{};
-            for (const SweepTally& t : round) {
-                tally.minSeparation =
-                    ContactSolver::minSeparation(tally.minSeparation, t.minSeparation);
-                tally.jointsWithinSlop = tally.jointsWithinSlop && t.jointsWithinSlop;
-            }
-        }
-        if (ContactSolver::withinTolerance(tally.minSeparation) && tally.jointsWithinSlop) {
+        // Every block of the sweep is finished (the batches' syncs): its flags are in.
+        if (failed.load(std::memory_order_relaxed) == 0) {
             result.solved = true;
             break;
         }

@@ -15,6 +15,9 @@
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "constraints/contact_solver.h"
@@ -30,25 +33,32 @@ struct PositionPhaseResult {
     bool solved = false;  ///< every NGS joint and contact ended within tolerance
 };
 
-/// One member's tally of an NGS sweep.
-struct SweepTally {
-    float minSeparation = 0.0f;
-    bool jointsWithinSlop = true;
-};
-
-/// The position phase's scratch. Tallies alternate between two rounds, so that a member can
-/// publish one sweep's tally while another still reads the previous sweep's.
+/// The position phase's scratch.
 struct PositionPhaseScratch {
-    std::vector<SolverVelocity> pseudo;              // one per solver slot
-    std::vector<SolverPose> xpbdStart;               // one per solver slot
-    std::array<std::vector<SweepTally>, 2> tallies;  // one per member
+    std::vector<SolverVelocity> pseudo;  // one per solver slot
+    std::vector<SolverPose> xpbdStart;   // one per solver slot
+    // One flag per NGS sweep of the island's step (substeps x iterations), set by any block of
+    // the sweep that found something out of tolerance. Each is written in one sweep only and
+    // read after it by every member, however late: flags are never reused within a step.
+    std::unique_ptr<std::atomic<std::uint8_t>[]> sweepFailed;
+    std::size_t sweepFlags = 0;  // allocated
+    /// Room for `count` flags, all clear. On one thread, before the island is solved.
+    void clearSweepFlags(std::size_t count) {
+        if (count > sweepFlags) {
+            sweepFailed.reset(new std::atomic<std::uint8_t>[count]);
+            sweepFlags = count;
+        }
+        for (std::size_t i = 0; i < count; ++i) sweepFailed[i].store(0, std::memory_order_relaxed);
+    }
 };
 
-/// Runs the phase. An island with nothing for NGS to check counts as solved. `scratch` is
-/// sized by the caller (pseudo: the island's solver slots; tallies: the team's members).
+/// Runs the phase of substep `substep`. An island with nothing for NGS to check counts as
+/// solved. `scratch` is sized by the caller (pseudo and xpbdStart: the island's solver slots;
+/// sweep flags: substeps x iterations, clear).
 PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
                                        const IslandSchedule& schedule, ContactSolver& contacts,
                                        SolverPose* poses, SolverVelocity* velocities,
-                                       PositionPhaseScratch& scratch, int iterations, float h);
+                                       PositionPhaseScratch& scratch, int iterations, float h,
+                                       int substep);
 
 }  // namespace pivot

@@ -9,21 +9,15 @@ template <typename S, typename C>
 void sweepGroup(const Team& team, const std::vector<Batch>& batches, C* constraints,
                 SolverVelocity* velocities) {
     for (const Batch& batch : batches) {
-        const IndexRange range = team.share(batch);
-        for (int k = range.begin; k < range.end; ++k) S::solveVelocity(constraints[k], velocities);
+        team.forBlocks(batch, [&](IndexRange range) {
+            for (int k = range.begin; k < range.end; ++k) {
+                S::solveVelocity(constraints[k], velocities);
+            }
+        });
         team.sync();
     }
 }
 }  // namespace
-
-void prepareVelocityBias(const Team& team, JointGroups& groups, const SolverPose* poses,
-                         float invDt) {
-    groups.forEachGroup([&](auto strategy, auto& group, int) {
-        using S = decltype(strategy);
-        const IndexRange mine = team.share(static_cast<int>(group.size()));
-        for (int k = mine.begin; k < mine.end; ++k) S::prepareBias(group[k], poses, invDt);
-    });
-}
 
 void warmStartJoints(const Team& team, JointGroups& groups, const IslandSchedule& schedule,
                      SolverVelocity* velocities) {

@@ -12,12 +12,6 @@
 
 namespace pivot {
 
-/// After every joint is built: each strategy's bias set-up (Baumgarte's beta / h of the errors
-/// measured at the start of the step). Independent per joint: each member does its share, no
-/// sync.
-void prepareVelocityBias(const Team& team, JointGroups& groups, const SolverPose* poses,
-                         float invDt);
-
 /// Applies every joint's warm-start impulse, group by group.
 void warmStartJoints(const Team& team, JointGroups& groups, const IslandSchedule& schedule,
                      SolverVelocity* velocities);

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
+#include <thread>
 #include <random>
 #include <set>
 #include <type_traits>
@@ -11,6 +13,7 @@
 
 #include "islands/graph_coloring.h"
 #include "islands/island_schedule.h"
+#include "islands/team.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -279,6 +282,57 @@ std::uint64_t pyramidHash(int workers, ContactCorrection correction, int steps, 
 }
 
 }  // namespace
+
+namespace {
+
+// Runs `stages` stages of `items` items on a team of the pool's workers; member 1 first waits
+// for `arrive` when given. Returns how many times each item was done, and counts the blocks
+// member 1 did.
+std::vector<int> runStages(TaskPool& pool, int stages, int items, std::atomic<bool>* arrive,
+                           int& lateBlocks) {
+    std::vector<int> done(static_cast<std::size_t>(items), 0);
+    std::atomic<int> late{0};
+    std::atomic<bool> leaderFinished{false};
+    pool.region([&](int member) {
+        const Team team(pool, member);
+        if (member == 1 && arrive) {
+            while (!arrive->load()) std::this_thread::yield();
+        }
+        for (int s = 0; s < stages; ++s) {
+            team.forBlocks(items, [&](IndexRange r) {
+                for (int i = r.begin; i < r.end; ++i) ++done[static_cast<std::size_t>(i)];
+                if (member == 1) ++late;
+            });
+            team.sync();
+        }
+        if (member == 0) leaderFinished = true;
+        if (member == 0 && arrive) arrive->store(true);
+    });
+    lateBlocks = late.load();
+    EXPECT_TRUE(leaderFinished.load());
+    return done;
+}
+
+}  // namespace
+
+TEST(TeamSolver, EveryBlockOfEveryStageIsDoneOnce) {
+    TaskPool pool(2);
+    int lateBlocks = 0;
+    const std::vector<int> done = runStages(pool, 500, 1000, nullptr, lateBlocks);
+    EXPECT_EQ(std::count(done.begin(), done.end(), 500), 1000);
+}
+
+TEST(TeamSolver, AMemberThatHasNotArrivedHoldsNobodyUp) {
+    // Member 1 arrives only once the leader has run every stage (as a worker without a core
+    // would): members that waited for each other at each stage would never finish. The
+    // leader does every block; member 1 then finds its stages done.
+    TaskPool pool(2);
+    std::atomic<bool> arrive{false};
+    int lateBlocks = -1;
+    const std::vector<int> done = runStages(pool, 300, 1000, &arrive, lateBlocks);
+    EXPECT_EQ(std::count(done.begin(), done.end(), 300), 1000);
+    EXPECT_EQ(lateBlocks, 0);
+}
 
 TEST(TeamSolver, BigIslandsAreColoured) {
     // The scenes below must really exercise the coloured path.
