@@ -150,7 +150,7 @@ void ContactManager::updateContacts() {
     endEvents_.reserve(2 * static_cast<std::size_t>(contacts_.capacity()));
     sensorBeginEvents_.reserve(static_cast<std::size_t>(contacts_.capacity()));
     sensorEndEvents_.reserve(static_cast<std::size_t>(contacts_.capacity()));
-    pool_.parallelFor(contacts_.capacity(), 512, [&](int begin, int end, int) {
+    pool_.parallelFor(contacts_.capacity(), 1024, [&](int begin, int end, int) {
         for (std::int32_t index = begin; index < end; ++index) {
             std::uint8_t& outcome = contactOutcomes_[index];
             outcome = kKeep;
