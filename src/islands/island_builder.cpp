@@ -2,13 +2,74 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 
 #include "core/buffer.h"
 
 namespace pivot {
 
+namespace {
+
+std::atomic<IslandBuilder::ContactReading> contactReading{IslandBuilder::ContactReading::Auto};
+
+// The table reads every contact of the world once, streamed; the lists, each contact of an
+// awake body twice, a miss each. The table pays once this share of the bodies is awake.
+constexpr std::size_t kBodiesPerAwakeBodyForTable = 4;
+
+}  // namespace
+
+void IslandBuilder::setContactReading(ContactReading reading) {
+    contactReading = reading;
+}
+
+void IslandBuilder::tabulateContacts(const SlotPool<Contact>& contacts, std::int32_t bodyCapacity) {
+    solid_.clear();
+    const std::size_t bodySlots = static_cast<std::size_t>(bodyCapacity);
+    resizeBuffer(tableStart_, bodySlots + 1);
+    std::fill(tableStart_.begin(), tableStart_.end(), 0);
+    for (std::int32_t index = 0; index < contacts.capacity(); ++index) {
+        if (!contacts.isAlive(index)) continue;
+        const Contact& c = contacts[index];
+        if (!c.touching || c.sensor || !c.enabled) continue;
+        solid_.push_back({c.serial, index, {c.bodyA(), c.bodyB()}});
+        ++tableStart_[static_cast<std::size_t>(c.bodyA()) + 1];
+        ++tableStart_[static_cast<std::size_t>(c.bodyB()) + 1];
+    }
+    for (std::size_t b = 0; b < bodySlots; ++b) tableStart_[b + 1] += tableStart_[b];
+    resizeBuffer(table_, static_cast<std::size_t>(tableStart_[bodySlots]));
+    // Filled from the back in reverse slot order: where slots were taken in the order the
+    // contacts were made (no churn), each body's entries come out newest first already.
+    resizeBuffer(tableFill_, bodySlots);
+    std::copy(tableStart_.begin() + 1, tableStart_.end(), tableFill_.begin());
+    for (auto it = solid_.rbegin(); it != solid_.rend(); ++it) {
+        for (int side = 0; side < 2; ++side) {
+            const std::size_t body = static_cast<std::size_t>(it->bodies[side]);
+            table_[static_cast<std::size_t>(--tableFill_[body])] = {
+                it->serial, edgeKey(it->index, side), it->bodies[1 - side]};
+        }
+    }
+    const auto newerFirst = [](const ContactEntry& x, const ContactEntry& y) {
+        return x.serial > y.serial;
+    };
+    for (std::size_t b = 0; b < bodySlots; ++b) {
+        const auto first = table_.begin() + tableStart_[b];
+        const auto last = table_.begin() + tableStart_[b + 1];
+        if (last - first > 1 && !std::is_sorted(first, last, newerFirst)) {
+            std::sort(first, last, newerFirst);
+        }
+    }
+}
+
 void IslandBuilder::build(SolverStorage& storage, IslandSet& set) {
     SlotPool<Body>& bodies = storage.bodies;
+    // Last step's awake bodies stand for this step's (the choice changes no result).
+    const ContactReading reading = contactReading.load(std::memory_order_relaxed);
+    useTable_ =
+        reading == ContactReading::Table ||
+        (reading == ContactReading::Auto && set.bodies.size() * kBodiesPerAwakeBodyForTable >=
+                                                static_cast<std::size_t>(bodies.size()));
+    if (useTable_) tabulateContacts(storage.contacts, bodies.capacity());
+
     set.clear();
     // Cleared, and grown (at least twofold, buffer.h) when the pools have grown.
     const auto clear = [](std::vector<std::uint8_t>& marks, std::int32_t size) {
@@ -74,19 +135,33 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet
             set.mouseBodies.push_back(self);
         }
 
-        for (std::int32_t key = body.contactList; key != -1;) {
-            std::int32_t contactIndex = edgeOwner(key);
-            const Contact& contact = storage.contacts[contactIndex];
-            int side = edgeSide(key);
-            key = contact.edges[side].nextKey;
-            if (contactVisited_[contactIndex] || !contact.touching || contact.sensor ||
-                !contact.enabled) {
-                continue;
-            }
+        const auto touch = [&](std::int32_t key, std::int32_t otherBody) {
+            const std::int32_t contactIndex = edgeOwner(key);
+            const int side = edgeSide(key);
             contactVisited_[contactIndex] = 1;
-            std::int32_t other = reach(contact.edges[1 - side].body, storage, set, range.bodyBegin);
+            std::int32_t other = reach(otherBody, storage, set, range.bodyBegin);
             set.contacts.push_back(contactIndex);
             set.contactBodies.push_back(side == 0 ? BodyPair{self, other} : BodyPair{other, self});
+        };
+        if (useTable_) {
+            const std::size_t b = static_cast<std::size_t>(bodyIndex);
+            for (std::int32_t e = tableStart_[b]; e < tableStart_[b + 1]; ++e) {
+                const ContactEntry& entry = table_[static_cast<std::size_t>(e)];
+                if (!contactVisited_[edgeOwner(entry.key)]) touch(entry.key, entry.other);
+            }
+        } else {
+            for (std::int32_t key = body.contactList; key != -1;) {
+                const std::int32_t contactIndex = edgeOwner(key);
+                const Contact& contact = storage.contacts[contactIndex];
+                const int side = edgeSide(key);
+                const std::int32_t here = key;
+                key = contact.edges[side].nextKey;
+                if (contactVisited_[contactIndex] || !contact.touching || contact.sensor ||
+                    !contact.enabled) {
+                    continue;
+                }
+                touch(here, contact.edges[1 - side].body);
+            }
         }
 
         for (std::int32_t key = body.jointList; key != -1;) {

@@ -457,7 +457,21 @@ void checkEdgeList(SnapshotReader& in, std::int32_t body, std::int32_t head,
     }
 }
 
-void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broadPhase) {
+// A body lists its contacts newest first, as they were made: the island search relies on it
+// (island_builder.h), and the contacts to come must be newer than every one there is.
+void checkContactOrder(SnapshotReader& in, const WorldState& w, std::int32_t head,
+                       std::uint64_t contactsMade) {
+    std::uint64_t newer = contactsMade + 1;
+    for (std::int32_t key = head; key != -1;) {
+        const Contact& contact = w.contacts[edgeOwner(key)];
+        if (contact.serial >= newer) in.corrupt("a contact list is out of its making order");
+        newer = contact.serial;
+        key = contact.edges[edgeSide(key)].nextKey;
+    }
+}
+
+void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broadPhase,
+                std::uint64_t contactsMade) {
     if (w.substepCount < 1 || w.substepCount > kMaxSubsteps) in.corrupt("the substep count");
     const DynamicTree& tree = broadPhase.tree();
     std::vector<std::uint8_t> shapeSeen(static_cast<std::size_t>(w.shapes.capacity()), 0);
@@ -480,6 +494,7 @@ void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broad
         if (count != body.shapeCount) in.corrupt("a body's shape count is wrong");
         checkEdgeList(in, b, body.jointList, w.joints, jointEdges, "joint");
         checkEdgeList(in, b, body.contactList, w.contacts, contactEdges, "contact");
+        checkContactOrder(in, w, body.contactList, contactsMade);
         for (std::int32_t m = body.mouseList; m != -1; m = w.mouseJoints[m].next) {
             if (!w.mouseJoints.isAlive(m) || mouseSeen[static_cast<std::size_t>(m)] ||
                 w.mouseJoints[m].body != b) {
@@ -609,7 +624,7 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     describeWorld(in, state, w.id);
     ContactManager::State contactState = ContactManager::loadState(in, w.id);
     if (!in.atEnd()) in.corrupt("bytes are left over after the last field");
-    checkLinks(in, state, contactState.broadPhase);
+    checkLinks(in, state, contactState.broadPhase, contactState.contactsMade);
 
     // Checked: take it. Nothing below can fail.
     w.gravity = state.gravity;
