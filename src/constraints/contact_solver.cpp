@@ -21,6 +21,14 @@ Transform solverTransform(const SolverPose& p, Vec2 localCenter) {
     return xf;
 }
 
+// The same, with the rotation of p.a already computed.
+Transform solverTransform(const SolverPose& p, Rot q, Vec2 localCenter) {
+    Transform xf;
+    xf.q = q;
+    xf.p = p.c - rotate(xf.q, localCenter);
+    return xf;
+}
+
 Vec2 tangentOf(Vec2 normal) {
     return cross(normal, 1.0f);
 }
@@ -197,7 +205,7 @@ void ContactSolver::reset(int count, const StepContext& step) {
 void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
                             const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
                             const SlotPool<Shape>& shapes, const StepContext& step,
-                            const SolverPose* positions) {
+                            const SolverPose* positions, const Rot* rotations) {
     for (int k = range.begin; k < range.end; ++k) {
         const std::int32_t contactIndex = ids[k];
         const Contact& contact = pool[contactIndex];
@@ -241,9 +249,11 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
         const SolverPose& posB = positions[c.indexB];
         const SolverVelocity startA{bodyA.linearVelocity, bodyA.angularVelocity};
         const SolverVelocity startB{bodyB.linearVelocity, bodyB.angularVelocity};
+        const Rot qA = rotations ? rotations[c.indexA] : Rot(posA.a);
+        const Rot qB = rotations ? rotations[c.indexB] : Rot(posB.a);
         WorldManifold wm =
-            computeWorldManifold(manifold, solverTransform(posA, bodyA.localCenter), pc.radiusA,
-                                 solverTransform(posB, bodyB.localCenter), pc.radiusB);
+            computeWorldManifold(manifold, solverTransform(posA, qA, bodyA.localCenter), pc.radiusA,
+                                 solverTransform(posB, qB, bodyB.localCenter), pc.radiusB);
         c.normal = wm.normal;
         const Vec2 tangent = tangentOf(c.normal);
 

@@ -98,10 +98,12 @@ public:
     /// Builds constraints [range) from the contacts ids[k], whose solver bodies are pairs[k], at
     /// the solver arrays' poses (the start of the step); writes no velocity. Restitution
     /// measures the approach speed from the bodies' velocities before this step's forces.
+    /// `rotations`, if given, holds Rot(positions[i].a) for every slot (computed once per body
+    /// rather than once per contact).
     void prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
                  const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
                  const SlotPool<Shape>& shapes, const StepContext& step,
-                 const SolverPose* positions);
+                 const SolverPose* positions, const Rot* rotations = nullptr);
     /// Whether constraints are built once a step (soft contacts): later substeps call
     /// updateSeparations instead of prepare, and storeImpulses only at the last.
     bool builtOncePerStep() const { return soft_; }

@@ -48,6 +48,14 @@ void measureMotion(const Team& team, IslandWorkspace& work) {
     });
 }
 
+// Each slot's rotation, once, for the contacts' set-up (which would otherwise compute both of
+// its bodies' for every contact).
+void measureRotations(const Team& team, IslandWorkspace& work) {
+    team.forBlocks(static_cast<int>(work.positions.size()), [&](IndexRange mine) {
+        for (int i = mine.begin; i < mine.end; ++i) work.rotations[i] = Rot(work.positions[i].a);
+    });
+}
+
 // Gravity, forces and damping over one substep, on the dynamic bodies' solver velocities
 // (semi-implicit Euler: velocities first, positions later from the new velocities).
 void integrateVelocities(const Team& team, const IslandView& island, IslandWorkspace& work,
@@ -312,15 +320,19 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
     const bool lastSubstep = substep == step.substepCount - 1;
     const bool contactsBuilt = !firstSubstep && work.contactSolver.builtOncePerStep();
     integrateVelocities(team, island, work, bodies, step);
-    if (contactsBuilt) measureMotion(team, work);
+    if (contactsBuilt) {
+        measureMotion(team, work);
+    } else if (island.contactCount > 0) {
+        measureRotations(team, work);
+    }
     team.sync();
     team.forBlocks(island.contactCount, [&](IndexRange range) {
         if (contactsBuilt) {
             work.contactSolver.updateSeparations(range, work.motion.data());
         } else {
-            work.contactSolver.prepare(range, schedule.contactIds.data(),
-                                       schedule.contactPairs.data(), storage.contacts, bodies,
-                                       storage.shapes, step, work.positions.data());
+            work.contactSolver.prepare(
+                range, schedule.contactIds.data(), schedule.contactPairs.data(), storage.contacts,
+                bodies, storage.shapes, step, work.positions.data(), work.rotations.data());
         }
     });
     prepareJoints(team, work, bodies, storage.joints, step, firstSubstep, mine);
@@ -396,6 +408,7 @@ void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
     work.positions.reserve(bound.bodies);
     work.stepStart.reserve(bound.bodies);
     work.motion.reserve(bound.bodies);
+    work.rotations.reserve(bound.bodies);
     work.positionScratch.pseudo.reserve(bound.bodies);
     work.positionScratch.xpbdStart.reserve(bound.bodies);
     work.mouseConstraints.reserve(bound.mouseJoints);
@@ -412,6 +425,7 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     resizeBuffer(work.positions, slots);
     resizeBuffer(work.stepStart, slots);
     resizeBuffer(work.motion, slots);
+    resizeBuffer(work.rotations, slots);
     work.groups.resize(schedule.groupStart);
     work.contactSolver.reset(island.contactCount, step);
     resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));

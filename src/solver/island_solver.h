@@ -48,6 +48,7 @@ struct IslandWorkspace {
     // motion since, measured at every later substep.
     std::vector<SolverPose> stepStart;
     std::vector<SolverMotion> motion;
+    std::vector<Rot> rotations;  // Rot(positions[i].a), for the contacts' set-up
     JointGroups groups;
     std::vector<MouseConstraint> mouseConstraints;
     ContactSolver contactSolver;
