@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
-#include <thread>
 #include <random>
 #include <set>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
