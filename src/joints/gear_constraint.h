@@ -109,6 +109,10 @@ struct GearConstraint {
         return C * C;
     }
 
+    /// A later substep: the constraint kept from the one before, its impulses as stored, is
+    /// measured again at the current poses (the same operations as in prepare).
+    void remeasure(const SolverPose* poses, const StepContext&) { measure(poses); }
+
     void startImpulses(const Joint&, bool warmStarting, float dtRatio) {
         impulse = warmStarting ? impulse * dtRatio : 0.0f;
     }

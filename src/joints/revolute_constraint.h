@@ -8,7 +8,8 @@
 //   solveVelocity<rows>      motor, limits, then the pin; the position rows Rigid, Biased by
 //                            setBias, or Soft with the factors in `soft` (constraints/rows.h)
 //   setBias(k)               velocity bias k C from the error at the current radius vectors
-//   remeasure                at a later substep, what prepare measures at the poses
+//   remeasure                at a later substep, what prepare measures at the poses (where
+//                            offered: the others are rebuilt, CanRemeasure)
 //   restartAt(h)             re-measure radius vectors, effective mass and angle at the given
 //                            poses as at the start of a step of length h, limits unloaded
 //   solvePseudoVelocity      the velocity rows with the bias and without the motor, not

@@ -91,6 +91,10 @@ struct WeldConstraint {
         return softPoint ? 0.0f : lengthSquared(pointError);
     }
 
+    /// A later substep: the constraint kept from the one before, its impulses as stored, is
+    /// measured again at the current poses (the same operations as in prepare).
+    void remeasure(const SolverPose* poses, const StepContext&) { measure(poses); }
+
     void startImpulses(const Joint&, bool warmStarting, float dtRatio) {
         impulse = warmStarting ? dtRatio * impulse : Vec3{};
     }

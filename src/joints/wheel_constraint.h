@@ -90,6 +90,13 @@ struct WheelConstraint {
         return lineError * lineError + beyond * beyond;
     }
 
+    /// A later substep: the constraint kept from the one before, its impulses as stored, is
+    /// measured again at the current poses (the same operations as in prepare).
+    void remeasure(const SolverPose* poses, const StepContext& step) {
+        measure(poses);
+        limits.setTerms(translation, step.invDt);
+    }
+
     void startImpulses(const Joint&, bool warmStarting, float dtRatio) {
         if (warmStarting) {
             impulse *= dtRatio;
