@@ -14,19 +14,16 @@ namespace {
 // (the two points are nearly the same constraint) and only the first point is kept.
 constexpr float kMaxBlockConditionNumber = 1000.0f;
 
-Transform solverTransform(const SolverPose& p, Vec2 localCenter) {
-    Transform xf;
-    xf.q = Rot(p.a);
-    xf.p = p.c - rotate(xf.q, localCenter);
-    return xf;
-}
-
-// The same, with the rotation of p.a already computed.
+// The body frame of a solver pose, q being Rot(p.a).
 Transform solverTransform(const SolverPose& p, Rot q, Vec2 localCenter) {
     Transform xf;
     xf.q = q;
     xf.p = p.c - rotate(xf.q, localCenter);
     return xf;
+}
+
+Transform solverTransform(const SolverPose& p, Vec2 localCenter) {
+    return solverTransform(p, Rot(p.a), localCenter);
 }
 
 Vec2 tangentOf(Vec2 normal) {
