@@ -183,9 +183,68 @@ MeasuredPoint measure(const ContactPositionConstraint& pc, const Transform& xfA,
     return m;
 }
 
+// Constraint c's fields into lane `lane` of its tile (all of both points: a one-point
+// contact's second is zeros, which the wide sweeps read and leave unused).
+void writeTile(ContactTile& tile, int lane, const ContactVelocityConstraint& c) {
+    using T = ContactTile;
+    tile.lanes(T::kNormalX)[lane] = c.normal.x;
+    tile.lanes(T::kNormalY)[lane] = c.normal.y;
+    tile.lanes(T::kFriction)[lane] = c.friction;
+    tile.lanes(T::kMassA)[lane] = c.mA;
+    tile.lanes(T::kMassB)[lane] = c.mB;
+    tile.lanes(T::kInertiaA)[lane] = c.iA;
+    tile.lanes(T::kInertiaB)[lane] = c.iB;
+    tile.lanes(T::kKxx)[lane] = c.K.cx.x;
+    tile.lanes(T::kKxy)[lane] = c.K.cx.y;
+    tile.lanes(T::kKyx)[lane] = c.K.cy.x;
+    tile.lanes(T::kKyy)[lane] = c.K.cy.y;
+    tile.lanes(T::kMxx)[lane] = c.normalMass.cx.x;
+    tile.lanes(T::kMxy)[lane] = c.normalMass.cx.y;
+    tile.lanes(T::kMyx)[lane] = c.normalMass.cy.x;
+    tile.lanes(T::kMyy)[lane] = c.normalMass.cy.y;
+    for (int j = 0; j < 2; ++j) {
+        const ContactVelocityPoint& p = c.points[j];
+        tile.lanes(j, T::kAnchorAx)[lane] = p.rA.x;
+        tile.lanes(j, T::kAnchorAy)[lane] = p.rA.y;
+        tile.lanes(j, T::kAnchorBx)[lane] = p.rB.x;
+        tile.lanes(j, T::kAnchorBy)[lane] = p.rB.y;
+        tile.lanes(j, T::kNormalMass)[lane] = p.normalMass;
+        tile.lanes(j, T::kTangentMass)[lane] = p.tangentMass;
+        tile.lanes(j, T::kNormalImpulse)[lane] = p.normalImpulse;
+        tile.lanes(j, T::kTangentImpulse)[lane] = p.tangentImpulse;
+        tile.lanes(j, T::kVelocityBias)[lane] = p.velocityBias;
+        tile.lanes(j, T::kSoftTarget)[lane] = p.softTarget;
+    }
+    tile.indexA[lane] = c.indexA;
+    tile.indexB[lane] = c.indexB;
+    tile.pointCount[lane] = c.pointCount;
+}
+
 }  // namespace
 
-void ContactSolver::reset(int count, const StepContext& step) {
+void ContactSolver::takeImpulses(int k, ContactVelocityConstraint& c) const {
+    const int slot = tiles_.slot(k);
+    if (slot < 0) return;  // its impulses live in c
+    const ContactTile& tile = tiles_.tileOf(slot);
+    const int lane = slot % kContactLanes;
+    for (int j = 0; j < 2; ++j) {
+        c.points[j].normalImpulse = tile.lanes(j, ContactTile::kNormalImpulse)[lane];
+        c.points[j].tangentImpulse = tile.lanes(j, ContactTile::kTangentImpulse)[lane];
+    }
+}
+
+void ContactSolver::putImpulses(int k, const ContactVelocityConstraint& c) {
+    const int slot = tiles_.slot(k);
+    if (slot < 0) return;
+    ContactTile& tile = tiles_.tileOf(slot);
+    const int lane = slot % kContactLanes;
+    for (int j = 0; j < 2; ++j) {
+        tile.lanes(j, ContactTile::kNormalImpulse)[lane] = c.points[j].normalImpulse;
+        tile.lanes(j, ContactTile::kTangentImpulse)[lane] = c.points[j].tangentImpulse;
+    }
+}
+
+void ContactSolver::reset(int count, const StepContext& step, const std::vector<Batch>* batches) {
     positionBias_ = step.contactBiasFactor;
     baumgarte_ = step.contactCorrection == ContactCorrection::Baumgarte;
     soft_ = step.contactCorrection == ContactCorrection::Soft;
@@ -196,6 +255,7 @@ void ContactSolver::reset(int count, const StepContext& step) {
     }
     const bool ngs = step.contactCorrection == ContactCorrection::NGS;
     resizeBuffer(velocity_, static_cast<std::size_t>(count));
+    tiles_.layOut(count, batches, wideSolving());
     resizeBuffer(position_, ngs ? static_cast<std::size_t>(count) : 0);
 }
 
@@ -300,6 +360,8 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
                 c.pointCount = 1;
             }
         }
+        const int slot = tiles_.slot(k);
+        if (slot >= 0) writeTile(tiles_.tileOf(slot), slot % kContactLanes, c);
     }
 }
 
@@ -313,12 +375,22 @@ void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* moti
             const Vec2 gap = (B.dp - A.dp) + (rotate(B.dq, p.rB) - rotate(A.dq, p.rA));
             p.softTarget = softTarget(dot(gap, c.normal) + p.baseSeparation);
         }
+        const int slot = tiles_.slot(k);
+        if (slot >= 0) {
+            ContactTile& tile = tiles_.tileOf(slot);
+            for (int j = 0; j < 2; ++j) {
+                tile.lanes(j, ContactTile::kSoftTarget)[slot % kContactLanes] =
+                    c.points[j].softTarget;
+            }
+        }
     }
 }
 
-void ContactSolver::warmStart(IndexRange range, SolverVelocity* velocities) const {
-    for (int k = range.begin; k < range.end; ++k) {
-        const ContactVelocityConstraint& c = velocity_[k];
+void ContactSolver::warmStart(IndexRange range, SolverVelocity* velocities, bool independent) {
+    const int first = independent ? warmStartWide(range, velocities) : range.begin;
+    for (int k = first; k < range.end; ++k) {
+        ContactVelocityConstraint& c = velocity_[k];
+        takeImpulses(k, c);
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
         Vec2 tangent = tangentOf(c.normal);
@@ -336,6 +408,7 @@ void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities
         ContactVelocityConstraint& c = velocity_[k];
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
+        takeImpulses(k, c);
         // Friction first: its bound depends on the normal impulse, and penetration matters
         // more than sliding, so the normal solve gets the last word.
         solveFriction(c, A, B);
@@ -346,6 +419,7 @@ void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities
         } else {
             solveNormalPointByPoint(c, A, B);
         }
+        putImpulses(k, c);
     }
 }
 
@@ -355,8 +429,10 @@ void ContactSolver::relax(IndexRange range, SolverVelocity* velocities, bool ind
         ContactVelocityConstraint& c = velocity_[k];
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
+        takeImpulses(k, c);
         solveFriction(c, A, B);
         solveNormalSoft<false>(c, A, B, softness_);
+        putImpulses(k, c);
     }
 }
 
@@ -370,10 +446,16 @@ void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool,
                 m.points[j].approachSpeed = c.points[j].approachSpeed;
             }
         }
+        const int slot = tiles_.slot(k);
         for (int j = 0; j < c.pointCount; ++j) {
             // A non-finite impulse is not carried into the next step's warm start.
-            const float normal = c.points[j].normalImpulse;
-            const float tangent = c.points[j].tangentImpulse;
+            float normal = c.points[j].normalImpulse;
+            float tangent = c.points[j].tangentImpulse;
+            if (slot >= 0) {
+                const ContactTile& tile = tiles_.tileOf(slot);
+                normal = tile.lanes(j, ContactTile::kNormalImpulse)[slot % kContactLanes];
+                tangent = tile.lanes(j, ContactTile::kTangentImpulse)[slot % kContactLanes];
+            }
             const bool finite = std::isfinite(normal) && std::isfinite(tangent);
             m.points[j].normalImpulse = finite ? normal : 0.0f;
             m.points[j].tangentImpulse = finite ? tangent : 0.0f;

@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "constraints/contact_tiles.h"
 #include "constraints/soft_factors.h"
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
@@ -45,6 +46,8 @@ namespace pivot {
 struct ContactVelocityPoint {
     Vec2 rA;
     Vec2 rB;
+    // A tiled contact's impulses live in its tile (contact_tiles.h); these are then the one-by-
+    // one solve's working copy.
     float normalImpulse = 0.0f;
     float tangentImpulse = 0.0f;
     float normalMass = 0.0f;
@@ -88,11 +91,14 @@ struct ContactPositionConstraint {
 /// of them, so a team can share it out by colour (island_schedule.h).
 class ContactSolver {
 public:
-    /// Sizes the arrays for `count` contacts. On one thread, before prepare.
-    void reset(int count, const StepContext& step);
+    /// Sizes the arrays for `count` contacts, and lays out tiles for the wide sweeps over the
+    /// independent ones among `batches` (the batches the sweeps will be given; none without).
+    /// On one thread, before prepare.
+    void reset(int count, const StepContext& step, const std::vector<Batch>* batches = nullptr);
     /// Room for `count` contacts, so that reset does not allocate up to that many.
     void reserve(std::size_t count) {
         velocity_.reserve(count);
+        tiles_.reserve(count);
         position_.reserve(count);
     }
     /// Builds constraints [range) from the contacts ids[k], whose solver bodies are pairs[k], at
@@ -112,9 +118,10 @@ public:
     /// spring's target from it.
     void updateSeparations(IndexRange range, const SolverMotion* motion);
     /// Applies last step's impulses (scaled by step.dtRatio in prepare) before iterating.
-    void warmStart(IndexRange range, SolverVelocity* velocities) const;
+    /// `independent`: as for solveVelocities.
+    void warmStart(IndexRange range, SolverVelocity* velocities, bool independent = false);
     /// One velocity sweep over [range). `independent`: no two of these contacts share a solver
-    /// slot (one colour of a coloured island), so they are solved four at a time
+    /// slot (one colour of a coloured island), so they are solved several at a time
     /// (contact_solver_wide.cpp), to the same bits.
     void solveVelocities(IndexRange range, SolverVelocity* velocities, bool independent = false);
     /// Writes the accumulated impulses into the contacts' manifolds for the next warm start;
@@ -123,7 +130,7 @@ public:
     void storeImpulses(IndexRange range, SlotPool<Contact>& pool, bool approachSpeeds) const;
     /// One NGS sweep over the points of contacts [range). Returns the smallest separation
     /// measured (m, before each correction; NaN if any was NaN); 0 when there are none.
-    /// `independent`: as for solveVelocities (four at a time, the same bits).
+    /// `independent`: as for solveVelocities (several at a time, the same bits).
     float solvePositions(IndexRange range, SolverPose* positions, bool independent = false) const;
     /// Continuous collision's position sweep (world/continuous_solver.h): as solvePositions,
     /// with the given bias, moving only the bodies in solver slots movableA and movableB (the
@@ -133,8 +140,11 @@ public:
     /// m/s, how fast point j of constraint k closed when prepare measured it.
     float approachSpeed(int k, int j) const { return velocity_[k].points[j].approachSpeed; }
     /// For tests, process-wide: off, independent batches are solved one contact at a time too,
-    /// the reference the four-wide path must match bit for bit.
+    /// the reference the wide path must match bit for bit.
     static void setWideSolving(bool enabled);
+    /// Whether independent batches are solved several at a time (the build has SIMD lanes and
+    /// the switch above is on).
+    static bool wideSolving();
     /// Whether any contact takes part in the NGS position phase.
     bool hasPositionConstraints() const { return !position_.empty(); }
     /// Soft contacts: whether they relax, and one relax sweep over [range) (rigid, no spring).
@@ -154,7 +164,12 @@ public:
     }
 
 private:
-    /// Solves contacts [range.begin, returned) four at a time (a sweep's work, or with
+    /// Likewise for the warm start.
+    int warmStartWide(IndexRange range, SolverVelocity* velocities) const;
+    /// A tiled contact's impulses into c (the one-by-one solve works on c), and back.
+    void takeImpulses(int k, ContactVelocityConstraint& c) const;
+    void putImpulses(int k, const ContactVelocityConstraint& c);
+    /// Solves contacts [range.begin, returned) several at a time (a sweep's work, or with
     /// `relaxing` a relax sweep's); the caller solves the rest one by one.
     int solveWide(IndexRange range, SolverVelocity* velocities, bool relaxing);
     /// Likewise for an NGS sweep in which every body moves, folding the separations it measures
@@ -173,6 +188,7 @@ private:
     }
 
     std::vector<ContactVelocityConstraint> velocity_;
+    ContactTiles tiles_;  // the wide sweeps' constraints (home of their impulses)
     std::vector<ContactPositionConstraint> position_;
     float positionBias_ = 0.0f;
     bool baumgarte_ = false;

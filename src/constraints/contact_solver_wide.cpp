@@ -1,184 +1,161 @@
-// The contact solver's velocity, relax and NGS position sweeps, four contacts at a time (SSE2,
-// the x86-64 baseline), for a batch of independent contacts: one colour of a coloured island
+// The contact solver's velocity, relax and NGS position sweeps, several contacts at a time in
+// SIMD lanes (lanes.h: four with SSE2, the x86-64 baseline; eight more with the PIVOT_AVX2
+// build), for a batch of independent contacts: one colour of a coloured island
 // (island_schedule.h), where no two contacts share a solver slot, so solving them together is
 // solving them one after another.
 //
 // Each lane does exactly the arithmetic of the one-contact code in contact_solver.cpp, operation
-// for operation and in the same order (the build never contracts a*b+c into one rounding), and
-// where that code branches, every lane computes each branch and keeps the one its contact would
-// have taken. So a batch solved here gives the same bits as the same batch solved one contact at
-// a time: results do not depend on which path ran, nor on the number of workers.
+// for operation and in the same order, and where that code branches, every lane computes each
+// branch and keeps the one its contact would have taken (a branch no lane takes is skipped). So
+// a batch solved here gives the same bits as the same batch solved one contact at a time, at
+// either width: results do not depend on which path ran, nor on the number of workers.
+//
+// The velocity sweeps read the constraints from their columns (contact_columns.h), written once
+// per build, with one load per field; only the bodies' velocities are gathered and scattered.
 //
 // The maths is contact_solver.h's: per point, vn = (vB + wB x rB - vA - wA x rA) . n, friction
 // clamped by friction * normal impulse, the two points of a manifold solved together as a 2x2
 // complementarity problem (the first of its four cases that holds), or point by point; and the
 // NGS sweep's -K^-1 C per point, from the separation re-measured at the current poses (the
 // sines and cosines of those poses stay libm's, lane by lane).
-#include "constraints/contact_solver.h"
-
 #include <atomic>
+#include <utility>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#define PIVOT_WIDE_CONTACTS 1
-#endif
+#include "constraints/contact_solver.h"
+#include "constraints/lanes.h"
 
 namespace pivot {
 
-#if PIVOT_WIDE_CONTACTS
+#if PIVOT_LANES_4
 
 namespace {
 
-// Four floats, one per contact, with the scalar operators.
-struct F4 {
-    __m128 v;
-    F4() : v(_mm_setzero_ps()) {}
-    explicit F4(__m128 m) : v(m) {}
-    explicit F4(float s) : v(_mm_set1_ps(s)) {}
-};
-inline F4 operator+(F4 a, F4 b) {
-    return F4(_mm_add_ps(a.v, b.v));
+using namespace lanes;
+
+// Lane i of the result is get(i), for i < F::kWidth.
+template <typename F, typename Get, std::size_t... I>
+F eachLane(Get get, std::index_sequence<I...>) {
+    return F::set(get(static_cast<int>(I))...);
 }
-inline F4 operator-(F4 a, F4 b) {
-    return F4(_mm_sub_ps(a.v, b.v));
+template <typename F, typename Get>
+F eachLane(Get get) {
+    return eachLane<F>(get, std::make_index_sequence<F::kWidth>());
 }
-inline F4 operator*(F4 a, F4 b) {
-    return F4(_mm_mul_ps(a.v, b.v));
+template <typename F, typename Test, std::size_t... I>
+F maskEach(Test test, std::index_sequence<I...>) {
+    return F::setMask(test(static_cast<int>(I))...);
 }
-inline F4 operator-(F4 a) {  // flips the sign bit, as scalar negation does
-    return F4(_mm_xor_ps(a.v, _mm_set1_ps(-0.0f)));
-}
-// Lane masks (all ones where true).
-inline F4 lessThan(F4 a, F4 b) {
-    return F4(_mm_cmplt_ps(a.v, b.v));
-}
-inline F4 atLeast(F4 a, F4 b) {  // a >= b, false when either is NaN, as the scalar test
-    return F4(_mm_cmpge_ps(a.v, b.v));
-}
-inline F4 both(F4 a, F4 b) {
-    return F4(_mm_and_ps(a.v, b.v));
-}
-inline F4 either(F4 a, F4 b) {
-    return F4(_mm_or_ps(a.v, b.v));
-}
-// mask ? a : b, lane by lane.
-inline F4 select(F4 mask, F4 a, F4 b) {
-    return F4(_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v)));
-}
-// std::max(a, b) and std::clamp(x, lo, hi), with their exact choices (ties, signed zeros, NaN).
-inline F4 maxOf(F4 a, F4 b) {
-    return select(lessThan(a, b), b, a);
-}
-inline F4 clampOf(F4 x, F4 lo, F4 hi) {
-    return select(lessThan(x, lo), lo, select(lessThan(hi, x), hi, x));
+template <typename F, typename Test>
+F maskEach(Test test) {
+    return maskEach<F>(test, std::make_index_sequence<F::kWidth>());
 }
 
-inline void store(F4 a, float out[4]) {
-    _mm_storeu_ps(out, a.v);
+// A body's velocity, one lane per contact.
+template <typename F>
+struct Velocities {
+    F vx, vy, w;
+};
+
+// SolverVelocity as three floats: v.x, v.y, w.
+static_assert(sizeof(SolverVelocity) == 3 * sizeof(float), "SolverVelocity is read as floats");
+
+template <typename F>
+Velocities<F> loadVelocities(const SolverVelocity* velocities, const std::int32_t* index) {
+    const float* base = &velocities[0].v.x;
+    return {F::gather(base, index, 3, 0), F::gather(base, index, 3, 1),
+            F::gather(base, index, 3, 2)};
 }
 
-// One lane of a body's velocity per contact.
-struct Velocity4 {
-    F4 vx, vy, w;
-};
+template <typename F>
+void storeVelocities(const Velocities<F>& in, SolverVelocity* velocities,
+                     const std::int32_t* index) {
+    float vx[F::kWidth], vy[F::kWidth], w[F::kWidth];
+    store(vx, in.vx);
+    store(vy, in.vy);
+    store(w, in.w);
+    for (int lane = 0; lane < F::kWidth; ++lane) {
+        SolverVelocity& v = velocities[index[lane]];
+        v.v = {vx[lane], vy[lane]};
+        v.w = w[lane];
+    }
+}
 
 // A point's lanes: its anchors, masses, impulses and targets.
-struct Point4 {
-    F4 rAx, rAy, rBx, rBy;
-    F4 normalMass, tangentMass, normalImpulse, tangentImpulse, velocityBias, softTarget;
+template <typename F>
+struct PointLanes {
+    F rAx, rAy, rBx, rBy;
+    F normalMass, tangentMass, normalImpulse, tangentImpulse, velocityBias, softTarget;
 };
 
-// The four contacts' constraints, read lane by lane.
-struct Contacts4 {
-    F4 nx, ny, friction, mA, mB, iA, iB;
-    F4 has1, has2;          // masks: the contact has a first, a second point
-    F4 kxx, kxy, kyx, kyy;  // K (two points): columns cx = (kxx, kxy), cy = (kyx, kyy)
-    F4 mxx, mxy, myx, myy;  // its inverse, likewise
-    Point4 p[2];
+// The contacts' constraints, k .. k + F::kWidth, from their columns.
+template <typename F>
+struct ContactLanes {
+    F nx, ny, friction, mA, mB, iA, iB;
+    F has1, has2;          // masks: the contact has a first, a second point
+    F kxx, kxy, kyx, kyy;  // K (two points): columns cx = (kxx, kxy), cy = (kyx, kyy)
+    F mxx, mxy, myx, myy;  // its inverse, likewise
+    PointLanes<F> p[2];
 };
 
-template <typename Get>
-F4 gather(ContactVelocityConstraint* const c[4], Get get) {
-    return F4(_mm_setr_ps(get(*c[0]), get(*c[1]), get(*c[2]), get(*c[3])));
-}
-
-Contacts4 load(ContactVelocityConstraint* const c[4]) {
-    using C = const ContactVelocityConstraint&;
-    Contacts4 k;
-    k.nx = gather(c, [](C x) { return x.normal.x; });
-    k.ny = gather(c, [](C x) { return x.normal.y; });
-    k.friction = gather(c, [](C x) { return x.friction; });
-    k.mA = gather(c, [](C x) { return x.mA; });
-    k.mB = gather(c, [](C x) { return x.mB; });
-    k.iA = gather(c, [](C x) { return x.iA; });
-    k.iB = gather(c, [](C x) { return x.iB; });
-    const __m128i counts =
-        _mm_setr_epi32(c[0]->pointCount, c[1]->pointCount, c[2]->pointCount, c[3]->pointCount);
-    k.has1 = F4(_mm_castsi128_ps(_mm_cmpgt_epi32(counts, _mm_set1_epi32(0))));
-    k.has2 = F4(_mm_castsi128_ps(_mm_cmpgt_epi32(counts, _mm_set1_epi32(1))));
-    k.kxx = gather(c, [](C x) { return x.K.cx.x; });
-    k.kxy = gather(c, [](C x) { return x.K.cx.y; });
-    k.kyx = gather(c, [](C x) { return x.K.cy.x; });
-    k.kyy = gather(c, [](C x) { return x.K.cy.y; });
-    k.mxx = gather(c, [](C x) { return x.normalMass.cx.x; });
-    k.mxy = gather(c, [](C x) { return x.normalMass.cx.y; });
-    k.myx = gather(c, [](C x) { return x.normalMass.cy.x; });
-    k.myy = gather(c, [](C x) { return x.normalMass.cy.y; });
+template <typename F>
+ContactLanes<F> loadContacts(const ContactTile& tile) {
+    using T = ContactTile;
+    ContactLanes<F> c;
+    c.nx = F::load(tile.lanes(T::kNormalX));
+    c.ny = F::load(tile.lanes(T::kNormalY));
+    c.friction = F::load(tile.lanes(T::kFriction));
+    c.mA = F::load(tile.lanes(T::kMassA));
+    c.mB = F::load(tile.lanes(T::kMassB));
+    c.iA = F::load(tile.lanes(T::kInertiaA));
+    c.iB = F::load(tile.lanes(T::kInertiaB));
+    c.has1 = F::above(tile.pointCount, 0);
+    c.has2 = F::above(tile.pointCount, 1);
+    c.kxx = F::load(tile.lanes(T::kKxx));
+    c.kxy = F::load(tile.lanes(T::kKxy));
+    c.kyx = F::load(tile.lanes(T::kKyx));
+    c.kyy = F::load(tile.lanes(T::kKyy));
+    c.mxx = F::load(tile.lanes(T::kMxx));
+    c.mxy = F::load(tile.lanes(T::kMxy));
+    c.myx = F::load(tile.lanes(T::kMyx));
+    c.myy = F::load(tile.lanes(T::kMyy));
     for (int j = 0; j < 2; ++j) {
-        Point4& p = k.p[j];
-        p.rAx = gather(c, [j](C x) { return x.points[j].rA.x; });
-        p.rAy = gather(c, [j](C x) { return x.points[j].rA.y; });
-        p.rBx = gather(c, [j](C x) { return x.points[j].rB.x; });
-        p.rBy = gather(c, [j](C x) { return x.points[j].rB.y; });
-        p.normalMass = gather(c, [j](C x) { return x.points[j].normalMass; });
-        p.tangentMass = gather(c, [j](C x) { return x.points[j].tangentMass; });
-        p.normalImpulse = gather(c, [j](C x) { return x.points[j].normalImpulse; });
-        p.tangentImpulse = gather(c, [j](C x) { return x.points[j].tangentImpulse; });
-        p.velocityBias = gather(c, [j](C x) { return x.points[j].velocityBias; });
-        p.softTarget = gather(c, [j](C x) { return x.points[j].softTarget; });
+        PointLanes<F>& p = c.p[j];
+        p.rAx = F::load(tile.lanes(j, T::kAnchorAx));
+        p.rAy = F::load(tile.lanes(j, T::kAnchorAy));
+        p.rBx = F::load(tile.lanes(j, T::kAnchorBx));
+        p.rBy = F::load(tile.lanes(j, T::kAnchorBy));
+        p.normalMass = F::load(tile.lanes(j, T::kNormalMass));
+        p.tangentMass = F::load(tile.lanes(j, T::kTangentMass));
+        p.normalImpulse = F::load(tile.lanes(j, T::kNormalImpulse));
+        p.tangentImpulse = F::load(tile.lanes(j, T::kTangentImpulse));
+        p.velocityBias = F::load(tile.lanes(j, T::kVelocityBias));
+        p.softTarget = F::load(tile.lanes(j, T::kSoftTarget));
     }
-    return k;
+    return c;
 }
 
 // Writes back what a sweep changes: the impulses.
-void storeImpulses(const Contacts4& k, ContactVelocityConstraint* const c[4]) {
+template <typename F>
+void storeImpulses(const ContactLanes<F>& c, ContactTile& tile) {
     for (int j = 0; j < 2; ++j) {
-        float normal[4], tangent[4];
-        store(k.p[j].normalImpulse, normal);
-        store(k.p[j].tangentImpulse, tangent);
-        for (int lane = 0; lane < 4; ++lane) {
-            c[lane]->points[j].normalImpulse = normal[lane];
-            c[lane]->points[j].tangentImpulse = tangent[lane];
-        }
-    }
-}
-
-Velocity4 loadVelocities(const SolverVelocity* const v[4]) {
-    return {F4(_mm_setr_ps(v[0]->v.x, v[1]->v.x, v[2]->v.x, v[3]->v.x)),
-            F4(_mm_setr_ps(v[0]->v.y, v[1]->v.y, v[2]->v.y, v[3]->v.y)),
-            F4(_mm_setr_ps(v[0]->w, v[1]->w, v[2]->w, v[3]->w))};
-}
-
-void storeVelocities(const Velocity4& in, SolverVelocity* const v[4]) {
-    float vx[4], vy[4], w[4];
-    store(in.vx, vx);
-    store(in.vy, vy);
-    store(in.w, w);
-    for (int lane = 0; lane < 4; ++lane) {
-        v[lane]->v = {vx[lane], vy[lane]};
-        v[lane]->w = w[lane];
+        store(tile.lanes(j, ContactTile::kNormalImpulse), c.p[j].normalImpulse);
+        store(tile.lanes(j, ContactTile::kTangentImpulse), c.p[j].tangentImpulse);
     }
 }
 
 // (vB + wB x rB - vA - wA x rA) . d, as relativeVelocity and dot compute it.
-F4 relativeAlong(const Velocity4& A, const Velocity4& B, const Point4& p, F4 dx, F4 dy) {
-    const F4 vx = ((B.vx + (-B.w) * p.rBy) - A.vx) - (-A.w) * p.rAy;
-    const F4 vy = ((B.vy + B.w * p.rBx) - A.vy) - A.w * p.rAx;
+template <typename F>
+F relativeAlong(const Velocities<F>& A, const Velocities<F>& B, const PointLanes<F>& p, F dx,
+                F dy) {
+    const F vx = ((B.vx + (-B.w) * p.rBy) - A.vx) - (-A.w) * p.rAy;
+    const F vy = ((B.vy + B.w * p.rBx) - A.vy) - A.w * p.rAx;
     return vx * dx + vy * dy;
 }
 
 // Impulse (Px, Py) at point p, in the lanes of `mask` only.
-void apply(Velocity4& A, Velocity4& B, const Contacts4& k, const Point4& p, F4 Px, F4 Py, F4 mask) {
+template <typename F>
+void apply(Velocities<F>& A, Velocities<F>& B, const ContactLanes<F>& k, const PointLanes<F>& p,
+           F Px, F Py, F mask) {
     A.vx = select(mask, A.vx - k.mA * Px, A.vx);
     A.vy = select(mask, A.vy - k.mA * Py, A.vy);
     A.w = select(mask, A.w - k.iA * (p.rAx * Py - p.rAy * Px), A.w);
@@ -187,15 +164,17 @@ void apply(Velocity4& A, Velocity4& B, const Contacts4& k, const Point4& p, F4 P
     B.w = select(mask, B.w + k.iB * (p.rBx * Py - p.rBy * Px), B.w);
 }
 
-void solveFriction(Contacts4& k, Velocity4& A, Velocity4& B) {
-    const F4 tx = k.ny, ty = -k.nx;  // tangentOf: cross(n, 1)
+template <typename F>
+void solveFriction(ContactLanes<F>& k, Velocities<F>& A, Velocities<F>& B) {
+    const F tx = k.ny, ty = -k.nx;  // tangentOf: cross(n, 1)
     for (int j = 0; j < 2; ++j) {
-        Point4& p = k.p[j];
-        const F4 active = j == 0 ? k.has1 : k.has2;
-        const F4 vt = relativeAlong(A, B, p, tx, ty);
-        F4 lambda = p.tangentMass * (-vt);
-        const F4 maxFriction = k.friction * p.normalImpulse;
-        const F4 total = clampOf(p.tangentImpulse + lambda, -maxFriction, maxFriction);
+        PointLanes<F>& p = k.p[j];
+        const F active = j == 0 ? k.has1 : k.has2;
+        if (!any(active)) continue;
+        const F vt = relativeAlong(A, B, p, tx, ty);
+        F lambda = p.tangentMass * (-vt);
+        const F maxFriction = k.friction * p.normalImpulse;
+        const F total = clampOf(p.tangentImpulse + lambda, -maxFriction, maxFriction);
         lambda = total - p.tangentImpulse;
         p.tangentImpulse = select(active, total, p.tangentImpulse);
         apply(A, B, k, p, lambda * tx, lambda * ty, active);
@@ -203,17 +182,18 @@ void solveFriction(Contacts4& k, Velocity4& A, Velocity4& B) {
 }
 
 // Point by point, in the lanes of `lanes`: rigid towards velocityBias, or (soft) the spring.
-template <bool soft>
-void solveNormalPoints(Contacts4& k, Velocity4& A, Velocity4& B, F4 lanes,
+template <bool soft, typename F>
+void solveNormalPoints(ContactLanes<F>& k, Velocities<F>& A, Velocities<F>& B, F lanes,
                        const SoftFactors& softness) {
     for (int j = 0; j < 2; ++j) {
-        Point4& p = k.p[j];
-        const F4 active = both(lanes, j == 0 ? k.has1 : k.has2);
-        const F4 vn = relativeAlong(A, B, p, k.nx, k.ny);
-        F4 lambda = soft ? F4(softness.massScale) * ((-p.normalMass) * (vn - p.softTarget)) -
-                               F4(softness.impulseScale) * p.normalImpulse
-                         : (-p.normalMass) * (vn - p.velocityBias);
-        const F4 total = maxOf(p.normalImpulse + lambda, F4(0.0f));
+        PointLanes<F>& p = k.p[j];
+        const F active = both(lanes, j == 0 ? k.has1 : k.has2);
+        if (!any(active)) continue;
+        const F vn = relativeAlong(A, B, p, k.nx, k.ny);
+        F lambda = soft ? F(softness.massScale) * ((-p.normalMass) * (vn - p.softTarget)) -
+                              F(softness.impulseScale) * p.normalImpulse
+                        : (-p.normalMass) * (vn - p.velocityBias);
+        const F total = maxOf(p.normalImpulse + lambda, F(0.0f));
         lambda = total - p.normalImpulse;
         p.normalImpulse = select(active, total, p.normalImpulse);
         apply(A, B, k, p, lambda * k.nx, lambda * k.ny, active);
@@ -221,41 +201,42 @@ void solveNormalPoints(Contacts4& k, Velocity4& A, Velocity4& B, F4 lanes,
 }
 
 // Both points together, in the lanes of `lanes` (two-point contacts): solveNormalBlock.
-void solveNormalBlock(Contacts4& k, Velocity4& A, Velocity4& B, F4 lanes) {
-    Point4& p1 = k.p[0];
-    Point4& p2 = k.p[1];
-    const F4 old1 = p1.normalImpulse, old2 = p2.normalImpulse;
-    const F4 vn1 = relativeAlong(A, B, p1, k.nx, k.ny);
-    const F4 vn2 = relativeAlong(A, B, p2, k.nx, k.ny);
-    F4 bx = vn1 - p1.velocityBias, by = vn2 - p2.velocityBias;
+template <typename F>
+void solveNormalBlock(ContactLanes<F>& k, Velocities<F>& A, Velocities<F>& B, F lanes) {
+    PointLanes<F>& p1 = k.p[0];
+    PointLanes<F>& p2 = k.p[1];
+    const F old1 = p1.normalImpulse, old2 = p2.normalImpulse;
+    const F vn1 = relativeAlong(A, B, p1, k.nx, k.ny);
+    const F vn2 = relativeAlong(A, B, p2, k.nx, k.ny);
+    F bx = vn1 - p1.velocityBias, by = vn2 - p2.velocityBias;
     // b -= K * old
-    const F4 kOldX = k.kxx * old1 + k.kyx * old2;
-    const F4 kOldY = k.kxy * old1 + k.kyy * old2;
+    const F kOldX = k.kxx * old1 + k.kyx * old2;
+    const F kOldY = k.kxy * old1 + k.kyy * old2;
     bx = bx - kOldX;
     by = by - kOldY;
-    const F4 zero(0.0f);
+    const F zero(0.0f);
 
     // Both push: x = -(M b).
-    const F4 bothX = -(k.mxx * bx + k.myx * by);
-    const F4 bothY = -(k.mxy * bx + k.myy * by);
-    const F4 bothOk = both(atLeast(bothX, zero), atLeast(bothY, zero));
+    const F bothX = -(k.mxx * bx + k.myx * by);
+    const F bothY = -(k.mxy * bx + k.myy * by);
+    const F bothOk = both(atLeast(bothX, zero), atLeast(bothY, zero));
     // Only the first: x = (-m1 bx, 0), and the second not approaching.
-    const F4 firstX = (-p1.normalMass) * bx;
-    const F4 firstOk = both(atLeast(firstX, zero), atLeast(k.kxy * firstX + by, zero));
+    const F firstX = (-p1.normalMass) * bx;
+    const F firstOk = both(atLeast(firstX, zero), atLeast(k.kxy * firstX + by, zero));
     // Only the second: x = (0, -m2 by).
-    const F4 secondY = (-p2.normalMass) * by;
-    const F4 secondOk = both(atLeast(secondY, zero), atLeast(k.kyx * secondY + bx, zero));
+    const F secondY = (-p2.normalMass) * by;
+    const F secondOk = both(atLeast(secondY, zero), atLeast(k.kyx * secondY + bx, zero));
     // Neither: both separating.
-    const F4 noneOk = both(atLeast(bx, zero), atLeast(by, zero));
+    const F noneOk = both(atLeast(bx, zero), atLeast(by, zero));
 
-    F4 x1 = select(bothOk, bothX, select(firstOk, firstX, zero));
-    F4 x2 = select(bothOk, bothY, select(firstOk, zero, select(secondOk, secondY, zero)));
-    const F4 found = both(lanes, either(either(bothOk, firstOk), either(secondOk, noneOk)));
+    F x1 = select(bothOk, bothX, select(firstOk, firstX, zero));
+    F x2 = select(bothOk, bothY, select(firstOk, zero, select(secondOk, secondY, zero)));
+    const F found = both(lanes, either(either(bothOk, firstOk), either(secondOk, noneOk)));
 
-    const F4 d1 = x1 - old1, d2 = x2 - old2;
-    const F4 P1x = d1 * k.nx, P1y = d1 * k.ny;
-    const F4 P2x = d2 * k.nx, P2y = d2 * k.ny;
-    const F4 Px = P1x + P2x, Py = P1y + P2y;
+    const F d1 = x1 - old1, d2 = x2 - old2;
+    const F P1x = d1 * k.nx, P1y = d1 * k.ny;
+    const F P2x = d2 * k.nx, P2y = d2 * k.ny;
+    const F Px = P1x + P2x, Py = P1y + P2y;
     A.vx = select(found, A.vx - k.mA * Px, A.vx);
     A.vy = select(found, A.vy - k.mA * Py, A.vy);
     A.w = select(found,
@@ -268,177 +249,214 @@ void solveNormalBlock(Contacts4& k, Velocity4& A, Velocity4& B, F4 lanes) {
     p2.normalImpulse = select(found, x2, old2);
 }
 
-// One sweep's work on four contacts: friction, then the normal solve each contact would take.
-template <bool relaxing>
-void solveFour(ContactVelocityConstraint* const c[4], SolverVelocity* velocities, bool soft,
+// One sweep's work on a tile's contacts: friction, then the normal solve each contact would
+// take.
+template <bool relaxing, typename F>
+void solveTile(ContactTile& tile, SolverVelocity* velocities, bool soft,
                const SoftFactors& softness) {
-    SolverVelocity* bodyA[4];
-    SolverVelocity* bodyB[4];
-    for (int lane = 0; lane < 4; ++lane) {
-        bodyA[lane] = &velocities[c[lane]->indexA];
-        bodyB[lane] = &velocities[c[lane]->indexB];
-    }
-    Contacts4 k = load(c);
-    Velocity4 A = loadVelocities(bodyA);
-    Velocity4 B = loadVelocities(bodyB);
-    solveFriction(k, A, B);
-    const F4 all(_mm_castsi128_ps(_mm_set1_epi32(-1)));
+    static_assert(F::kWidth == kContactLanes, "a tile is solved in one go");
+    const std::int32_t* indexA = tile.indexA;
+    const std::int32_t* indexB = tile.indexB;
+    ContactLanes<F> c = loadContacts<F>(tile);
+    Velocities<F> A = loadVelocities<F>(velocities, indexA);
+    Velocities<F> B = loadVelocities<F>(velocities, indexB);
+    solveFriction(c, A, B);
+    const F all = F::allLanes();
     if (relaxing) {
-        solveNormalPoints<false>(k, A, B, all, softness);
+        solveNormalPoints<false>(c, A, B, all, softness);
     } else if (soft) {
-        solveNormalPoints<true>(k, A, B, all, softness);
+        solveNormalPoints<true>(c, A, B, all, softness);
     } else {
-        solveNormalBlock(k, A, B, k.has2);
-        solveNormalPoints<false>(k, A, B, F4(_mm_andnot_ps(k.has2.v, all.v)), softness);
+        if (any(c.has2)) solveNormalBlock(c, A, B, c.has2);
+        solveNormalPoints<false>(c, A, B, butNot(all, c.has2), softness);
     }
-    storeImpulses(k, c);
-    storeVelocities(A, bodyA);
-    storeVelocities(B, bodyB);
+    storeImpulses(c, tile);
+    // B after A: where lanes share a static body (never written back: its slot is not a
+    // solver slot of the island's moving bodies) the order does not matter; no two lanes share
+    // a moving body.
+    storeVelocities(A, velocities, indexA);
+    storeVelocities(B, velocities, indexB);
+}
+
+// Last step's impulses applied to a tile's contacts (ContactSolver::warmStart).
+template <typename F>
+void warmStartTile(const ContactTile& tile, SolverVelocity* velocities) {
+    const ContactLanes<F> c = loadContacts<F>(tile);
+    Velocities<F> A = loadVelocities<F>(velocities, tile.indexA);
+    Velocities<F> B = loadVelocities<F>(velocities, tile.indexB);
+    const F tx = c.ny, ty = -c.nx;
+    for (int j = 0; j < 2; ++j) {
+        const PointLanes<F>& p = c.p[j];
+        const F active = j == 0 ? c.has1 : c.has2;
+        if (!any(active)) continue;
+        const F Px = p.normalImpulse * c.nx + p.tangentImpulse * tx;
+        const F Py = p.normalImpulse * c.ny + p.tangentImpulse * ty;
+        apply(A, B, c, p, Px, Py, active);
+    }
+    storeVelocities(A, velocities, tile.indexA);
+    storeVelocities(B, velocities, tile.indexB);
 }
 
 // --- position sweeps (NGS) ---------------------------------------------------------------------
 
-struct Pose4 {
-    F4 cx, cy, a;
+template <typename F>
+struct PoseLanes {
+    F cx, cy, a;
 };
 
-struct Rot4 {
-    F4 s, c;
+template <typename F>
+struct RotLanes {
+    F s, c;
+};
+
+template <typename F>
+struct VecLanes {
+    F x, y;
 };
 
 // The rotation of each lane's angle, by the scalar Rot (libm's sine and cosine: no wide
 // routine rounds as they do).
-Rot4 rotations(F4 angles) {
-    float a[4], s[4], c[4];
-    store(angles, a);
-    for (int lane = 0; lane < 4; ++lane) {
+template <typename F>
+RotLanes<F> rotations(F angles) {
+    constexpr int W = F::kWidth;
+    float a[W], s[W], c[W];
+    store(a, angles);
+    for (int lane = 0; lane < W; ++lane) {
         const Rot q(a[lane]);
         s[lane] = q.s;
         c[lane] = q.c;
     }
-    return {F4(_mm_loadu_ps(s)), F4(_mm_loadu_ps(c))};
+    return {F::load(s), F::load(c)};
 }
-
-struct Vec4 {
-    F4 x, y;
-};
 
 // rotate(q, v) and transformPoint({p, q}, v).
-Vec4 rotate4(const Rot4& q, const Vec4& v) {
+template <typename F>
+VecLanes<F> rotateLanes(const RotLanes<F>& q, const VecLanes<F>& v) {
     return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
 }
-Vec4 transform4(const Rot4& q, const Vec4& p, const Vec4& v) {
-    const Vec4 r = rotate4(q, v);
+template <typename F>
+VecLanes<F> transformLanes(const RotLanes<F>& q, const VecLanes<F>& p, const VecLanes<F>& v) {
+    const VecLanes<F> r = rotateLanes(q, v);
     return {r.x + p.x, r.y + p.y};
 }
 
-template <typename Get>
-F4 gatherPosition(const ContactPositionConstraint* const c[4], Get get) {
-    return F4(_mm_setr_ps(get(*c[0]), get(*c[1]), get(*c[2]), get(*c[3])));
+template <typename F>
+PoseLanes<F> loadPoses(SolverPose* const pose[]) {
+    return {eachLane<F>([&](int i) { return pose[i]->c.x; }),
+            eachLane<F>([&](int i) { return pose[i]->c.y; }),
+            eachLane<F>([&](int i) { return pose[i]->a; })};
 }
 
-// A lane mask from a per-constraint test.
-template <typename Test>
-F4 maskOf(const ContactPositionConstraint* const c[4], Test test) {
-    return F4(_mm_castsi128_ps(_mm_setr_epi32(test(*c[0]) ? -1 : 0, test(*c[1]) ? -1 : 0,
-                                              test(*c[2]) ? -1 : 0, test(*c[3]) ? -1 : 0)));
+template <typename F>
+void storePoses(const PoseLanes<F>& in, SolverPose* const pose[]) {
+    constexpr int W = F::kWidth;
+    float x[W], y[W], a[W];
+    store(x, in.cx);
+    store(y, in.cy);
+    store(a, in.a);
+    for (int lane = 0; lane < W; ++lane) *pose[lane] = {{x[lane], y[lane]}, a[lane]};
 }
 
-// One NGS sweep over four contacts whose bodies all move (ContactSolver::positionSweep); writes
-// each lane's separations, point by point, into separations[point][lane].
-void positionFour(const ContactPositionConstraint* const c[4], SolverPose* positions, float bias,
-                  float separations[2][4]) {
-    using P = const ContactPositionConstraint&;
-    SolverPose* poseA[4];
-    SolverPose* poseB[4];
-    for (int lane = 0; lane < 4; ++lane) {
-        poseA[lane] = &positions[c[lane]->indexA];
-        poseB[lane] = &positions[c[lane]->indexB];
+// One NGS sweep over contacts c[0 .. F::kWidth) whose bodies all move
+// (ContactSolver::positionSweep); writes each lane's separations, point by point, into
+// separations[point][lane].
+template <typename F>
+void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, float bias,
+                   float separations[2][F::kWidth]) {
+    constexpr int W = F::kWidth;
+    SolverPose* poseA[W];
+    SolverPose* poseB[W];
+    for (int lane = 0; lane < W; ++lane) {
+        poseA[lane] = &positions[c[lane].indexA];
+        poseB[lane] = &positions[c[lane].indexB];
     }
-    Pose4 A{F4(_mm_setr_ps(poseA[0]->c.x, poseA[1]->c.x, poseA[2]->c.x, poseA[3]->c.x)),
-            F4(_mm_setr_ps(poseA[0]->c.y, poseA[1]->c.y, poseA[2]->c.y, poseA[3]->c.y)),
-            F4(_mm_setr_ps(poseA[0]->a, poseA[1]->a, poseA[2]->a, poseA[3]->a))};
-    Pose4 B{F4(_mm_setr_ps(poseB[0]->c.x, poseB[1]->c.x, poseB[2]->c.x, poseB[3]->c.x)),
-            F4(_mm_setr_ps(poseB[0]->c.y, poseB[1]->c.y, poseB[2]->c.y, poseB[3]->c.y)),
-            F4(_mm_setr_ps(poseB[0]->a, poseB[1]->a, poseB[2]->a, poseB[3]->a))};
-    const F4 mA = gatherPosition(c, [](P x) { return x.mA; });
-    const F4 mB = gatherPosition(c, [](P x) { return x.mB; });
-    const F4 iA = gatherPosition(c, [](P x) { return x.iA; });
-    const F4 iB = gatherPosition(c, [](P x) { return x.iB; });
-    const F4 radiusA = gatherPosition(c, [](P x) { return x.radiusA; });
-    const F4 radiusB = gatherPosition(c, [](P x) { return x.radiusB; });
-    const Vec4 centerA{gatherPosition(c, [](P x) { return x.localCenterA.x; }),
-                       gatherPosition(c, [](P x) { return x.localCenterA.y; })};
-    const Vec4 centerB{gatherPosition(c, [](P x) { return x.localCenterB.x; }),
-                       gatherPosition(c, [](P x) { return x.localCenterB.y; })};
-    const Vec4 localNormal{gatherPosition(c, [](P x) { return x.localNormal.x; }),
-                           gatherPosition(c, [](P x) { return x.localNormal.y; })};
-    const Vec4 localPoint{gatherPosition(c, [](P x) { return x.localPoint.x; }),
-                          gatherPosition(c, [](P x) { return x.localPoint.y; })};
+    auto field = [c](auto get) { return eachLane<F>([&](int i) { return get(c[i]); }); };
+    using P = const ContactPositionConstraint&;
+    PoseLanes<F> A = loadPoses<F>(poseA);
+    PoseLanes<F> B = loadPoses<F>(poseB);
+    const F mA = field([](P x) { return x.mA; });
+    const F mB = field([](P x) { return x.mB; });
+    const F iA = field([](P x) { return x.iA; });
+    const F iB = field([](P x) { return x.iB; });
+    const F radiusA = field([](P x) { return x.radiusA; });
+    const F radiusB = field([](P x) { return x.radiusB; });
+    const VecLanes<F> centerA{field([](P x) { return x.localCenterA.x; }),
+                              field([](P x) { return x.localCenterA.y; })};
+    const VecLanes<F> centerB{field([](P x) { return x.localCenterB.x; }),
+                              field([](P x) { return x.localCenterB.y; })};
+    const VecLanes<F> localNormal{field([](P x) { return x.localNormal.x; }),
+                                  field([](P x) { return x.localNormal.y; })};
+    const VecLanes<F> localPoint{field([](P x) { return x.localPoint.x; }),
+                                 field([](P x) { return x.localPoint.y; })};
     // A circles manifold's centre on B (its only point, whichever point is being solved).
-    const Vec4 first{gatherPosition(c, [](P x) { return x.localPoints[0].x; }),
-                     gatherPosition(c, [](P x) { return x.localPoints[0].y; })};
-    const F4 circles = maskOf(c, [](P x) { return x.type == ManifoldType::Circles; });
-    const F4 faceA = maskOf(c, [](P x) { return x.type == ManifoldType::FaceA; });
-    const F4 zero(0.0f), one(1.0f), half(0.5f);
+    const VecLanes<F> first{field([](P x) { return x.localPoints[0].x; }),
+                            field([](P x) { return x.localPoints[0].y; })};
+    const F circles = maskEach<F>([c](int i) { return c[i].type == ManifoldType::Circles; });
+    const F faceA = maskEach<F>([c](int i) { return c[i].type == ManifoldType::FaceA; });
+    const F faceB = maskEach<F>([c](int i) { return c[i].type == ManifoldType::FaceB; });
+    const bool anyCircles = any(circles), anyFaceA = any(faceA), anyFaceB = any(faceB);
+    const F zero(0.0f), one(1.0f), half(0.5f);
 
     for (int j = 0; j < 2; ++j) {
-        const F4 active = maskOf(c, [j](P x) { return x.pointCount > j; });
-        const Vec4 local{gatherPosition(c, [j](P x) { return x.localPoints[j].x; }),
-                         gatherPosition(c, [j](P x) { return x.localPoints[j].y; })};
+        const F active = maskEach<F>([c, j](int i) { return c[i].pointCount > j; });
+        if (!any(active)) break;  // no lane has a second point
+        const VecLanes<F> local{field([j](P x) { return x.localPoints[j].x; }),
+                                field([j](P x) { return x.localPoints[j].y; })};
         // solverTransform of each body: xf.p = c - rotate(q, localCenter).
-        const Rot4 qA = rotations(A.a), qB = rotations(B.a);
-        const Vec4 turnedA = rotate4(qA, centerA), turnedB = rotate4(qB, centerB);
-        const Vec4 pA{A.cx - turnedA.x, A.cy - turnedA.y};
-        const Vec4 pB{B.cx - turnedB.x, B.cy - turnedB.y};
+        const RotLanes<F> qA = rotations(A.a), qB = rotations(B.a);
+        const VecLanes<F> turnedA = rotateLanes(qA, centerA), turnedB = rotateLanes(qB, centerB);
+        const VecLanes<F> pA{A.cx - turnedA.x, A.cy - turnedA.y};
+        const VecLanes<F> pB{B.cx - turnedB.x, B.cy - turnedB.y};
 
-        // measure(), each manifold type, then the lane's own.
-        // Circles: from centre A to centre B.
-        const Vec4 centreA = transform4(qA, pA, localPoint);
-        const Vec4 centreB = transform4(qB, pB, first);
-        const Vec4 d{centreB.x - centreA.x, centreB.y - centreA.y};
-        const F4 len(_mm_sqrt_ps((d.x * d.x + d.y * d.y).v));
-        const F4 positive = lessThan(zero, len);
-        const F4 inverse(_mm_div_ps(one.v, len.v));
-        const Vec4 circleNormal{select(positive, inverse * d.x, one),
-                                select(positive, inverse * d.y, zero)};
-        const Vec4 circlePoint{half * (centreA.x + centreB.x), half * (centreA.y + centreB.y)};
-        const F4 circleSeparation =
-            ((d.x * circleNormal.x + d.y * circleNormal.y) - radiusA) - radiusB;
-        // FaceA: A's face, B's point.
-        const Vec4 normalA = rotate4(qA, localNormal);
-        const Vec4 planeA = transform4(qA, pA, localPoint);
-        const Vec4 pointOnB = transform4(qB, pB, local);
-        const F4 faceASeparation =
-            (((pointOnB.x - planeA.x) * normalA.x + (pointOnB.y - planeA.y) * normalA.y) -
-             radiusA) -
-            radiusB;
-        // FaceB: B's face, A's point, the normal turned to point from A to B.
-        const Vec4 normalB = rotate4(qB, localNormal);
-        const Vec4 planeB = transform4(qB, pB, localPoint);
-        const Vec4 pointOnA = transform4(qA, pA, local);
-        const F4 faceBSeparation =
-            (((pointOnA.x - planeB.x) * normalB.x + (pointOnA.y - planeB.y) * normalB.y) -
-             radiusA) -
-            radiusB;
+        // measure(), for each manifold type some lane has; each lane then keeps its own.
+        VecLanes<F> normal, point;
+        F separation;
+        if (anyCircles) {  // from centre A to centre B
+            const VecLanes<F> centreA = transformLanes(qA, pA, localPoint);
+            const VecLanes<F> centreB = transformLanes(qB, pB, first);
+            const VecLanes<F> d{centreB.x - centreA.x, centreB.y - centreA.y};
+            const F len = squareRoot(d.x * d.x + d.y * d.y);
+            const F positive = lessThan(zero, len);
+            const F inverse = one / len;
+            normal = {select(positive, inverse * d.x, one), select(positive, inverse * d.y, zero)};
+            point = {half * (centreA.x + centreB.x), half * (centreA.y + centreB.y)};
+            separation = ((d.x * normal.x + d.y * normal.y) - radiusA) - radiusB;
+        }
+        if (anyFaceA) {  // A's face, B's point
+            const VecLanes<F> normalA = rotateLanes(qA, localNormal);
+            const VecLanes<F> planeA = transformLanes(qA, pA, localPoint);
+            const VecLanes<F> pointOnB = transformLanes(qB, pB, local);
+            const F s =
+                (((pointOnB.x - planeA.x) * normalA.x + (pointOnB.y - planeA.y) * normalA.y) -
+                 radiusA) -
+                radiusB;
+            normal = {select(faceA, normalA.x, normal.x), select(faceA, normalA.y, normal.y)};
+            point = {select(faceA, pointOnB.x, point.x), select(faceA, pointOnB.y, point.y)};
+            separation = select(faceA, s, separation);
+        }
+        if (anyFaceB) {  // B's face, A's point, the normal turned to point from A to B
+            const VecLanes<F> normalB = rotateLanes(qB, localNormal);
+            const VecLanes<F> planeB = transformLanes(qB, pB, localPoint);
+            const VecLanes<F> pointOnA = transformLanes(qA, pA, local);
+            const F s =
+                (((pointOnA.x - planeB.x) * normalB.x + (pointOnA.y - planeB.y) * normalB.y) -
+                 radiusA) -
+                radiusB;
+            normal = {select(faceB, -normalB.x, normal.x), select(faceB, -normalB.y, normal.y)};
+            point = {select(faceB, pointOnA.x, point.x), select(faceB, pointOnA.y, point.y)};
+            separation = select(faceB, s, separation);
+        }
+        store(separations[j], separation);
 
-        const Vec4 normal{select(circles, circleNormal.x, select(faceA, normalA.x, -normalB.x)),
-                          select(circles, circleNormal.y, select(faceA, normalA.y, -normalB.y))};
-        const Vec4 point{select(circles, circlePoint.x, select(faceA, pointOnB.x, pointOnA.x)),
-                         select(circles, circlePoint.y, select(faceA, pointOnB.y, pointOnA.y))};
-        const F4 separation =
-            select(circles, circleSeparation, select(faceA, faceASeparation, faceBSeparation));
-        store(separation, separations[j]);
-
-        const Vec4 rA{point.x - A.cx, point.y - A.cy};
-        const Vec4 rB{point.x - B.cx, point.y - B.cy};
-        const F4 C =
-            clampOf(F4(bias) * (separation + F4(kLinearSlop)), F4(-kMaxLinearCorrection), zero);
-        const F4 rnA = rA.x * normal.y - rA.y * normal.x;
-        const F4 rnB = rB.x * normal.y - rB.y * normal.x;
-        const F4 K = ((mA + mB) + iA * rnA * rnA) + iB * rnB * rnB;
-        const F4 impulse = select(lessThan(zero, K), F4(_mm_div_ps((-C).v, K.v)), zero);
-        const F4 Px = impulse * normal.x, Py = impulse * normal.y;
+        const VecLanes<F> rA{point.x - A.cx, point.y - A.cy};
+        const VecLanes<F> rB{point.x - B.cx, point.y - B.cy};
+        const F C =
+            clampOf(F(bias) * (separation + F(kLinearSlop)), F(-kMaxLinearCorrection), zero);
+        const F rnA = rA.x * normal.y - rA.y * normal.x;
+        const F rnB = rB.x * normal.y - rB.y * normal.x;
+        const F K = ((mA + mB) + iA * rnA * rnA) + iB * rnB * rnB;
+        const F impulse = select(lessThan(zero, K), (-C) / K, zero);
+        const F Px = impulse * normal.x, Py = impulse * normal.y;
         A.cx = select(active, A.cx - mA * Px, A.cx);
         A.cy = select(active, A.cy - mA * Py, A.cy);
         A.a = select(active, A.a - iA * (rA.x * Py - rA.y * Px), A.a);
@@ -446,17 +464,32 @@ void positionFour(const ContactPositionConstraint* const c[4], SolverPose* posit
         B.cy = select(active, B.cy + mB * Py, B.cy);
         B.a = select(active, B.a + iB * (rB.x * Py - rB.y * Px), B.a);
     }
-    float ax[4], ay[4], aa[4], bx[4], by[4], ba[4];
-    store(A.cx, ax);
-    store(A.cy, ay);
-    store(A.a, aa);
-    store(B.cx, bx);
-    store(B.cy, by);
-    store(B.a, ba);
-    for (int lane = 0; lane < 4; ++lane) {
-        *poseA[lane] = {{ax[lane], ay[lane]}, aa[lane]};
-        *poseB[lane] = {{bx[lane], by[lane]}, ba[lane]};
+    storePoses(A, poseA);
+    storePoses(B, poseB);
+}
+
+#if PIVOT_LANES_8
+using ContactLanesF = F8;
+#else
+using ContactLanesF = F4;
+#endif
+
+template <typename F>
+int positionRun(int k, IndexRange range, const ContactPositionConstraint* constraints,
+                SolverPose* positions, float bias, float& smallest) {
+    constexpr int W = F::kWidth;
+    for (; k + W <= range.end; k += W) {
+        float separations[2][W];
+        positionLanes<F>(constraints + k, positions, bias, separations);
+        // Folded in the order the one-by-one sweep meets them: contact by contact, point by
+        // point (minSeparation's NaN rule makes the order matter).
+        for (int lane = 0; lane < W; ++lane) {
+            for (int j = 0; j < constraints[k + lane].pointCount; ++j) {
+                smallest = ContactSolver::minSeparation(smallest, separations[j][lane]);
+            }
+        }
     }
+    return k;
 }
 
 }  // namespace
@@ -469,17 +502,29 @@ void ContactSolver::setWideSolving(bool enabled) {
     wideEnabled = enabled;
 }
 
+bool ContactSolver::wideSolving() {
+    return wideEnabled.load(std::memory_order_relaxed);
+}
+
 int ContactSolver::solveWide(IndexRange range, SolverVelocity* velocities, bool relaxing) {
+    // The tiles laid out at reset: runs of kContactLanes from the range's start (a block of an
+    // independent batch) while they last.
     int k = range.begin;
-    if (!wideEnabled.load(std::memory_order_relaxed)) return k;
-    for (; k + 4 <= range.end; k += 4) {
-        ContactVelocityConstraint* const four[4] = {&velocity_[k], &velocity_[k + 1],
-                                                    &velocity_[k + 2], &velocity_[k + 3]};
+    for (; k + kContactLanes <= range.end && tiles_.isTileStart(k); k += kContactLanes) {
+        ContactTile& tile = tiles_.tileAt(k);
         if (relaxing) {
-            solveFour<true>(four, velocities, soft_, softness_);
+            solveTile<true, ContactLanesF>(tile, velocities, soft_, softness_);
         } else {
-            solveFour<false>(four, velocities, soft_, softness_);
+            solveTile<false, ContactLanesF>(tile, velocities, soft_, softness_);
         }
+    }
+    return k;
+}
+
+int ContactSolver::warmStartWide(IndexRange range, SolverVelocity* velocities) const {
+    int k = range.begin;
+    for (; k + kContactLanes <= range.end && tiles_.isTileStart(k); k += kContactLanes) {
+        warmStartTile<ContactLanesF>(tiles_.tileAt(k), velocities);
     }
     return k;
 }
@@ -488,27 +533,25 @@ int ContactSolver::positionSweepWide(IndexRange range, SolverPose* positions, fl
                                      float& smallest) const {
     int k = range.begin;
     if (!wideEnabled.load(std::memory_order_relaxed)) return k;
-    for (; k + 4 <= range.end; k += 4) {
-        const ContactPositionConstraint* const four[4] = {&position_[k], &position_[k + 1],
-                                                          &position_[k + 2], &position_[k + 3]};
-        float separations[2][4];
-        positionFour(four, positions, bias, separations);
-        // Folded in the order the one-by-one sweep meets them: contact by contact, point by
-        // point (minSeparation's NaN rule makes the order matter).
-        for (int lane = 0; lane < 4; ++lane) {
-            for (int j = 0; j < four[lane]->pointCount; ++j) {
-                smallest = minSeparation(smallest, separations[j][lane]);
-            }
-        }
-    }
-    return k;
+#if PIVOT_LANES_8
+    k = positionRun<F8>(k, range, position_.data(), positions, bias, smallest);
+#endif
+    return positionRun<F4>(k, range, position_.data(), positions, bias, smallest);
 }
 
 #else
 
 void ContactSolver::setWideSolving(bool) {}
 
+bool ContactSolver::wideSolving() {
+    return false;
+}
+
 int ContactSolver::positionSweepWide(IndexRange range, SolverPose*, float, float&) const {
+    return range.begin;
+}
+
+int ContactSolver::warmStartWide(IndexRange range, SolverVelocity*) const {
     return range.begin;
 }
 
@@ -516,6 +559,6 @@ int ContactSolver::solveWide(IndexRange range, SolverVelocity*, bool) {
     return range.begin;  // no wide path on this target: the caller solves every contact
 }
 
-#endif
+#endif  // PIVOT_LANES_4
 
 }  // namespace pivot

@@ -1,5 +1,7 @@
-// A share of an array: elements [begin, end).
+// A share of an array: elements [begin, end); a batch of constraints, and how its blocks are cut.
 #pragma once
+
+#include <cstdint>
 
 namespace pivot {
 
@@ -7,5 +9,18 @@ struct IndexRange {
     int begin = 0;
     int end = 0;
 };
+
+/// Constraints [begin, end) of one array that may be solved in any order, or, if serial, only
+/// in order (by one member).
+struct Batch {
+    std::int32_t begin = 0;
+    std::int32_t end = 0;
+    bool serial = true;
+};
+
+/// A batch of independent constraints is cut into blocks at multiples of this from its start
+/// (islands/team.h), so that a solver working on several constraints at a time finds its runs
+/// where it laid them out (constraints/contact_tiles.h), whatever the number of workers.
+constexpr int kBatchAlignment = 8;
 
 }  // namespace pivot

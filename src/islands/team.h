@@ -24,14 +24,6 @@
 
 namespace pivot {
 
-/// Constraints [begin, end) of one array that may be solved in any order, or, if serial, only
-/// in order (by one member).
-struct Batch {
-    std::int32_t begin = 0;
-    std::int32_t end = 0;
-    bool serial = true;
-};
-
 class Team {
 public:
     /// A team of one, on the calling thread.
@@ -44,10 +36,11 @@ public:
     bool leader() const { return member_ == 0; }
 
     /// A stage of work on [0, count) whose items are independent: f(range) runs on the blocks
-    /// this member claims (the blocks depend on count and minBlock only). Returns once no block
-    /// is left to claim, not once all are done: sync() waits for that.
+    /// this member claims (the blocks depend on count, minBlock and alignment only; each but
+    /// the first starts at a multiple of `alignment`). Returns once no block is left to claim,
+    /// not once all are done: sync() waits for that.
     template <typename F>
-    void forBlocks(int count, int minBlock, F&& f) const {
+    void forBlocks(int count, int minBlock, F&& f, int alignment = 1) const {
         if (count <= 0) return;
         if (size_ == 1) {
             f(IndexRange{0, count});
@@ -57,7 +50,9 @@ public:
                                       std::min(kBlocksPerMember * size_, StageBoard::kMaxBlocks));
         claimBlocks(blocks, [&](int b) {
             const auto at = [&](int k) {
-                return static_cast<int>(static_cast<std::int64_t>(count) * k / blocks);
+                if (k == blocks) return count;
+                const auto even = static_cast<int>(static_cast<std::int64_t>(count) * k / blocks);
+                return even / alignment * alignment;
             };
             f(IndexRange{at(b), at(b + 1)});
         });
@@ -69,14 +64,15 @@ public:
         forBlocks(count, kMinBlock, std::forward<F>(f));
     }
 
-    /// A stage over one batch: a serial batch is one block, so one member solves it in order.
+    /// A stage over one batch: a serial batch is one block, so one member solves it in order;
+    /// an independent one is cut at multiples of kBatchAlignment from its start.
     template <typename F>
     void forBlocks(const Batch& batch, F&& f) const {
         const int count = batch.end - batch.begin;
         const auto shifted = [&](IndexRange r) {
             f(IndexRange{batch.begin + r.begin, batch.begin + r.end});
         };
-        forBlocks(count, batch.serial ? count : kMinBlock, shifted);
+        forBlocks(count, batch.serial ? count : kMinBlock, shifted, kBatchAlignment);
     }
 
     /// Work for one member (whichever gets there first), as a stage of one block.

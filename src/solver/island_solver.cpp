@@ -341,8 +341,9 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
     // Warm start: contacts, then joints, then mouse joints; each velocity sweep then solves
     // contacts after joints, as Box2D 2.4.1 does (see docs/position-correction.md).
     SolverVelocity* velocities = work.velocities.data();
-    forEachBatch(team, schedule.contactBatches,
-                 [&](IndexRange range) { work.contactSolver.warmStart(range, velocities); });
+    forEachBatchSaying(team, schedule.contactBatches, [&](IndexRange range, bool independent) {
+        work.contactSolver.warmStart(range, velocities, independent);
+    });
     warmStartJoints(team, work.groups, schedule, velocities);
     const bool hasMouse = island.mouseCount > 0;
     if (hasMouse) {
@@ -427,7 +428,7 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     resizeBuffer(work.motion, slots);
     resizeBuffer(work.rotations, slots);
     work.groups.resize(schedule.groupStart);
-    work.contactSolver.reset(island.contactCount, step);
+    work.contactSolver.reset(island.contactCount, step, &schedule.contactBatches);
     resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
     resizeBuffer(work.positionScratch.pseudo, slots);
     resizeBuffer(work.positionScratch.xpbdStart, slots);

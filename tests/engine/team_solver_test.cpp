@@ -334,6 +334,33 @@ TEST(TeamSolver, AMemberThatHasNotArrivedHoldsNobodyUp) {
     EXPECT_EQ(lateBlocks, 0);
 }
 
+TEST(TeamSolver, AnIndependentBatchIsCutWhereTheContactTilesStart) {
+    // The wide contact sweeps find their tiles at multiples of kBatchAlignment from a batch's
+    // start (constraints/contact_tiles.h): every block must start there, on any team size,
+    // and the blocks must cover the batch once.
+    for (int workers : {1, 2, 3}) {
+        for (int size : {7, 100, 1000, 4099}) {
+            TaskPool pool(workers);
+            const Batch batch{13, 13 + size, false};
+            std::vector<std::atomic<int>> done(static_cast<std::size_t>(batch.end));
+            std::atomic<int> misaligned{0};
+            pool.region([&](int member) {
+                const Team team(pool, member);
+                team.forBlocks(batch, [&](IndexRange r) {
+                    if ((r.begin - batch.begin) % kBatchAlignment != 0) ++misaligned;
+                    for (int i = r.begin; i < r.end; ++i) ++done[static_cast<std::size_t>(i)];
+                });
+                team.sync();
+            });
+            EXPECT_EQ(misaligned.load(), 0) << workers << " workers, " << size;
+            for (int i = 0; i < batch.end; ++i) {
+                EXPECT_EQ(done[static_cast<std::size_t>(i)].load(), i < batch.begin ? 0 : 1)
+                    << workers << " workers, " << size << ", item " << i;
+            }
+        }
+    }
+}
+
 TEST(TeamSolver, BigIslandsAreColoured) {
     // The scenes below must really exercise the coloured path.
     JointGrid grid{World(WorldDef{}), {}};

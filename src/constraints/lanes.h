@@ -1,0 +1,185 @@
+// Floats in SIMD lanes with the scalar operators, for the contact solver's wide sweeps
+// (contact_solver_wide.cpp): F4, four lanes of SSE2 (the x86-64 baseline), and, when the build
+// targets AVX2 (the PIVOT_AVX2 option), F8, eight lanes.
+//
+// Every operation rounds each lane exactly as the scalar operation does: add, subtract,
+// multiply, divide and square root are IEEE-exact in both widths, nothing is fused (the build
+// never contracts a*b+c into one rounding, and AVX2 does not imply FMA), and the choices below
+// (maxOf, clampOf, the comparisons) make std::max's and std::clamp's choices for ties, signed
+// zeros and NaN. So a lane computes the same bits as the one-contact code, whatever the width.
+#pragma once
+
+#include <cstdint>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#define PIVOT_LANES_4 1
+#endif
+#if defined(__AVX2__)
+#include <immintrin.h>
+#define PIVOT_LANES_8 1
+#endif
+
+namespace pivot {
+namespace lanes {
+
+#if PIVOT_LANES_4
+
+struct F4 {
+    static constexpr int kWidth = 4;
+    __m128 v;
+    F4() : v(_mm_setzero_ps()) {}
+    explicit F4(__m128 m) : v(m) {}
+    explicit F4(float s) : v(_mm_set1_ps(s)) {}
+
+    static F4 load(const float* p) { return F4(_mm_loadu_ps(p)); }
+    /// Lanes where counts[lane] > n (all ones), else zeros.
+    static F4 above(const std::int32_t* counts, int n) {
+        const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(counts));
+        return F4(_mm_castsi128_ps(_mm_cmpgt_epi32(c, _mm_set1_epi32(n))));
+    }
+    static F4 allLanes() { return F4(_mm_castsi128_ps(_mm_set1_epi32(-1))); }
+    static F4 set(float a, float b, float c, float d) { return F4(_mm_setr_ps(a, b, c, d)); }
+    static F4 setMask(bool a, bool b, bool c, bool d) {
+        return F4(_mm_castsi128_ps(_mm_setr_epi32(-a, -b, -c, -d)));
+    }
+    /// Field `offset` of the float structures of `stride` floats at base[index[lane]].
+    static F4 gather(const float* base, const std::int32_t* index, int stride, int offset) {
+        return F4(_mm_setr_ps(base[index[0] * stride + offset], base[index[1] * stride + offset],
+                              base[index[2] * stride + offset], base[index[3] * stride + offset]));
+    }
+};
+inline void store(float* p, F4 a) {
+    _mm_storeu_ps(p, a.v);
+}
+inline F4 operator+(F4 a, F4 b) {
+    return F4(_mm_add_ps(a.v, b.v));
+}
+inline F4 operator-(F4 a, F4 b) {
+    return F4(_mm_sub_ps(a.v, b.v));
+}
+inline F4 operator*(F4 a, F4 b) {
+    return F4(_mm_mul_ps(a.v, b.v));
+}
+inline F4 operator/(F4 a, F4 b) {
+    return F4(_mm_div_ps(a.v, b.v));
+}
+inline F4 squareRoot(F4 a) {
+    return F4(_mm_sqrt_ps(a.v));
+}
+inline F4 operator-(F4 a) {  // flips the sign bit, as scalar negation does
+    return F4(_mm_xor_ps(a.v, _mm_set1_ps(-0.0f)));
+}
+// Lane masks (all ones where true).
+inline F4 lessThan(F4 a, F4 b) {
+    return F4(_mm_cmplt_ps(a.v, b.v));
+}
+inline F4 atLeast(F4 a, F4 b) {  // a >= b, false when either is NaN, as the scalar test
+    return F4(_mm_cmpge_ps(a.v, b.v));
+}
+inline F4 both(F4 a, F4 b) {
+    return F4(_mm_and_ps(a.v, b.v));
+}
+inline F4 either(F4 a, F4 b) {
+    return F4(_mm_or_ps(a.v, b.v));
+}
+inline F4 butNot(F4 a, F4 b) {  // a and not b
+    return F4(_mm_andnot_ps(b.v, a.v));
+}
+// mask ? a : b, lane by lane.
+inline F4 select(F4 mask, F4 a, F4 b) {
+    return F4(_mm_or_ps(_mm_and_ps(mask.v, a.v), _mm_andnot_ps(mask.v, b.v)));
+}
+inline bool any(F4 mask) {
+    return _mm_movemask_ps(mask.v) != 0;
+}
+
+#endif  // PIVOT_LANES_4
+
+#if PIVOT_LANES_8
+
+struct F8 {
+    static constexpr int kWidth = 8;
+    __m256 v;
+    F8() : v(_mm256_setzero_ps()) {}
+    explicit F8(__m256 m) : v(m) {}
+    explicit F8(float s) : v(_mm256_set1_ps(s)) {}
+
+    static F8 load(const float* p) { return F8(_mm256_loadu_ps(p)); }
+    static F8 above(const std::int32_t* counts, int n) {
+        const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(counts));
+        return F8(_mm256_castsi256_ps(_mm256_cmpgt_epi32(c, _mm256_set1_epi32(n))));
+    }
+    static F8 allLanes() { return F8(_mm256_castsi256_ps(_mm256_set1_epi32(-1))); }
+    static F8 set(float a, float b, float c, float d, float e, float f, float g, float h) {
+        return F8(_mm256_setr_ps(a, b, c, d, e, f, g, h));
+    }
+    static F8 setMask(bool a, bool b, bool c, bool d, bool e, bool f, bool g, bool h) {
+        return F8(_mm256_castsi256_ps(_mm256_setr_epi32(-a, -b, -c, -d, -e, -f, -g, -h)));
+    }
+    static F8 gather(const float* base, const std::int32_t* index, int stride, int offset) {
+        return F8(_mm256_setr_ps(base[index[0] * stride + offset], base[index[1] * stride + offset],
+                                 base[index[2] * stride + offset], base[index[3] * stride + offset],
+                                 base[index[4] * stride + offset], base[index[5] * stride + offset],
+                                 base[index[6] * stride + offset],
+                                 base[index[7] * stride + offset]));
+    }
+};
+inline void store(float* p, F8 a) {
+    _mm256_storeu_ps(p, a.v);
+}
+inline F8 operator+(F8 a, F8 b) {
+    return F8(_mm256_add_ps(a.v, b.v));
+}
+inline F8 operator-(F8 a, F8 b) {
+    return F8(_mm256_sub_ps(a.v, b.v));
+}
+inline F8 operator*(F8 a, F8 b) {
+    return F8(_mm256_mul_ps(a.v, b.v));
+}
+inline F8 operator/(F8 a, F8 b) {
+    return F8(_mm256_div_ps(a.v, b.v));
+}
+inline F8 squareRoot(F8 a) {
+    return F8(_mm256_sqrt_ps(a.v));
+}
+inline F8 operator-(F8 a) {
+    return F8(_mm256_xor_ps(a.v, _mm256_set1_ps(-0.0f)));
+}
+// The ordered, non-signalling predicates: false when either lane is NaN, as SSE's cmplt/cmpge.
+inline F8 lessThan(F8 a, F8 b) {
+    return F8(_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ));
+}
+inline F8 atLeast(F8 a, F8 b) {
+    return F8(_mm256_cmp_ps(a.v, b.v, _CMP_GE_OQ));
+}
+inline F8 both(F8 a, F8 b) {
+    return F8(_mm256_and_ps(a.v, b.v));
+}
+inline F8 either(F8 a, F8 b) {
+    return F8(_mm256_or_ps(a.v, b.v));
+}
+inline F8 butNot(F8 a, F8 b) {
+    return F8(_mm256_andnot_ps(b.v, a.v));
+}
+inline F8 select(F8 mask, F8 a, F8 b) {
+    return F8(_mm256_blendv_ps(b.v, a.v, mask.v));
+}
+inline bool any(F8 mask) {
+    return _mm256_movemask_ps(mask.v) != 0;
+}
+
+#endif  // PIVOT_LANES_8
+
+// Shared by both widths.
+template <typename F>
+F maxOf(F a, F b) {  // std::max(a, b): b only if a < b
+    return select(lessThan(a, b), b, a);
+}
+template <typename F>
+F clampOf(F x, F lo, F hi) {  // std::clamp(x, lo, hi)
+    return select(lessThan(x, lo), lo, select(lessThan(hi, x), hi, x));
+}
+
+}  // namespace lanes
+}  // namespace pivot
