@@ -32,15 +32,7 @@ namespace {
 
 using namespace lanes;
 
-// Lane i of the result is get(i), for i < F::kWidth.
-template <typename F, typename Get, std::size_t... I>
-F eachLane(Get get, std::index_sequence<I...>) {
-    return F::set(get(static_cast<int>(I))...);
-}
-template <typename F, typename Get>
-F eachLane(Get get) {
-    return eachLane<F>(get, std::make_index_sequence<F::kWidth>());
-}
+// Lane i of the mask is test(i), for i < F::kWidth.
 template <typename F, typename Test, std::size_t... I>
 F maskEach(Test test, std::index_sequence<I...>) {
     return F::setMask(test(static_cast<int>(I))...);
@@ -56,14 +48,11 @@ struct Velocities {
     F vx, vy, w;
 };
 
-// SolverVelocity as three floats: v.x, v.y, w.
-static_assert(sizeof(SolverVelocity) == 3 * sizeof(float), "SolverVelocity is read as floats");
-
 template <typename F>
 Velocities<F> loadVelocities(const SolverVelocity* velocities, const std::int32_t* index) {
-    const float* base = &velocities[0].v.x;
-    return {F::gather(base, index, 3, 0), F::gather(base, index, 3, 1),
-            F::gather(base, index, 3, 2)};
+    return {F::gather([&](int i) { return velocities[index[i]].v.x; }),
+            F::gather([&](int i) { return velocities[index[i]].v.y; }),
+            F::gather([&](int i) { return velocities[index[i]].w; })};
 }
 
 template <typename F>
@@ -342,9 +331,9 @@ VecLanes<F> transformLanes(const RotLanes<F>& q, const VecLanes<F>& p, const Vec
 
 template <typename F>
 PoseLanes<F> loadPoses(SolverPose* const pose[]) {
-    return {eachLane<F>([&](int i) { return pose[i]->c.x; }),
-            eachLane<F>([&](int i) { return pose[i]->c.y; }),
-            eachLane<F>([&](int i) { return pose[i]->a; })};
+    return {F::gather([&](int i) { return pose[i]->c.x; }),
+            F::gather([&](int i) { return pose[i]->c.y; }),
+            F::gather([&](int i) { return pose[i]->a; })};
 }
 
 template <typename F>
@@ -370,7 +359,7 @@ void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, fl
         poseA[lane] = &positions[c[lane].indexA];
         poseB[lane] = &positions[c[lane].indexB];
     }
-    auto field = [c](auto get) { return eachLane<F>([&](int i) { return get(c[i]); }); };
+    auto field = [c](auto get) { return F::gather([&](int i) { return get(c[i]); }); };
     using P = const ContactPositionConstraint&;
     PoseLanes<F> A = loadPoses<F>(poseA);
     PoseLanes<F> B = loadPoses<F>(poseB);

@@ -39,14 +39,14 @@ struct F4 {
         return F4(_mm_castsi128_ps(_mm_cmpgt_epi32(c, _mm_set1_epi32(n))));
     }
     static F4 allLanes() { return F4(_mm_castsi128_ps(_mm_set1_epi32(-1))); }
-    static F4 set(float a, float b, float c, float d) { return F4(_mm_setr_ps(a, b, c, d)); }
+    /// Lane i all ones where the i-th argument is true.
     static F4 setMask(bool a, bool b, bool c, bool d) {
         return F4(_mm_castsi128_ps(_mm_setr_epi32(-a, -b, -c, -d)));
     }
-    /// Field `offset` of the float structures of `stride` floats at base[index[lane]].
-    static F4 gather(const float* base, const std::int32_t* index, int stride, int offset) {
-        return F4(_mm_setr_ps(base[index[0] * stride + offset], base[index[1] * stride + offset],
-                              base[index[2] * stride + offset], base[index[3] * stride + offset]));
+    /// Lane i is get(i).
+    template <typename Get>
+    static F4 gather(Get get) {
+        return F4(_mm_setr_ps(get(0), get(1), get(2), get(3)));
     }
 };
 inline void store(float* p, F4 a) {
@@ -111,18 +111,12 @@ struct F8 {
         return F8(_mm256_castsi256_ps(_mm256_cmpgt_epi32(c, _mm256_set1_epi32(n))));
     }
     static F8 allLanes() { return F8(_mm256_castsi256_ps(_mm256_set1_epi32(-1))); }
-    static F8 set(float a, float b, float c, float d, float e, float f, float g, float h) {
-        return F8(_mm256_setr_ps(a, b, c, d, e, f, g, h));
-    }
     static F8 setMask(bool a, bool b, bool c, bool d, bool e, bool f, bool g, bool h) {
         return F8(_mm256_castsi256_ps(_mm256_setr_epi32(-a, -b, -c, -d, -e, -f, -g, -h)));
     }
-    static F8 gather(const float* base, const std::int32_t* index, int stride, int offset) {
-        return F8(_mm256_setr_ps(base[index[0] * stride + offset], base[index[1] * stride + offset],
-                                 base[index[2] * stride + offset], base[index[3] * stride + offset],
-                                 base[index[4] * stride + offset], base[index[5] * stride + offset],
-                                 base[index[6] * stride + offset],
-                                 base[index[7] * stride + offset]));
+    template <typename Get>
+    static F8 gather(Get get) {
+        return F8(_mm256_setr_ps(get(0), get(1), get(2), get(3), get(4), get(5), get(6), get(7)));
     }
 };
 inline void store(float* p, F8 a) {
