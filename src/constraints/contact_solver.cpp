@@ -214,6 +214,7 @@ void writeTile(ContactTile& tile, int lane, const ContactVelocityConstraint& c) 
         tile.lanes(j, T::kTangentImpulse)[lane] = p.tangentImpulse;
         tile.lanes(j, T::kVelocityBias)[lane] = p.velocityBias;
         tile.lanes(j, T::kSoftTarget)[lane] = p.softTarget;
+        tile.lanes(j, T::kBaseSeparation)[lane] = p.baseSeparation;
     }
     tile.indexA[lane] = c.indexA;
     tile.indexB[lane] = c.indexB;
@@ -366,7 +367,14 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
 }
 
 void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* motion) {
-    for (int k = range.begin; k < range.end; ++k) {
+    for (int k = range.begin; k < range.end;) {
+        // A whole tile at once where the range holds one (its contacts' softTarget is then
+        // the tile's only: they are solved from there).
+        if (tiles_.isTileStart(k) && k + kContactLanes <= range.end) {
+            updateTileSeparations(k, motion);
+            k += kContactLanes;
+            continue;
+        }
         ContactVelocityConstraint& c = velocity_[k];
         const SolverMotion& A = motion[c.indexA];
         const SolverMotion& B = motion[c.indexB];
@@ -376,13 +384,14 @@ void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* moti
             p.softTarget = softTarget(dot(gap, c.normal) + p.baseSeparation);
         }
         const int slot = tiles_.slot(k);
-        if (slot >= 0) {
+        if (slot >= 0) {  // a tile cut by the range's edge
             ContactTile& tile = tiles_.tileOf(slot);
             for (int j = 0; j < 2; ++j) {
                 tile.lanes(j, ContactTile::kSoftTarget)[slot % kContactLanes] =
                     c.points[j].softTarget;
             }
         }
+        ++k;
     }
 }
 

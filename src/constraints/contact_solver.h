@@ -164,6 +164,8 @@ public:
     }
 
 private:
+    /// updateSeparations for the tile that starts at contact k.
+    void updateTileSeparations(int k, const SolverMotion* motion);
     /// Likewise for the warm start.
     int warmStartWide(IndexRange range, SolverVelocity* velocities) const;
     /// A tiled contact's impulses into c (the one-by-one solve works on c), and back.

@@ -286,6 +286,45 @@ void warmStartTile(const ContactTile& tile, SolverVelocity* velocities) {
     storeVelocities(B, velocities, tile.indexB);
 }
 
+// Soft contacts at a later substep: each point's separation re-measured from the bodies'
+// motion since the step began, and its spring's target from it (ContactSolver::
+// updateSeparations and softTarget, operation for operation).
+template <typename F>
+void updateTile(ContactTile& t, const SolverMotion* motion, float biasRate, float pushSpeed) {
+    using T = ContactTile;
+    const auto lane = [&](const std::int32_t* index, auto get) {
+        return F::gather([&](int i) { return get(motion[index[i]]); });
+    };
+    using M = const SolverMotion&;
+    const F dpAx = lane(t.indexA, [](M m) { return m.dp.x; });
+    const F dpAy = lane(t.indexA, [](M m) { return m.dp.y; });
+    const F sA = lane(t.indexA, [](M m) { return m.dq.s; });
+    const F cA = lane(t.indexA, [](M m) { return m.dq.c; });
+    const F dpBx = lane(t.indexB, [](M m) { return m.dp.x; });
+    const F dpBy = lane(t.indexB, [](M m) { return m.dp.y; });
+    const F sB = lane(t.indexB, [](M m) { return m.dq.s; });
+    const F cB = lane(t.indexB, [](M m) { return m.dq.c; });
+    const F nx = F::load(t.lanes(T::kNormalX)), ny = F::load(t.lanes(T::kNormalY));
+    const F zero(0.0f), slop(kLinearSlop), rate(-biasRate), push(pushSpeed);
+    for (int j = 0; j < 2; ++j) {
+        const F active = F::above(t.pointCount, j);
+        if (!any(active)) break;
+        const F rAx = F::load(t.lanes(j, T::kAnchorAx)), rAy = F::load(t.lanes(j, T::kAnchorAy));
+        const F rBx = F::load(t.lanes(j, T::kAnchorBx)), rBy = F::load(t.lanes(j, T::kAnchorBy));
+        // (B.dp - A.dp) + (rotate(B.dq, rB) - rotate(A.dq, rA))
+        const F gapX = (dpBx - dpAx) + ((cB * rBx - sB * rBy) - (cA * rAx - sA * rAy));
+        const F gapY = (dpBy - dpAy) + ((sB * rBx + cB * rBy) - (sA * rAx + cA * rAy));
+        const F separation = (gapX * nx + gapY * ny) + F::load(t.lanes(j, T::kBaseSeparation));
+        // min(-biasRate * min(0, separation + slop), pushSpeed), std::min's choices
+        const F shifted = separation + slop;
+        const F inner = select(lessThan(shifted, zero), shifted, zero);
+        const F speed = rate * inner;
+        const F target = select(lessThan(push, speed), push, speed);
+        float* out = t.lanes(j, T::kSoftTarget);
+        store(out, select(active, target, F::load(out)));
+    }
+}
+
 // --- position sweeps (NGS) ---------------------------------------------------------------------
 
 template <typename F>
@@ -510,6 +549,10 @@ int ContactSolver::solveWide(IndexRange range, SolverVelocity* velocities, bool 
     return k;
 }
 
+void ContactSolver::updateTileSeparations(int k, const SolverMotion* motion) {
+    updateTile<ContactLanesF>(tiles_.tileAt(k), motion, softness_.biasRate, pushSpeed_);
+}
+
 int ContactSolver::warmStartWide(IndexRange range, SolverVelocity* velocities) const {
     int k = range.begin;
     for (; k + kContactLanes <= range.end && tiles_.isTileStart(k); k += kContactLanes) {
@@ -543,6 +586,8 @@ int ContactSolver::positionSweepWide(IndexRange range, SolverPose*, float, float
 int ContactSolver::warmStartWide(IndexRange range, SolverVelocity*) const {
     return range.begin;
 }
+
+void ContactSolver::updateTileSeparations(int, const SolverMotion*) {}  // no tiles here
 
 int ContactSolver::solveWide(IndexRange range, SolverVelocity*, bool) {
     return range.begin;  // no wide path on this target: the caller solves every contact

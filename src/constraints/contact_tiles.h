@@ -64,6 +64,7 @@ struct ContactTile {
         kTangentImpulse,
         kVelocityBias,
         kSoftTarget,
+        kBaseSeparation,  // soft contacts: what later substeps measure their separation from
         kPointFields
     };
     static constexpr int kFields = kContactFields + 2 * kPointFields;
