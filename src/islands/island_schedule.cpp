@@ -7,8 +7,9 @@ namespace pivot {
 void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodies,
                            const SlotPool<Joint>& joints, IslandSchedule& schedule) {
     schedule.colored = isColored(island);
+    schedule.contactsColored = colorsContacts(island);
     schedule.fixedCopies.clear();
-    if (schedule.colored) {
+    if (schedule.contactsColored) {
         resizeBuffer(fixed_, static_cast<std::size_t>(island.bodyCount));
         for (int i = 0; i < island.bodyCount; ++i) {
             fixed_[i] = bodies[island.bodies[i]].type != BodyType::Dynamic;
@@ -16,7 +17,7 @@ void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodie
     }
     planJoints(island, joints, schedule);
     planContacts(island, schedule);
-    if (schedule.colored) giveFixedBodiesPrivateSlots(island, schedule);
+    if (schedule.contactsColored) giveFixedBodiesPrivateSlots(island, schedule, schedule.colored);
 }
 
 void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Joint>& joints,
@@ -60,7 +61,7 @@ void IslandScheduler::planContacts(const IslandView& island, IslandSchedule& sch
     schedule.contactBatches.clear();
     resizeBuffer(schedule.contactIds, static_cast<std::size_t>(count));
     resizeBuffer(schedule.contactPairs, static_cast<std::size_t>(count));
-    if (!schedule.colored) {
+    if (!schedule.contactsColored) {
         for (int k = 0; k < count; ++k) {
             schedule.contactIds[k] = island.contacts[k];
             schedule.contactPairs[k] = island.contactBodies[k];
@@ -80,7 +81,7 @@ void IslandScheduler::planContacts(const IslandView& island, IslandSchedule& sch
 }
 
 void IslandScheduler::giveFixedBodiesPrivateSlots(const IslandView& island,
-                                                  IslandSchedule& schedule) {
+                                                  IslandSchedule& schedule, bool joints) {
     const auto privatize = [&](auto& pairs) {
         for (auto& pair : pairs) {
             for (std::int32_t& index : pair) {
@@ -92,7 +93,7 @@ void IslandScheduler::giveFixedBodiesPrivateSlots(const IslandView& island,
             }
         }
     };
-    privatize(schedule.jointPairs);
+    if (joints) privatize(schedule.jointPairs);
     privatize(schedule.contactPairs);
 }
 

@@ -13,6 +13,10 @@
 // so no two members ever write one slot (a constraint's write to such a body adds zero, so a
 // copy behaves exactly as the original).
 //
+// A smaller island with at least kWideContactThreshold contacts has its contacts coloured
+// likewise (its joints keep the island's order, and their bodies their own slots): one thread
+// then solves each colour several contacts at a time (constraints/contact_solver_wide.cpp).
+//
 // Whether an island is coloured depends only on its size, never on the number of workers: a
 // world steps to the same bits with any WorldDef::workerCount. A coloured island is solved in
 // a different order than Box2D 2.4.1 would, so it agrees with Box2D in behaviour, not in bits.
@@ -42,8 +46,16 @@ inline bool isColored(const IslandView& island) {
     return island.jointCount + island.contactCount >= kColoringThreshold;
 }
 
+/// Islands with at least this many contacts have them coloured, whatever their size.
+constexpr int kWideContactThreshold = 64;
+
+inline bool colorsContacts(const IslandView& island) {
+    return isColored(island) || island.contactCount >= kWideContactThreshold;
+}
+
 struct IslandSchedule {
-    bool colored = false;
+    bool colored = false;                // joints and contacts (isColored)
+    bool contactsColored = false;        // contacts (colorsContacts)
     std::vector<std::int32_t> jointIds;  // joint pool indices, in solving order
     std::vector<JointSlots> jointPairs;  // their solver bodies
     std::array<std::int32_t, kJointGroupCount + 1> groupStart{};
@@ -83,7 +95,9 @@ private:
     void planJoints(const IslandView& island, const SlotPool<Joint>& joints,
                     IslandSchedule& schedule);
     void planContacts(const IslandView& island, IslandSchedule& schedule);
-    void giveFixedBodiesPrivateSlots(const IslandView& island, IslandSchedule& schedule);
+    /// For the constraints of the coloured arrays: the contacts, and the joints if `joints`.
+    void giveFixedBodiesPrivateSlots(const IslandView& island, IslandSchedule& schedule,
+                                     bool joints);
 
     GraphColoring coloring_;
     std::vector<std::uint8_t> fixed_;  // per island body: never moves

@@ -48,13 +48,14 @@ void Stepper::reserveWorkspaces() {
     if (bound == reserved) return;
     reserved = bound;
     // The first workspace may solve any island. With several workers the others solve only
-    // islands too small to be coloured: fewer than kColoringThreshold joints and contacts, and
-    // (being connected) at most one more body than that besides the static bodies they touch.
+    // islands too small to be shared by a team: fewer than kColoringThreshold joints and
+    // contacts, and (being connected) at most one more body than that besides the static bodies
+    // they touch, and as many solver slots again for private copies of those (colorsContacts).
     reserveWorkspace(workspaces_[0], reserved);
     const std::size_t small = kColoringThreshold;
-    const BufferBounds smallIsland{std::min(reserved.bodies, 2 * small),
-                                   std::min(reserved.joints, small),
-                                   std::min(reserved.contacts, small), reserved.mouseJoints};
+    const BufferBounds smallIsland{
+        std::min(reserved.bodies, 2 * small) + std::min(reserved.contacts, small),
+        std::min(reserved.joints, small), std::min(reserved.contacts, small), reserved.mouseJoints};
     for (std::size_t w = 1; w < workspaces_.size(); ++w) {
         reserveWorkspace(workspaces_[w], smallIsland);
     }

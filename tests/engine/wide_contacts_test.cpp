@@ -1,14 +1,15 @@
-// The four-wide contact sweeps, velocity, relax and NGS position
+// The wide contact sweeps (four lanes, eight with AVX2), velocity, relax and NGS position
 // (src/constraints/contact_solver_wide.cpp), against the same sweeps one contact at a time: a
 // coloured island must step to the same bits either way, with every kind of contact the wide
 // path meets (two-point boxes solved as blocks, one-point discs, capsules, circle pairs, faces of
 // A and of B, friction, restitution) and every contact correction (NGS, Baumgarte, soft with
-// relax sweeps), on one worker and on two.
+// relax sweeps), on one worker and on two; and small islands whose contacts alone are coloured.
 #include <gtest/gtest.h>
 
 #include <memory>
 
 #include "constraints/contact_solver.h"
+#include "islands/island_schedule.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
@@ -61,15 +62,51 @@ std::unique_ptr<World> pile(ContactCorrection correction, int substeps, int work
     return world;
 }
 
+// Four pyramids of 78 boxes apart on one ground: four islands too small to be shared by a team
+// (under kColoringThreshold constraints) but with their contacts coloured (over
+// kWideContactThreshold), each solved by one worker a colour at a time.
+std::unique_ptr<World> smallPiles(ContactCorrection correction, int substeps, int workers) {
+    WorldDef def;
+    def.contactCorrection = correction;
+    def.substepCount = substeps;
+    def.workerCount = workers;
+    def.enableSleep = false;
+    auto world = std::make_unique<World>(def);
+    ShapeDef ground;
+    ground.density = 0.0f;
+    world->createShape(world->createBody(BodyDef{}), ground,
+                       Polygon::box(80.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    ShapeDef solid;
+    solid.friction = 0.6f;
+    const float pitch = 1.0f + 2.0f * kPolygonRadius - kLinearSlop;
+    for (int pile = 0; pile < 4; ++pile) {
+        for (int row = 0; row < 12; ++row) {
+            for (int i = 0; i < 12 - row; ++i) {
+                BodyDef body;
+                body.type = BodyType::Dynamic;
+                body.position = {-60.0f + 30.0f * static_cast<float>(pile) +
+                                     pitch * (0.5f * static_cast<float>(row) + i),
+                                 0.5f + pitch * static_cast<float>(row) + 0.01f};
+                world->createShape(world->createBody(body), solid, Polygon::box(0.5f, 0.5f));
+            }
+        }
+    }
+    return world;
+}
+
 struct WideSolving {
     explicit WideSolving(bool on) { ContactSolver::setWideSolving(on); }
     ~WideSolving() { ContactSolver::setWideSolving(true); }
 };
 
-void expectSameBits(ContactCorrection correction, int substeps, int velocity, int position) {
+using Build = std::unique_ptr<World> (*)(ContactCorrection, int, int);
+
+void expectSameBits(ContactCorrection correction, int substeps, int velocity, int position,
+                    Build build = pile) {
+    const bool big = build == pile;
     for (int workers : {1, 2}) {
-        auto wide = pile(correction, substeps, workers);
-        auto single = pile(correction, substeps, workers);
+        auto wide = build(correction, substeps, workers);
+        auto single = build(correction, substeps, workers);
         int colouredSteps = 0;
         for (int step = 0; step < 150; ++step) {
             {
@@ -82,7 +119,11 @@ void expectSameBits(ContactCorrection correction, int substeps, int velocity, in
             }
             ASSERT_EQ(wide->stateHash(), single->stateHash())
                 << "step " << step << ", workers " << workers;
-            colouredSteps += wide->lastStepStats().touchingCount >= 1024 ? 1 : 0;
+            const StepStats& stats = wide->lastStepStats();
+            const bool coloured =
+                big ? stats.touchingCount >= kColoringThreshold
+                    : stats.islandCount == 4 && stats.touchingCount >= 4 * kWideContactThreshold;
+            colouredSteps += coloured ? 1 : 0;
         }
         // The pile must have been one big island for most of the run (Baumgarte keeps the
         // fewest points touching), or little of the wide path was tested.
@@ -102,4 +143,9 @@ TEST(WideContacts, BaumgarteContactsStepToTheSameBitsAsOneByOne) {
 
 TEST(WideContacts, SoftContactsAndRelaxSweepsStepToTheSameBitsAsOneByOne) {
     expectSameBits(ContactCorrection::Soft, 4, 1, 1);
+}
+
+TEST(WideContacts, SmallIslandsWithManyContactsStepToTheSameBitsAsOneByOne) {
+    expectSameBits(ContactCorrection::NGS, 1, 8, 3, smallPiles);
+    expectSameBits(ContactCorrection::Soft, 4, 1, 1, smallPiles);
 }
