@@ -18,9 +18,9 @@ namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 
-// A pile big enough to be one coloured island (well over 1024 contacts): a pyramid of boxes,
-// and discs and capsules (some bouncy) dropped beside and onto it.
-std::unique_ptr<World> pile(ContactCorrection correction, int substeps, int workers) {
+// A world with sleep off and a ground `halfWidth` m either side of the origin.
+std::unique_ptr<World> grounded(ContactCorrection correction, int substeps, int workers,
+                                float halfWidth) {
     WorldDef def;
     def.contactCorrection = correction;
     def.substepCount = substeps;
@@ -30,19 +30,31 @@ std::unique_ptr<World> pile(ContactCorrection correction, int substeps, int work
     ShapeDef ground;
     ground.density = 0.0f;
     world->createShape(world->createBody(BodyDef{}), ground,
-                       Polygon::box(50.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
-    ShapeDef solid;
-    solid.friction = 0.6f;
+                       Polygon::box(halfWidth, 0.5f, {0.0f, -0.5f}, 0.0f));
+    return world;
+}
+
+// A pyramid of unit boxes with `rows` rows on the ground, its lowest row starting at x = left.
+void addPyramid(World& world, int rows, float left, const ShapeDef& solid) {
     const float pitch = 1.0f + 2.0f * kPolygonRadius - kLinearSlop;
-    for (int row = 0; row < 50; ++row) {
-        for (int i = 0; i < 50 - row; ++i) {
+    for (int row = 0; row < rows; ++row) {
+        for (int i = 0; i < rows - row; ++i) {
             BodyDef body;
             body.type = BodyType::Dynamic;
-            body.position = {-25.0f + pitch * (0.5f * static_cast<float>(row) + i),
+            body.position = {left + pitch * (0.5f * static_cast<float>(row) + i),
                              0.5f + pitch * static_cast<float>(row) + 0.01f};
-            world->createShape(world->createBody(body), solid, Polygon::box(0.5f, 0.5f));
+            world.createShape(world.createBody(body), solid, Polygon::box(0.5f, 0.5f));
         }
     }
+}
+
+// A pile big enough to be one coloured island (well over 1024 contacts): a pyramid of boxes,
+// and discs and capsules (some bouncy) dropped beside and onto it.
+std::unique_ptr<World> pile(ContactCorrection correction, int substeps, int workers) {
+    auto world = grounded(correction, substeps, workers, 50.0f);
+    ShapeDef solid;
+    solid.friction = 0.6f;
+    addPyramid(*world, 50, -25.0f, solid);
     ShapeDef bouncy = solid;
     bouncy.restitution = 0.5f;
     for (int i = 0; i < 300; ++i) {
@@ -66,30 +78,11 @@ std::unique_ptr<World> pile(ContactCorrection correction, int substeps, int work
 // (under kColoringThreshold constraints) but with their contacts coloured (over
 // kWideContactThreshold), each solved by one worker a colour at a time.
 std::unique_ptr<World> smallPiles(ContactCorrection correction, int substeps, int workers) {
-    WorldDef def;
-    def.contactCorrection = correction;
-    def.substepCount = substeps;
-    def.workerCount = workers;
-    def.enableSleep = false;
-    auto world = std::make_unique<World>(def);
-    ShapeDef ground;
-    ground.density = 0.0f;
-    world->createShape(world->createBody(BodyDef{}), ground,
-                       Polygon::box(80.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    auto world = grounded(correction, substeps, workers, 80.0f);
     ShapeDef solid;
     solid.friction = 0.6f;
-    const float pitch = 1.0f + 2.0f * kPolygonRadius - kLinearSlop;
     for (int pile = 0; pile < 4; ++pile) {
-        for (int row = 0; row < 12; ++row) {
-            for (int i = 0; i < 12 - row; ++i) {
-                BodyDef body;
-                body.type = BodyType::Dynamic;
-                body.position = {-60.0f + 30.0f * static_cast<float>(pile) +
-                                     pitch * (0.5f * static_cast<float>(row) + i),
-                                 0.5f + pitch * static_cast<float>(row) + 0.01f};
-                world->createShape(world->createBody(body), solid, Polygon::box(0.5f, 0.5f));
-            }
-        }
+        addPyramid(*world, 12, -60.0f + 30.0f * static_cast<float>(pile), solid);
     }
     return world;
 }
