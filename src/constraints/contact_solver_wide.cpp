@@ -1,5 +1,5 @@
 // The contact solver's velocity, relax and NGS position sweeps, several contacts at a time in
-// SIMD lanes (lanes.h: four with SSE2, the x86-64 baseline; eight more with the PIVOT_AVX2
+// SIMD lanes (lanes.h: four with SSE2, the x86-64 baseline; eight with the PIVOT_AVX2
 // build), for a batch of independent contacts: one colour of a coloured island
 // (island_schedule.h), where no two contacts share a solver slot, so solving them together is
 // solving them one after another.
@@ -10,7 +10,7 @@
 // a batch solved here gives the same bits as the same batch solved one contact at a time, at
 // either width: results do not depend on which path ran, nor on the number of workers.
 //
-// The velocity sweeps read the constraints from their columns (contact_columns.h), written once
+// The velocity sweeps read the constraints from their tiles (contact_tiles.h), written once
 // per build, with one load per field; only the bodies' velocities are gathered and scattered.
 //
 // The maths is contact_solver.h's: per point, vn = (vB + wB x rB - vA - wA x rA) . n, friction
@@ -76,7 +76,7 @@ struct PointLanes {
     F normalMass, tangentMass, normalImpulse, tangentImpulse, velocityBias, softTarget;
 };
 
-// The contacts' constraints, k .. k + F::kWidth, from their columns.
+// A tile's constraints, lane by lane.
 template <typename F>
 struct ContactLanes {
     F nx, ny, friction, mA, mB, iA, iB;
@@ -260,9 +260,8 @@ void solveTile(ContactTile& tile, SolverVelocity* velocities, bool soft,
         solveNormalPoints<false>(c, A, B, butNot(all, c.has2), softness);
     }
     storeImpulses(c, tile);
-    // B after A: where lanes share a static body (never written back: its slot is not a
-    // solver slot of the island's moving bodies) the order does not matter; no two lanes share
-    // a moving body.
+    // No two lanes share a solver slot (a colour's contacts each have their own copy of a body
+    // that never moves), so the order of these writes does not matter.
     storeVelocities(A, velocities, indexA);
     storeVelocities(B, velocities, indexB);
 }
