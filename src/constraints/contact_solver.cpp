@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/buffer.h"
+#include "core/prefetch.h"
 #include "pivot/constants.h"
 
 namespace pivot {
@@ -183,6 +184,31 @@ MeasuredPoint measure(const ContactPositionConstraint& pc, const Transform& xfA,
     return m;
 }
 
+// Contacts come to prepare in colour order, scattered over the pool, and each leads to two
+// bodies and two shapes elsewhere again: the contact this far ahead is fetched, and the bodies
+// and shapes of the one half as far ahead (whose contact has arrived by then), so the misses
+// overlap instead of following one another.
+constexpr int kContactsAhead = 16;
+constexpr int kPartsAhead = kContactsAhead / 2;
+
+void prefetchContact(const Contact& contact) {
+    prefetch(&contact, sizeof(Contact));
+}
+
+// Only the lines prepare reads: a line fetched for nothing takes one of the few slots the core
+// has for loads in flight.
+void prefetchParts(const Contact& contact, const SlotPool<Body>& bodies,
+                   const SlotPool<Shape>& shapes) {
+    for (const Body* body : {&bodies[contact.bodyA()], &bodies[contact.bodyB()]}) {
+        prefetch(&body->localCenter);
+        prefetch(&body->invInertia);
+    }
+    for (const Shape* shape : {&shapes[contact.shapeA], &shapes[contact.shapeB]}) {
+        prefetch(&shape->circle.radius);  // with the type
+        prefetch(&shape->polygon.radius);
+    }
+}
+
 // Constraint c's fields into lane `lane` of its tile (all of both points: a one-point
 // contact's second is zeros, which the wide sweeps read and leave unused).
 void writeTile(ContactTile& tile, int lane, const ContactVelocityConstraint& c) {
@@ -219,6 +245,12 @@ void writeTile(ContactTile& tile, int lane, const ContactVelocityConstraint& c) 
     tile.indexA[lane] = c.indexA;
     tile.indexB[lane] = c.indexB;
     tile.pointCount[lane] = c.pointCount;
+    if (lane == 0) {  // the empty lanes' bodies (contact_tiles.h)
+        for (int empty = tile.contactCount; empty < kContactLanes; ++empty) {
+            tile.indexA[empty] = c.indexA;
+            tile.indexB[empty] = c.indexB;
+        }
+    }
 }
 
 }  // namespace
@@ -265,6 +297,8 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
                             const SlotPool<Shape>& shapes, const StepContext& step,
                             const SolverPose* positions, const Rot* rotations) {
     for (int k = range.begin; k < range.end; ++k) {
+        if (k + kContactsAhead < range.end) prefetchContact(pool[ids[k + kContactsAhead]]);
+        if (k + kPartsAhead < range.end) prefetchParts(pool[ids[k + kPartsAhead]], bodies, shapes);
         const std::int32_t contactIndex = ids[k];
         const Contact& contact = pool[contactIndex];
         const Manifold& manifold = contact.manifold;
@@ -370,9 +404,9 @@ void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* moti
     for (int k = range.begin; k < range.end;) {
         // A whole tile at once where the range holds one (its contacts' softTarget is then
         // the tile's only: they are solved from there).
-        if (tiles_.isTileStart(k) && k + kContactLanes <= range.end) {
+        if (tiles_.isTileStart(k) && k + tiles_.tileAt(k).contactCount <= range.end) {
             updateTileSeparations(k, motion);
-            k += kContactLanes;
+            k += tiles_.tileAt(k).contactCount;
             continue;
         }
         ContactVelocityConstraint& c = velocity_[k];

@@ -95,10 +95,11 @@ public:
     /// independent ones among `batches` (the batches the sweeps will be given; none without).
     /// On one thread, before prepare.
     void reset(int count, const StepContext& step, const std::vector<Batch>* batches = nullptr);
-    /// Room for `count` contacts, so that reset does not allocate up to that many.
-    void reserve(std::size_t count) {
+    /// Room for `count` contacts in at most `batches` batches, so that reset does not allocate
+    /// up to that many.
+    void reserve(std::size_t count, std::size_t batches) {
         velocity_.reserve(count);
-        tiles_.reserve(count);
+        tiles_.reserve(count, batches);
         position_.reserve(count);
     }
     /// Builds constraints [range) from the contacts ids[k], whose solver bodies are pairs[k], at

@@ -55,14 +55,15 @@ Velocities<F> loadVelocities(const SolverVelocity* velocities, const std::int32_
             F::gather([&](int i) { return velocities[index[i]].w; })};
 }
 
+// Lanes [0, count) only: an empty lane's copy of lane 0's body must not overwrite lane 0's.
 template <typename F>
-void storeVelocities(const Velocities<F>& in, SolverVelocity* velocities,
-                     const std::int32_t* index) {
+void storeVelocities(const Velocities<F>& in, SolverVelocity* velocities, const std::int32_t* index,
+                     int count) {
     float vx[F::kWidth], vy[F::kWidth], w[F::kWidth];
     store(vx, in.vx);
     store(vy, in.vy);
     store(w, in.w);
-    for (int lane = 0; lane < F::kWidth; ++lane) {
+    for (int lane = 0; lane < count; ++lane) {
         SolverVelocity& v = velocities[index[lane]];
         v.v = {vx[lane], vy[lane]};
         v.w = w[lane];
@@ -262,8 +263,8 @@ void solveTile(ContactTile& tile, SolverVelocity* velocities, bool soft,
     storeImpulses(c, tile);
     // No two lanes share a solver slot (a colour's contacts each have their own copy of a body
     // that never moves), so the order of these writes does not matter.
-    storeVelocities(A, velocities, indexA);
-    storeVelocities(B, velocities, indexB);
+    storeVelocities(A, velocities, indexA, tile.contactCount);
+    storeVelocities(B, velocities, indexB, tile.contactCount);
 }
 
 // Last step's impulses applied to a tile's contacts (ContactSolver::warmStart).
@@ -281,8 +282,8 @@ void warmStartTile(const ContactTile& tile, SolverVelocity* velocities) {
         const F Py = p.normalImpulse * c.ny + p.tangentImpulse * ty;
         apply(A, B, c, p, Px, Py, active);
     }
-    storeVelocities(A, velocities, tile.indexA);
-    storeVelocities(B, velocities, tile.indexB);
+    storeVelocities(A, velocities, tile.indexA, tile.contactCount);
+    storeVelocities(B, velocities, tile.indexB, tile.contactCount);
 }
 
 // Soft contacts at a later substep: each point's separation re-measured from the bodies'
@@ -534,11 +535,12 @@ bool ContactSolver::wideSolving() {
 }
 
 int ContactSolver::solveWide(IndexRange range, SolverVelocity* velocities, bool relaxing) {
-    // The tiles laid out at reset: runs of kContactLanes from the range's start (a block of an
-    // independent batch) while they last.
+    // The tiles laid out at reset: from the range's start (a block of an independent batch)
+    // while they last.
     int k = range.begin;
-    for (; k + kContactLanes <= range.end && tiles_.isTileStart(k); k += kContactLanes) {
+    for (; k < range.end && tiles_.isTileStart(k); k += tiles_.tileAt(k).contactCount) {
         ContactTile& tile = tiles_.tileAt(k);
+        if (k + tile.contactCount > range.end) break;  // cut by the range's edge
         if (relaxing) {
             solveTile<true, ContactLanesF>(tile, velocities, soft_, softness_);
         } else {
@@ -554,8 +556,10 @@ void ContactSolver::updateTileSeparations(int k, const SolverMotion* motion) {
 
 int ContactSolver::warmStartWide(IndexRange range, SolverVelocity* velocities) const {
     int k = range.begin;
-    for (; k + kContactLanes <= range.end && tiles_.isTileStart(k); k += kContactLanes) {
-        warmStartTile<ContactLanesF>(tiles_.tileAt(k), velocities);
+    for (; k < range.end && tiles_.isTileStart(k); k += tiles_.tileAt(k).contactCount) {
+        const ContactTile& tile = tiles_.tileAt(k);
+        if (k + tile.contactCount > range.end) break;  // cut by the range's edge
+        warmStartTile<ContactLanesF>(tile, velocities);
     }
     return k;
 }

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/buffer.h"
+#include "islands/graph_coloring.h"
 #include "pivot/constants.h"
 
 namespace pivot {
@@ -413,7 +414,8 @@ void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
     work.positionScratch.pseudo.reserve(bound.bodies);
     work.positionScratch.xpbdStart.reserve(bound.bodies);
     work.mouseConstraints.reserve(bound.mouseJoints);
-    work.contactSolver.reserve(bound.contacts);
+    // A batch per colour, and the overflow's.
+    work.contactSolver.reserve(bound.contacts, GraphColoring::kMaxColors + 1);
 }
 
 void planIsland(const IslandSet& set, int index, IslandWorkspace& work,

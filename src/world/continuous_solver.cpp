@@ -377,7 +377,7 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     positions_.reserve(kMaxIslandBodies);
     velocities_.reserve(kMaxIslandBodies);
     kinematicPaths_.reserve(kMaxIslandBodies);
-    contactSolver_.reserve(kMaxIslandContacts);
+    contactSolver_.reserve(kMaxIslandContacts, 0);  // unbatched: no tiles
     // Most contacts have one impact a step at most; twice that is room for the busiest steps.
     impacts_.reserve(2 * static_cast<std::size_t>(contacts.capacity()));
     if (!(earliest <= kLatestImpact)) return 0;
