@@ -23,15 +23,30 @@ double mechanicalEnergy(const Scene& scene) {
     return energy;
 }
 
-SeparationSample sampleSeparation(const Scene& scene) {
+namespace {
+
+template <typename Take>
+SeparationSample sampleSeparationOf(const Scene& scene, Take take) {
     SeparationSample sample;
     for (JointId id : scene.joints) {
+        if (!take(id)) continue;
         double s = scene.world->jointSeparation(id);
         if (!(s <= sample.max)) sample.max = s;  // NaN wins
         sample.sumSquares += s * s;
         ++sample.count;
     }
     return sample;
+}
+
+}  // namespace
+
+SeparationSample sampleSeparation(const Scene& scene) {
+    return sampleSeparationOf(scene, [](JointId) { return true; });
+}
+
+SeparationSample sampleSeparation(const Scene& scene, PositionSolver solver) {
+    return sampleSeparationOf(
+        scene, [&](JointId id) { return scene.world->jointPositionSolver(id) == solver; });
 }
 
 double limitViolation(const Scene& scene) {

@@ -22,6 +22,9 @@ struct SeparationSample {
     int count = 0;
 };
 SeparationSample sampleSeparation(const Scene& scene);
+/// The same over the scene's joints that `solver` solves now (the browser testbed's plot, one
+/// line per solver: joints may change solver as the scene runs); count 0 if none does.
+SeparationSample sampleSeparation(const Scene& scene, PositionSolver solver);
 
 /// True when any body has a non-finite pose or velocity, or moves faster than kRunawaySpeed.
 bool isBlownUp(const Scene& scene);

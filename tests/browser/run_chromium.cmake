@@ -6,25 +6,10 @@ if(NOT EXISTS "${HTML}")
     message(FATAL_ERROR "${HTML} was not written")
 endif()
 
-string(RANDOM LENGTH 8 suffix)
-set(profile "${PROFILE_PARENT}/chromium-profile-${suffix}")
-file(REMOVE_RECURSE "${profile}")
-file(MAKE_DIRECTORY "${profile}")
+include(${CMAKE_CURRENT_LIST_DIR}/chromium_dump.cmake)
 string(REPLACE " " "%20" url "file://${HTML}")
-
-execute_process(
-    COMMAND "${CHROMIUM}" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run
-        --disable-background-networking --disable-component-update --disable-sync
-        "--user-data-dir=${profile}" --virtual-time-budget=10000 --dump-dom "${url}"
-    RESULT_VARIABLE result
-    OUTPUT_VARIABLE dom
-    ERROR_VARIABLE errors
-    TIMEOUT 150)
-file(REMOVE_RECURSE "${profile}")
-
-if(NOT result EQUAL 0)
-    message(FATAL_ERROR "chromium failed (${result}):\n${errors}")
-endif()
+pivot_chromium_dump("${url}" 10000 dom)
+set(errors "${dom_ERRORS}")
 string(REGEX MATCH "<pre id=\"status\">frames-drawn: ([0-9]+); nonblank-pixels: ([0-9]+)</pre>"
     status "${dom}")
 if(NOT status)

@@ -241,3 +241,25 @@ INSTANTIATE_TEST_SUITE_P(
         return std::get<0>(info.param) + "_" + positionSolverName(std::get<1>(info.param)) +
                (std::get<2>(info.param) == ContactCorrection::NGS ? "_ngs" : "_baumgarte");
     });
+
+// The per-solver sample (the browser testbed's plot) splits the whole sample between the solvers
+// the joints use now, and follows a joint whose solver changes.
+TEST(Scenes, SeparationSamplesPerSolverSplitTheWholeSample) {
+    Scene scene = build("chain", PositionSolver::FullNGS);
+    for (std::size_t i = 0; i < scene.joints.size(); i += 2) {
+        scene.world->setJointPositionSolver(scene.joints[i], PositionSolver::PseudoVelocity);
+    }
+    for (int i = 0; i < 120; ++i) scene.world->step(1.0f / 60.0f, 8, 3);
+    const SeparationSample all = sampleSeparation(scene);
+    const SeparationSample full = sampleSeparation(scene, PositionSolver::FullNGS);
+    const SeparationSample pseudo = sampleSeparation(scene, PositionSolver::PseudoVelocity);
+    EXPECT_EQ(sampleSeparation(scene, PositionSolver::Baumgarte).count, 0);
+    EXPECT_EQ(full.count + pseudo.count, all.count);
+    EXPECT_EQ(pseudo.count, static_cast<int>((scene.joints.size() + 1) / 2));
+    EXPECT_EQ(std::max(full.max, pseudo.max), all.max);
+    EXPECT_NEAR(full.sumSquares + pseudo.sumSquares, all.sumSquares, 1e-12 * all.sumSquares);
+    EXPECT_GT(pseudo.max, full.max);  // the note's chain: PseudoVelocity's links come apart
+
+    scene.world->setJointPositionSolver(scene.joints[1], PositionSolver::PseudoVelocity);
+    EXPECT_EQ(sampleSeparation(scene, PositionSolver::PseudoVelocity).count, pseudo.count + 1);
+}

@@ -6,6 +6,7 @@
 
 #include <exception>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "scenes/scene.h"
@@ -38,6 +39,25 @@ bool liveJoint(int i) {
 
 constexpr float kNoValue = std::numeric_limits<float>::quiet_NaN();
 
+// contacts: 0 Baumgarte, 1 NGS, 2 Soft (ContactCorrection's order). nullopt, with the error
+// set, for an unknown solver or correction.
+std::optional<web::WorldSettings> settingsOf(int solver, int contacts, int substeps,
+                                             int velocityIterations, int positionIterations,
+                                             int script) {
+    if (!validSolver(solver) || contacts < 0 || contacts > 2) {
+        session.setError("unknown solver or contact correction");
+        return std::nullopt;
+    }
+    web::WorldSettings settings;
+    settings.solver = static_cast<PositionSolver>(solver);
+    settings.contacts = static_cast<ContactCorrection>(contacts);
+    settings.substeps = substeps;
+    settings.velocityIterations = velocityIterations;
+    settings.positionIterations = positionIterations;
+    settings.script = script != 0;
+    return settings;
+}
+
 }  // namespace
 
 extern "C" {
@@ -45,11 +65,15 @@ extern "C" {
 EMSCRIPTEN_KEEPALIVE int pv_scene_count() {
     return static_cast<int>(scenes::allScenes().size());
 }
+/// "" for a number that is no scene's.
 EMSCRIPTEN_KEEPALIVE const char* pv_scene_name(int i) {
-    return scenes::allScenes().at(static_cast<std::size_t>(i)).name;
+    return i >= 0 && i < pv_scene_count() ? scenes::allScenes()[static_cast<std::size_t>(i)].name
+                                          : "";
 }
 EMSCRIPTEN_KEEPALIVE const char* pv_scene_description(int i) {
-    return scenes::allScenes().at(static_cast<std::size_t>(i)).description;
+    return i >= 0 && i < pv_scene_count()
+               ? scenes::allScenes()[static_cast<std::size_t>(i)].description
+               : "";
 }
 EMSCRIPTEN_KEEPALIVE int pv_solver_count() {
     return kPositionSolverCount;
@@ -58,22 +82,26 @@ EMSCRIPTEN_KEEPALIVE const char* pv_solver_name(int solver) {
     return validSolver(solver) ? positionSolverName(static_cast<PositionSolver>(solver)) : "";
 }
 
-/// contacts: 0 Baumgarte, 1 NGS, 2 Soft (ContactCorrection's order).
+/// Builds scene `scene` with these settings (settingsOf's arguments).
 EMSCRIPTEN_KEEPALIVE int pv_load(int scene, int solver, int contacts, int substeps,
                                  int velocityIterations, int positionIterations, int script) {
     return guarded([&] {
-        if (!validSolver(solver) || contacts < 0 || contacts > 2) {
-            session.setError("unknown solver or contact correction");
-            return false;
-        }
-        web::WorldSettings settings;
-        settings.solver = static_cast<PositionSolver>(solver);
-        settings.contacts = static_cast<ContactCorrection>(contacts);
-        settings.substeps = substeps;
-        settings.velocityIterations = velocityIterations;
-        settings.positionIterations = positionIterations;
-        settings.script = script != 0;
-        return session.load(scene, settings);
+        const auto settings =
+            settingsOf(solver, contacts, substeps, velocityIterations, positionIterations, script);
+        return settings && session.load(scene, *settings);
+    });
+}
+/// The same settings for the running scene from its next step, the solver aside (kept for the
+/// next load).
+EMSCRIPTEN_KEEPALIVE int pv_set_settings(int solver, int contacts, int substeps,
+                                         int velocityIterations, int positionIterations,
+                                         int script) {
+    return guarded([&] {
+        const auto settings =
+            settingsOf(solver, contacts, substeps, velocityIterations, positionIterations, script);
+        if (!settings) return false;
+        session.setSettings(*settings);
+        return true;
     });
 }
 EMSCRIPTEN_KEEPALIVE int pv_reload() {
@@ -185,7 +213,9 @@ EMSCRIPTEN_KEEPALIVE float pv_largest_separation(int solver) {
 }
 
 /// The last step: 0 its cost in ms, 1 bodies simulated, 2 awake bodies' islands, 3 contacts,
-/// 4 touching contacts, 5 joints solved, 6 sleeping bodies, 7 steps so far.
+/// 4 touching contacts, 5 joints solved, 6 sleeping bodies, 7 steps so far; and the world's
+/// settings: 8 substeps, 9 contact correction (pv_load's numbering), 10 velocity and 11 position
+/// iterations.
 EMSCRIPTEN_KEEPALIVE double pv_stat(int which) {
     if (!session.loaded()) return 0.0;
     const StepStats& s = session.world().lastStepStats();
@@ -198,6 +228,10 @@ EMSCRIPTEN_KEEPALIVE double pv_stat(int which) {
         case 5: return s.jointCount;
         case 6: return s.sleepingBodyCount;
         case 7: return session.stepIndex();
+        case 8: return session.world().substepCount();
+        case 9: return static_cast<int>(session.world().contactCorrection());
+        case 10: return session.settings().velocityIterations;
+        case 11: return session.settings().positionIterations;
         default: return 0.0;
     }
 }

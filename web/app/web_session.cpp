@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 
+#include "scenes/metrics.h"
 #include "scenes/parts.h"
 
 namespace pivot::web {
@@ -97,6 +98,19 @@ bool WebSession::load(int index, const WorldSettings& settings) {
     return true;
 }
 
+void WebSession::setSettings(const WorldSettings& settings) {
+    if (loaded()) {
+        // Checked before anything changes: the world's own setters check each on its own.
+        if (settings.velocityIterations < 0 || settings.velocityIterations > kMaxIterations ||
+            settings.positionIterations < 0 || settings.positionIterations > kMaxIterations) {
+            throw Error("iterations must be in [0, " + std::to_string(kMaxIterations) + "]");
+        }
+        world().setSubstepCount(settings.substeps);  // refuses, changing nothing, a bad count
+        world().setContactCorrection(settings.contacts);
+    }
+    settings_ = settings;
+}
+
 void WebSession::step() {
     if (!scene_.world) return;
     const auto start = std::chrono::steady_clock::now();
@@ -167,13 +181,8 @@ int WebSession::jointNear(Vec2 point, float radius) const {
 }
 
 float WebSession::largestSeparation(PositionSolver solver) const {
-    float largest = -1.0f;
-    for (int i = 0; i < jointCount(); ++i) {
-        const JointId id = joint(i);
-        if (!world().isValid(id) || world().jointPositionSolver(id) != solver) continue;
-        largest = std::max(largest, world().jointSeparation(id));
-    }
-    return largest;
+    const scenes::SeparationSample sample = scenes::sampleSeparation(scene_, solver);
+    return sample.count > 0 ? static_cast<float>(sample.max) : -1.0f;
 }
 
 }  // namespace pivot::web

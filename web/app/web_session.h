@@ -13,9 +13,10 @@
 
 namespace pivot::web {
 
-/// What the page sets for the whole world: applied when a scene is (re)loaded.
+/// What the page sets for the whole world: all applied when a scene is (re)loaded; all but the
+/// solver also at once (setSettings).
 struct WorldSettings {
-    PositionSolver solver = PositionSolver::FullNGS;  ///< every joint's, until changed per joint
+    PositionSolver solver = PositionSolver::FullNGS;  ///< every joint's, at load: then per joint
     ContactCorrection contacts = ContactCorrection::NGS;
     int substeps = 1;
     int velocityIterations = kDefaultVelocityIterations;
@@ -37,6 +38,10 @@ public:
     bool load(int index, const WorldSettings& settings);
     /// Rebuilds the current scene with the current settings (the page's reset).
     bool reload() { return load(sceneIndex_, settings_); }
+    /// Applies contact correction, substeps, iterations and script from the next step, and
+    /// keeps the solver for the next load (the scene's joints have theirs). Throws pivot::Error,
+    /// changing nothing, if the world refuses a value.
+    void setSettings(const WorldSettings& settings);
     /// One step of 1/60 s: the scene's script (if on), then World::step. Times the step.
     void step();
 

@@ -19,6 +19,7 @@ class App {
       sceneDescription: c('pv_scene_description', s, [n]),
       solverCount: c('pv_solver_count', n, []), solverName: c('pv_solver_name', s, [n]),
       load: c('pv_load', n, [n, n, n, n, n, n, n]), reload: c('pv_reload', n, []),
+      setSettings: c('pv_set_settings', n, [n, n, n, n, n, n]),
       step: c('pv_step', n, []), error: c('pv_error', s, []),
       draw: c('pv_draw', n, []), drawList: c('pv_draw_list', n, []),
       grab: c('pv_grab', n, [n, n, n, n]), moveHand: c('pv_move_hand', null, [n, n]),
@@ -27,7 +28,8 @@ class App {
       jointValid: c('pv_joint_valid', n, [n]), jointType: c('pv_joint_type', s, [n]),
       jointSeparation: c('pv_joint_separation', n, [n]),
       jointAnchor: c('pv_joint_anchor', n, [n, n, n]),
-      jointSolver: c('pv_joint_solver', n, [n]), setJointSolver: c('pv_set_joint_solver', n, [n, n]),
+      jointSolver: c('pv_joint_solver', n, [n]),
+      setJointSolver: c('pv_set_joint_solver', n, [n, n]),
       jointBias: c('pv_joint_bias', n, [n]), setJointBias: c('pv_set_joint_bias', n, [n, n]),
       jointHertz: c('pv_joint_hertz', n, [n]), setJointHertz: c('pv_set_joint_hertz', n, [n, n]),
       largestSeparation: c('pv_largest_separation', n, [n]), stat: c('pv_stat', n, [n]),
@@ -63,6 +65,14 @@ class App {
   bindControls() {
     $('scene').addEventListener('change', () => this.load());
     $('reset').addEventListener('click', () => this.load());
+    // The solver is every joint's at load (then each joint's own, in its panel); the rest
+    // applies from the next step.
+    for (const id of ['contacts', 'substeps', 'velocity-iterations', 'position-iterations',
+                      'script']) {
+      $(id).addEventListener('change', () => {
+        if (!this.check(this.api.setSettings(...this.settings()))) this.showSettings();
+      });
+    }
     $('pause').addEventListener('click', () => this.setPaused(!this.paused));
     $('single-step').addEventListener('click', () => { this.setPaused(true); this.stepOnce(); });
     $('joint-solver').addEventListener('change', () => {
@@ -127,12 +137,24 @@ class App {
     }, { passive: false });
   }
 
+  // The world settings of the form, as pv_load and pv_set_settings take them.
+  settings() {
+    return [Number($('solver').value), Number($('contacts').value), Number($('substeps').value),
+      Number($('velocity-iterations').value), Number($('position-iterations').value),
+      $('script').checked ? 1 : 0];
+  }
+
+  // The form's world settings as the world has them (after a refused change).
+  showSettings() {
+    $('substeps').value = this.api.stat(8);
+    $('contacts').value = this.api.stat(9);
+    $('velocity-iterations').value = this.api.stat(10);
+    $('position-iterations').value = this.api.stat(11);
+  }
+
   // Builds the chosen scene with the world settings of the form.
   load() {
-    const ok = this.api.load(Number($('scene').value), Number($('solver').value),
-      Number($('contacts').value), Number($('substeps').value),
-      Number($('velocity-iterations').value), Number($('position-iterations').value),
-      $('script').checked ? 1 : 0);
+    const ok = this.api.load(Number($('scene').value), ...this.settings());
     if (!this.check(ok)) return false;
     $('scene-description').textContent = this.api.sceneDescription(Number($('scene').value));
     this.pointer = null;
@@ -176,8 +198,13 @@ class App {
     if (j < 0 || !this.api.jointValid(j)) { this.selectJoint(-1); return; }
     $('joint-name').textContent = '#' + j + ' (' + this.api.jointType(j) + ')';
     $('joint-solver').value = String(this.api.jointSolver(j));
-    if (document.activeElement !== $('joint-bias')) $('joint-bias').value = this.api.jointBias(j).toFixed(2);
-    if (document.activeElement !== $('joint-hertz')) $('joint-hertz').value = this.api.jointHertz(j);
+    // A field being typed into keeps what the user typed.
+    if (document.activeElement !== $('joint-bias')) {
+      $('joint-bias').value = this.api.jointBias(j).toFixed(2);
+    }
+    if (document.activeElement !== $('joint-hertz')) {
+      $('joint-hertz').value = this.api.jointHertz(j);
+    }
   }
 
   // What a frame does for one step, without the clock (the self-test's steps): move the hand

@@ -35,7 +35,8 @@ class SeparationPlot {
     ctx.font = '10px sans-serif';
     ctx.fillStyle = '#98a2ad';
     ctx.strokeStyle = '#3a4048';
-    for (const [v, label] of [[1e-5, '10 \u00b5m'], [1e-3, '1 mm'], [1e-1, '10 cm'], [10, '10 m']]) {
+    const grid = [[1e-5, '10 \u00b5m'], [1e-3, '1 mm'], [1e-1, '10 cm'], [10, '10 m']];
+    for (const [v, label] of grid) {
       ctx.beginPath(); ctx.moveTo(left, y(v)); ctx.lineTo(w, y(v)); ctx.stroke();
       ctx.fillText(label, 0, y(v) + 3);
     }
@@ -53,7 +54,8 @@ class SeparationPlot {
       });
       ctx.stroke();
       ctx.fillStyle = ctx.strokeStyle;
-      ctx.fillText(this.names[s], left + 4 + 80 * (legend % 3), top + 10 + 11 * Math.floor(legend / 3));
+      const column = legend % 3, row = Math.floor(legend / 3);
+      ctx.fillText(this.names[s], left + 4 + 80 * column, top + 10 + 11 * row);
       ++legend;
     });
   }

@@ -8,6 +8,8 @@
 //    the PseudoVelocity joint opens by more than 10 cm, the FullNGS one by less than 1 mm;
 //  - a joint's solver changed from its panel takes effect at the next step: the spinning
 //    pendulum held by FullNGS, switched to pseudo_velocity, opens at once;
+//  - the world's settings change from the form at once, and a value the engine refuses shows
+//    its message and changes nothing;
 //  - the page steps and draws, and nothing was logged as an error.
 'use strict';
 
@@ -90,7 +92,10 @@
   window.pivotReady.then((app) => {
     const lines = [];
     let pass = true;
-    const expect = (ok, line) => { lines.push((ok ? 'ok   ' : 'FAIL ') + line); pass = pass && ok; };
+    const expect = (ok, line) => {
+      lines.push((ok ? 'ok   ' : 'FAIL ') + line);
+      pass = pass && ok;
+    };
     try {
       const pseudo = whirl(app, 'pseudo_velocity');
       expect(pseudo > 0.10, 'whirled pendulum, pseudo_velocity: largest separation ' +
@@ -99,11 +104,23 @@
       expect(full < 0.001, 'whirled pendulum, full_ngs: largest separation ' +
              full.toExponential(2) + ' m (< 0.001)');
       const sw = switchSolver(app);
-      expect(sw.reported === sw.pseudo, 'joint panel set the solver to ' + app.solverNames[sw.reported]);
+      expect(sw.reported === sw.pseudo,
+             'joint panel set the solver to ' + app.solverNames[sw.reported]);
       expect(sw.before < 0.001 && sw.after > 0.01, 'spinning pendulum: separation ' +
              sw.before.toExponential(2) + ' m with full_ngs, ' + sw.after.toExponential(2) +
              ' m one step after the switch (< 0.001, then > 0.01)');
       expect(app.api.stat(7) === 2, 'steps counted: ' + app.api.stat(7));
+      choose('substeps', 4);
+      choose('contacts', 2);  // soft
+      const set = app.api.stat(8) === 4 && app.api.stat(9) === 2;
+      expect(set, 'substeps and contacts set from the form: ' + app.api.stat(8) + ', ' +
+             app.api.stat(9));
+      choose('substeps', 0);
+      const message = document.getElementById('error').textContent;
+      const shown = document.getElementById('substeps').value;
+      expect(app.api.stat(8) === 4 && message.length > 0 && shown === '4',
+             'substeps 0 refused ("' + message + '"), still ' + app.api.stat(8) +
+             ', the form shows ' + shown);
       const count = app.api.draw();
       expect(count > 0, 'draw list: ' + count + ' numbers');
     } catch (e) {

@@ -41,7 +41,8 @@ fromBrowser.on('data', (chunk) => {
     if (message.id && waiting.has(message.id)) {
       const { resolve: done, reject } = waiting.get(message.id);
       waiting.delete(message.id);
-      if (message.error) reject(new Error(JSON.stringify(message.error))); else done(message.result);
+      if (message.error) reject(new Error(JSON.stringify(message.error)));
+      else done(message.result);
     }
   }
 });
@@ -73,7 +74,8 @@ try {
     return (performance.now() - t) / 600; })()`);
   console.log(`600 more steps, drawing nothing: ${batch.toFixed(3)} ms a step`);
   const stats = await evaluate(`document.getElementById('stats').textContent + '\\nframes ' +
-    window.pivotApp.api.stat(7) + ' steps in ' + (performance.now() / 1000).toFixed(1) + ' s of page time'`);
+    window.pivotApp.api.stat(7) + ' steps in ' + (performance.now() / 1000).toFixed(1) +
+    ' s of page time'`);
   console.log(`${scene}:\n${stats}`);
   if (screenshot) {
     const { data } = await page('Page.captureScreenshot', { format: 'png' });
