@@ -39,9 +39,9 @@ bool liveJoint(int i) {
 
 constexpr float kNoValue = std::numeric_limits<float>::quiet_NaN();
 
-// contacts: 0 Baumgarte, 1 NGS, 2 Soft (ContactCorrection's order). nullopt, with the error
-// set, for an unknown solver or correction.
-std::optional<web::WorldSettings> settingsOf(int solver, int contacts, int substeps,
+// contacts: 0 Baumgarte, 1 NGS, 2 Soft (ContactCorrection's order); bias: a negative value for
+// the solver's default. nullopt, with the error set, for an unknown solver or correction.
+std::optional<web::WorldSettings> settingsOf(int solver, float bias, int contacts, int substeps,
                                              int velocityIterations, int positionIterations,
                                              int script) {
     if (!validSolver(solver) || contacts < 0 || contacts > 2) {
@@ -50,6 +50,7 @@ std::optional<web::WorldSettings> settingsOf(int solver, int contacts, int subst
     }
     web::WorldSettings settings;
     settings.solver = static_cast<PositionSolver>(solver);
+    if (!(bias < 0.0f)) settings.bias = bias;
     settings.contacts = static_cast<ContactCorrection>(contacts);
     settings.substeps = substeps;
     settings.velocityIterations = velocityIterations;
@@ -83,22 +84,22 @@ EMSCRIPTEN_KEEPALIVE const char* pv_solver_name(int solver) {
 }
 
 /// Builds scene `scene` with these settings (settingsOf's arguments).
-EMSCRIPTEN_KEEPALIVE int pv_load(int scene, int solver, int contacts, int substeps,
+EMSCRIPTEN_KEEPALIVE int pv_load(int scene, int solver, float bias, int contacts, int substeps,
                                  int velocityIterations, int positionIterations, int script) {
     return guarded([&] {
-        const auto settings =
-            settingsOf(solver, contacts, substeps, velocityIterations, positionIterations, script);
+        const auto settings = settingsOf(solver, bias, contacts, substeps, velocityIterations,
+                                         positionIterations, script);
         return settings && session.load(scene, *settings);
     });
 }
-/// The same settings for the running scene from its next step, the solver aside (kept for the
-/// next load).
-EMSCRIPTEN_KEEPALIVE int pv_set_settings(int solver, int contacts, int substeps,
+/// The same settings for the running scene from its next step, the solver and bias aside (kept
+/// for the next load).
+EMSCRIPTEN_KEEPALIVE int pv_set_settings(int solver, float bias, int contacts, int substeps,
                                          int velocityIterations, int positionIterations,
                                          int script) {
     return guarded([&] {
-        const auto settings =
-            settingsOf(solver, contacts, substeps, velocityIterations, positionIterations, script);
+        const auto settings = settingsOf(solver, bias, contacts, substeps, velocityIterations,
+                                         positionIterations, script);
         if (!settings) return false;
         session.setSettings(*settings);
         return true;

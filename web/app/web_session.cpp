@@ -84,6 +84,7 @@ bool WebSession::load(int index, const WorldSettings& settings) {
     }
     scenes::SceneOptions options;
     options.solver = settings.solver;
+    options.biasFactor = settings.bias;
     options.contactCorrection = settings.contacts;
     options.substepCount = settings.substeps;
     // Build into a fresh scene first: a def the engine refuses leaves the running one as it was.

@@ -14,9 +14,10 @@
 namespace pivot::web {
 
 /// What the page sets for the whole world: all applied when a scene is (re)loaded; all but the
-/// solver also at once (setSettings).
+/// solver and bias also at once (setSettings).
 struct WorldSettings {
     PositionSolver solver = PositionSolver::FullNGS;  ///< every joint's, at load: then per joint
+    std::optional<float> bias;  ///< every joint's bias factor, at load; unset: the solver's default
     ContactCorrection contacts = ContactCorrection::NGS;
     int substeps = 1;
     int velocityIterations = kDefaultVelocityIterations;
@@ -39,8 +40,8 @@ public:
     /// Rebuilds the current scene with the current settings (the page's reset).
     bool reload() { return load(sceneIndex_, settings_); }
     /// Applies contact correction, substeps, iterations and script from the next step, and
-    /// keeps the solver for the next load (the scene's joints have theirs). Throws pivot::Error,
-    /// changing nothing, if the world refuses a value.
+    /// keeps the solver and bias for the next load (the scene's joints have theirs). Throws
+    /// pivot::Error, changing nothing, if the world refuses a value.
     void setSettings(const WorldSettings& settings);
     /// One step of 1/60 s: the scene's script (if on), then World::step. Times the step.
     void step();

@@ -18,8 +18,8 @@ class App {
       sceneCount: c('pv_scene_count', n, []), sceneName: c('pv_scene_name', s, [n]),
       sceneDescription: c('pv_scene_description', s, [n]),
       solverCount: c('pv_solver_count', n, []), solverName: c('pv_solver_name', s, [n]),
-      load: c('pv_load', n, [n, n, n, n, n, n, n]), reload: c('pv_reload', n, []),
-      setSettings: c('pv_set_settings', n, [n, n, n, n, n, n]),
+      load: c('pv_load', n, [n, n, n, n, n, n, n, n]), reload: c('pv_reload', n, []),
+      setSettings: c('pv_set_settings', n, [n, n, n, n, n, n, n]),
       step: c('pv_step', n, []), error: c('pv_error', s, []),
       draw: c('pv_draw', n, []), drawList: c('pv_draw_list', n, []),
       grab: c('pv_grab', n, [n, n, n, n]), moveHand: c('pv_move_hand', null, [n, n]),
@@ -65,8 +65,8 @@ class App {
   bindControls() {
     $('scene').addEventListener('change', () => this.load());
     $('reset').addEventListener('click', () => this.load());
-    // The solver is every joint's at load (then each joint's own, in its panel); the rest
-    // applies from the next step.
+    // The solver and bias are every joint's at load (then each joint's own, in its panel); the
+    // rest applies from the next step.
     for (const id of ['contacts', 'substeps', 'velocity-iterations', 'position-iterations',
                       'script']) {
       $(id).addEventListener('change', () => {
@@ -137,9 +137,12 @@ class App {
     }, { passive: false });
   }
 
-  // The world settings of the form, as pv_load and pv_set_settings take them.
+  // The world settings of the form, as pv_load and pv_set_settings take them (an empty bias:
+  // each solver's default).
   settings() {
-    return [Number($('solver').value), Number($('contacts').value), Number($('substeps').value),
+    const bias = $('bias').value.trim();
+    return [Number($('solver').value), bias === '' ? -1 : Number(bias),
+      Number($('contacts').value), Number($('substeps').value),
       Number($('velocity-iterations').value), Number($('position-iterations').value),
       $('script').checked ? 1 : 0];
   }

@@ -9,7 +9,8 @@
 //  - a joint's solver changed from its panel takes effect at the next step: the spinning
 //    pendulum held by FullNGS, switched to pseudo_velocity, opens at once;
 //  - the world's settings change from the form at once, and a value the engine refuses shows
-//    its message and changes nothing;
+//    its message and changes nothing; the world's bias reaches every joint at reset, and a bias
+//    the engine refuses leaves the running scene as it was;
 //  - the page steps and draws, and nothing was logged as an error.
 'use strict';
 
@@ -121,6 +122,18 @@
       expect(app.api.stat(8) === 4 && message.length > 0 && shown === '4',
              'substeps 0 refused ("' + message + '"), still ' + app.api.stat(8) +
              ', the form shows ' + shown);
+      document.getElementById('bias').value = '0.1';
+      loadScene(app, 'bridge', 'baumgarte', true);
+      const joints = app.api.jointCount();
+      const biased = Math.abs(app.api.jointBias(0) - 0.1) < 1e-6 &&
+                     Math.abs(app.api.jointBias(joints - 1) - 0.1) < 1e-6;
+      expect(biased, 'bias 0.1 on every one of the bridge\'s ' + joints + ' joints');
+      document.getElementById('bias').value = '1.5';
+      document.getElementById('reset').click();
+      const refusal = document.getElementById('error').textContent;
+      expect(refusal.length > 0 && Math.abs(app.api.jointBias(0) - 0.1) < 1e-6,
+             'bias 1.5 refused ("' + refusal + '"), the bridge kept 0.1');
+      document.getElementById('bias').value = '';
       const count = app.api.draw();
       expect(count > 0, 'draw list: ' + count + ' numbers');
     } catch (e) {
