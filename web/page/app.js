@@ -95,11 +95,13 @@ class App {
 
   bindPointer() {
     const canvas = $('world');
-    const at = (e) => {
+    // The pointer in canvas pixels (the page may show the canvas scaled).
+    const pixel = (e) => {
       const r = canvas.getBoundingClientRect();
-      return this.view.toWorld((e.clientX - r.left) * canvas.width / r.width,
-                               (e.clientY - r.top) * canvas.height / r.height);
+      return { x: (e.clientX - r.left) * canvas.width / r.width,
+               y: (e.clientY - r.top) * canvas.height / r.height };
     };
+    const at = (e) => { const p = pixel(e); return this.view.toWorld(p.x, p.y); };
     canvas.addEventListener('contextmenu', (e) => e.preventDefault());
     canvas.addEventListener('pointerdown', (e) => {
       if (e.button === 2) { this.panning = { x: e.clientX, y: e.clientY }; return; }
@@ -132,8 +134,8 @@ class App {
     canvas.addEventListener('pointercancel', up);
     canvas.addEventListener('wheel', (e) => {
       e.preventDefault();
-      const r = canvas.getBoundingClientRect();
-      this.view.zoom(e.deltaY < 0 ? 1.15 : 1 / 1.15, e.clientX - r.left, e.clientY - r.top);
+      const p = pixel(e);
+      this.view.zoom(e.deltaY < 0 ? 1.15 : 1 / 1.15, p.x, p.y);
     }, { passive: false });
   }
 
