@@ -3,6 +3,7 @@
 #pragma once
 
 #include "pivot/body.h"
+#include "pivot/broad_phase_boxes.h"
 #include "pivot/constants.h"
 #include "pivot/debug_draw.h"
 #include "pivot/error.h"

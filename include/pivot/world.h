@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "pivot/body.h"
+#include "pivot/broad_phase_boxes.h"
 #include "pivot/constants.h"
 #include "pivot/debug_draw.h"
 #include "pivot/id.h"
@@ -74,6 +75,11 @@ struct WorldDef {
     /// agrees with it bit for bit; soft step (Box2D v3) uses 4. docs/position-correction.md,
     /// "Substeps", says what each strategy does per substep.
     int substepCount = 1;
+    /// How the broad phase sizes its boxes: Predictive, the default, is Box2D 2.4.1's (and
+    /// needed to agree with it bit for bit); Compact is Box2D v3's, for worlds of fast bodies.
+    /// Same behaviour either way, except which non-touching pairs have contacts (and so the
+    /// order contacts are made and solved in, and the bits that follow).
+    BroadPhaseBoxes broadPhaseBoxes = BroadPhaseBoxes::Predictive;
 };
 
 /// A touching contact as seen from outside, measured at the bodies' current poses.
@@ -200,6 +206,8 @@ public:
     /// Changes gravity and wakes every body, so sleeping bodies feel the change.
     void setGravity(Vec2 gravity);
     PositionSolver defaultPositionSolver() const;
+    /// WorldDef::broadPhaseBoxes (fixed for the world's life; a snapshot carries it).
+    BroadPhaseBoxes broadPhaseBoxes() const;
     ContactCorrection contactCorrection() const;
     void setContactCorrection(ContactCorrection correction);
     /// Switching sleep off wakes every body.

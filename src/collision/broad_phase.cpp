@@ -4,6 +4,10 @@
 
 namespace pivot {
 
+namespace {
+constexpr int kBroadPhaseBoxesCount = 2;
+}  // namespace
+
 std::int32_t BroadPhase::createProxy(const AABB& tightBox, std::int32_t userData) {
     const std::int32_t proxyId = tree_.createProxy(tightBox, userData);
     moveBuffer_.push_back(proxyId);
@@ -20,7 +24,10 @@ void BroadPhase::destroyProxy(std::int32_t proxyId) {
 }
 
 void BroadPhase::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) {
-    if (tree_.moveProxy(proxyId, tightBox, displacement)) moveBuffer_.push_back(proxyId);
+    const bool moved = boxes_ == BroadPhaseBoxes::Compact
+                           ? tree_.refitProxy(proxyId, tightBox)
+                           : tree_.moveProxy(proxyId, tightBox, displacement);
+    if (moved) moveBuffer_.push_back(proxyId);
 }
 
 void BroadPhase::touchProxy(std::int32_t proxyId) {
@@ -49,11 +56,13 @@ void BroadPhase::markBuffered(std::uint8_t value) {
 }
 
 void BroadPhase::save(SnapshotWriter& out) const {
+    out.enumValue(boxes_, kBroadPhaseBoxesCount);
     tree_.save(out);
     out.sequence(moveBuffer_, [&](std::int32_t proxy) { out.value(proxy); });
 }
 
 void BroadPhase::load(SnapshotReader& in) {
+    in.enumValue(boxes_, kBroadPhaseBoxesCount);
     tree_.load(in);
     in.sequence(moveBuffer_, [&](std::int32_t& proxy) { in.value(proxy); });
     for (const std::int32_t proxy : moveBuffer_) {

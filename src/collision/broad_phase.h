@@ -1,6 +1,14 @@
 // The broad phase: which shapes might touch. Keeps a DynamicTree of every shape's fat box and a
 // buffer of proxies that moved (or were created) since the last update; updatePairs reports
 // each overlapping pair that involves at least one of them.
+//
+// Two policies for the boxes (pivot::BroadPhaseBoxes). Predictive, Box2D 2.4.1's: a proxy that
+// leaves its box gets one stretched ahead by its displacement and is re-inserted where the
+// tree's heuristic says. Compact, Box2D v3's: the box is only fattened by the margin, and a
+// proxy that leaves it is refitted where it sits; the part of the tree that grew is rebuilt
+// just before the next updatePairs queries it. Fast shapes pair with far less than they will
+// ever touch under Compact, and moving many proxies costs one partial rebuild instead of as
+// many re-insertions (or none, while nothing that moved looks for pairs).
 #pragma once
 
 #include <algorithm>
@@ -9,6 +17,7 @@
 
 #include "collision/dynamic_tree.h"
 #include "core/task_pool.h"
+#include "pivot/broad_phase_boxes.h"
 
 namespace pivot {
 
@@ -17,11 +26,20 @@ public:
     std::int32_t createProxy(const AABB& tightBox, std::int32_t userData);
     /// Also forgets the proxy if it is buffered, so it is never reported after this call.
     void destroyProxy(std::int32_t proxyId);
-    /// See DynamicTree::moveProxy; a proxy the tree re-inserted is buffered for updatePairs.
+    /// The policy for boxes from now on (a new broad phase is Predictive). Boxes already in the
+    /// tree stay as they are until their proxies next move.
+    void setBoxes(BroadPhaseBoxes boxes) { boxes_ = boxes; }
+    BroadPhaseBoxes boxes() const { return boxes_; }
+
+    /// DynamicTree::moveProxy (Predictive) or refitProxy (Compact, which ignores the
+    /// displacement); a proxy given a new box is buffered for updatePairs.
     void moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement);
-    /// Whether moveProxy would re-insert (and so buffer) the proxy. Read-only: thread-safe.
+    /// Whether moveProxy would give the proxy a new box (and so buffer it). Read-only:
+    /// thread-safe.
     bool needsMove(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) const {
-        return tree_.needsMove(proxyId, tightBox, displacement);
+        return tree_.needsMove(
+            proxyId, tightBox,
+            boxes_ == BroadPhaseBoxes::Compact ? Vec2{0.0f, 0.0f} : displacement);
     }
     /// Buffers a proxy so its pairs are reported again at the next updatePairs (for example
     /// after its filter changed).
@@ -32,8 +50,9 @@ public:
     std::int32_t userData(std::int32_t proxyId) const;
     const DynamicTree& tree() const;
 
-    /// Snapshots: the tree and the proxies buffered for the next update, in their order. load
-    /// refuses a buffer naming anything but live proxies (or the mark of a destroyed one).
+    /// Snapshots: the policy, the tree and the proxies buffered for the next update, in their
+    /// order. load refuses a buffer naming anything but live proxies (or the mark of a
+    /// destroyed one).
     void save(SnapshotWriter& out) const;
     void load(SnapshotReader& in);
 
@@ -65,6 +84,7 @@ private:
     };
 
     DynamicTree tree_;
+    BroadPhaseBoxes boxes_ = BroadPhaseBoxes::Predictive;
     // Buffered proxy ids in the order they were buffered; destroyed ones are overwritten with
     // kNullProxy rather than erased, which keeps destroyProxy from shifting the rest.
     std::vector<std::int32_t> moveBuffer_;
@@ -113,6 +133,7 @@ void BroadPhase::reportSortedPairs(AddPair&& addPair) {
 template <typename AddPair>
 void BroadPhase::updatePairs(AddPair&& addPair) {
     pairBuffer_.clear();
+    if (!moveBuffer_.empty()) tree_.rebuildChanged();
     markBuffered(1);
     for (const std::int32_t queryProxy : moveBuffer_) {
         if (queryProxy == kNullProxy) continue;
@@ -128,6 +149,12 @@ void BroadPhase::updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayP
                              AddPair&& addPair) {
     workerPairs_.resize(static_cast<std::size_t>(pool.workerCount()));
     for (std::vector<ProxyPair>& pairs : workerPairs_) pairs.clear();
+    // A tree refitted around moved proxies answers right but slowly: it is rebuilt when it is
+    // about to be searched (a grid of shapes that never look for pairs never pays for it).
+    const bool anyQuery = std::any_of(moveBuffer_.begin(), moveBuffer_.end(), [&](std::int32_t p) {
+        return p != kNullProxy && mayQuery(tree_.userData(p));
+    });
+    if (anyQuery) tree_.rebuildChanged();
     markBuffered(1);
     pool.parallelFor(
         static_cast<int>(moveBuffer_.size()), 256, [&](int begin, int end, int worker) {

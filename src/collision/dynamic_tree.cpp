@@ -1,5 +1,6 @@
 // The dynamic AABB tree: node pool and free list, insertion by the perimeter heuristic,
-// removal, and the rotations that keep the tree balanced.
+// removal, the rotations that keep the tree balanced, and the refit-and-rebuild way of moving
+// proxies (BroadPhaseBoxes::Compact).
 #include "collision/dynamic_tree.h"
 
 #include <algorithm>
@@ -113,6 +114,14 @@ int DynamicTree::proxyCount() const {
     return proxyCount_;
 }
 
+float DynamicTree::cost() const {
+    float sum = 0.0f;
+    for (const Node& node : nodes_) {
+        if (node.height > 0) sum += perimeter(node.box);
+    }
+    return sum;
+}
+
 int DynamicTree::height() const {
     return root_ == kNullNode ? -1 : nodes_[root_].height;
 }
@@ -126,6 +135,7 @@ std::int32_t DynamicTree::allocateNode() {
     } else {
         nodeId = static_cast<std::int32_t>(nodes_.size());
         nodes_.emplace_back();
+        changed_.push_back(0);
     }
     nodes_[nodeId].height = 0;
     return nodeId;
@@ -133,6 +143,7 @@ std::int32_t DynamicTree::allocateNode() {
 
 void DynamicTree::freeNode(std::int32_t nodeId) {
     nodes_[nodeId] = Node{};
+    changed_[nodeId] = 0;
     nodes_[nodeId].next = freeList_;
     freeList_ = nodeId;
 }
@@ -154,6 +165,7 @@ void DynamicTree::insertLeaf(std::int32_t leaf) {
     const std::int32_t oldParent = nodes_[sibling].parent;
     const std::int32_t newParent = allocateNode();  // may reallocate nodes_: no references held
 
+    changed_[newParent] = changed_[sibling];  // keeps refitProxy's marks a subtree at the top
     Node& parent = nodes_[newParent];
     parent.parent = oldParent;
     parent.child1 = sibling;
@@ -271,6 +283,9 @@ std::int32_t DynamicTree::rotateUp(std::int32_t top, std::int32_t heavy) {
     nodes_[top].parent = heavy;
     replaceChild(top, heavy, given);
     nodes_[given].parent = top;
+    // refitProxy's marks stay a subtree at the top: a marked node's new parent is marked too.
+    changed_[top] |= changed_[given];
+    changed_[heavy] |= changed_[top];
 
     balance(top);  // relinks its result under `heavy` itself
     refitNode(heavy);
@@ -296,11 +311,178 @@ void DynamicTree::replaceChild(std::int32_t parent, std::int32_t oldChild, std::
     }
 }
 
+bool DynamicTree::refitProxy(std::int32_t proxyId, const AABB& tightBox) {
+    if (!needsMove(proxyId, tightBox, Vec2{0.0f, 0.0f})) return false;
+    const AABB box = fatten(tightBox);
+    nodes_[proxyId].box = box;
+    // Ancestors only grow, and only those that must to hold the new box are marked: a leaf that
+    // moved inside its group's box leaves the tree as good as it was. (A box left larger than its
+    // children needs is still a valid bound; rebuildChanged makes it tight again.)
+    std::int32_t nodeId = nodes_[proxyId].parent;
+    if (nodeId == kNullNode || contains(nodes_[nodeId].box, box)) return true;
+    for (; nodeId != kNullNode && !contains(nodes_[nodeId].box, box);
+         nodeId = nodes_[nodeId].parent) {
+        nodes_[nodeId].box = combine(nodes_[nodeId].box, box);
+        changed_[nodeId] = 1;
+    }
+    // The marks must form a subtree at the top, which rebuildChanged takes apart from the root
+    // down: the rest of the way up is marked too, as far as the first node already marked.
+    for (; nodeId != kNullNode && !changed_[nodeId]; nodeId = nodes_[nodeId].parent) {
+        changed_[nodeId] = 1;
+    }
+    return true;
+}
+
+void DynamicTree::rebuildChanged() {
+    if (root_ == kNullNode || !changed_[root_]) return;
+    const AABB centres = collectParts();
+
+    builtNodes_.clear();
+    buildTasks_.push_back({0, static_cast<std::int32_t>(parts_.size()), kNullNode, centres});
+    while (!buildTasks_.empty()) {
+        const BuildTask task = buildTasks_.back();
+        buildTasks_.pop_back();
+        std::int32_t nodeId;
+        if (task.end - task.begin == 1) {
+            nodeId = parts_[task.begin].node;
+        } else {
+            nodeId = allocateNode();
+            builtNodes_.push_back(nodeId);
+            AABB halves[2];
+            const std::int32_t middle = splitParts(task, halves);
+            buildTasks_.push_back({middle, task.end, nodeId, halves[1]});
+            buildTasks_.push_back({task.begin, middle, nodeId, halves[0]});
+        }
+        nodes_[nodeId].parent = task.parent;
+        if (task.parent == kNullNode) {
+            root_ = nodeId;
+        } else if (nodes_[task.parent].child1 == kNullNode) {
+            nodes_[task.parent].child1 = nodeId;
+        } else {
+            nodes_[task.parent].child2 = nodeId;
+        }
+    }
+    // A node was made before its children: boxes and heights are set in reverse.
+    for (auto it = builtNodes_.rbegin(); it != builtNodes_.rend(); ++it) refitNode(*it);
+}
+
+// Takes the changed nodes apart from the root down (freeing them, which also clears their
+// marks) and lists what hangs below them: the unchanged subtrees and the leaves.
+AABB DynamicTree::collectParts() {
+    parts_.clear();
+    buildTasks_.clear();
+    buildTasks_.push_back({root_, 0, kNullNode, {}});
+    while (!buildTasks_.empty()) {
+        const std::int32_t nodeId = buildTasks_.back().begin;
+        buildTasks_.pop_back();
+        const Node node = nodes_[nodeId];
+        if (node.isLeaf() || !changed_[nodeId]) {
+            parts_.push_back({node.box, 0.5f * (node.box.lower + node.box.upper), nodeId});
+            continue;
+        }
+        buildTasks_.push_back({node.child2, 0, kNullNode, {}});
+        buildTasks_.push_back({node.child1, 0, kNullNode, {}});
+        freeNode(nodeId);
+    }
+    AABB centres{parts_[0].centre, parts_[0].centre};
+    for (const Part& part : parts_) centres = combine(centres, AABB{part.centre, part.centre});
+    return centres;
+}
+
+// Splits parts_[task.begin, task.end) in two. The cut is across the longer side of the parts'
+// centres, at one of up to kMaxBins evenly spaced places: the one with the least
+// perimeter-times-count on its two sides (the cost of querying the two new children). Centres
+// all in one place cannot be cut: the list is halved instead. The halves' centre bounds come
+// from the bins', which spares every level of the build a pass over its parts.
+std::int32_t DynamicTree::splitParts(const BuildTask& task, AABB (&halves)[2]) {
+    constexpr int kMaxBins = 16;
+    const std::int32_t begin = task.begin;
+    const std::int32_t end = task.end;
+    if (end - begin == 2) {
+        halves[0] = {parts_[begin].centre, parts_[begin].centre};
+        halves[1] = {parts_[begin + 1].centre, parts_[begin + 1].centre};
+        return begin + 1;
+    }
+    // Most splits are of a few parts, where fewer bins do as well and cost less to sum.
+    const int bins = std::min(kMaxBins, end - begin);
+    const AABB& centres = task.centres;
+    halves[0] = centres;
+    halves[1] = centres;
+    const Vec2 extent = centres.upper - centres.lower;
+    const bool alongX = extent.x >= extent.y;
+    const float low = alongX ? centres.lower.x : centres.lower.y;
+    const float width = alongX ? extent.x : extent.y;
+    const std::int32_t half = begin + (end - begin) / 2;
+    if (!(width > 0.0f)) return half;
+
+    const float binsPerMetre = static_cast<float>(bins) / width;
+    auto binOf = [&](const Part& part) {
+        const Vec2 c = part.centre;
+        const int bin = static_cast<int>(((alongX ? c.x : c.y) - low) * binsPerMetre);
+        return std::min(bins - 1, std::max(0, bin));
+    };
+    std::array<AABB, kMaxBins> boxes;
+    std::array<AABB, kMaxBins> binCentres;
+    std::array<int, kMaxBins> counts{};
+    for (std::int32_t i = begin; i < end; ++i) {
+        const Part& part = parts_[i];
+        const int bin = binOf(part);
+        const AABB centre{part.centre, part.centre};
+        if (counts[bin] == 0) {
+            boxes[bin] = part.box;
+            binCentres[bin] = centre;
+        } else {
+            boxes[bin] = combine(boxes[bin], part.box);
+            binCentres[bin] = combine(binCentres[bin], centre);
+        }
+        ++counts[bin];
+    }
+    // aboveCost[k]: the cost of what lies in the bins after k.
+    std::array<float, kMaxBins> aboveCost;
+    AABB above{};
+    int aboveCount = 0;
+    for (int k = bins - 1; k > 0; --k) {
+        if (counts[k] > 0) {
+            above = aboveCount == 0 ? boxes[k] : combine(above, boxes[k]);
+            aboveCount += counts[k];
+        }
+        aboveCost[k - 1] = aboveCount == 0 ? 0.0f : perimeter(above) * aboveCount;
+    }
+    AABB below{};
+    int belowCount = 0;
+    int bestCut = -1;
+    float bestCost = 0.0f;
+    for (int k = 0; k < bins - 1; ++k) {
+        if (counts[k] > 0) {
+            below = belowCount == 0 ? boxes[k] : combine(below, boxes[k]);
+            belowCount += counts[k];
+        }
+        if (belowCount == 0 || belowCount == end - begin) continue;
+        const float cost = perimeter(below) * belowCount + aboveCost[k];
+        if (bestCut < 0 || cost < bestCost) {
+            bestCut = k;
+            bestCost = cost;
+        }
+    }
+    if (bestCut < 0) return half;
+    bool first[2] = {true, true};
+    for (int k = 0; k < bins; ++k) {
+        if (counts[k] == 0) continue;
+        const int side = k <= bestCut ? 0 : 1;
+        halves[side] = first[side] ? binCentres[k] : combine(halves[side], binCentres[k]);
+        first[side] = false;
+    }
+    const auto cut = std::partition(parts_.begin() + begin, parts_.begin() + end,
+                                    [&](const Part& part) { return binOf(part) <= bestCut; });
+    return static_cast<std::int32_t>(cut - parts_.begin());
+}
+
 template <typename Io, typename Tree>
 void DynamicTree::describe(Io& io, Tree& tree) {
-    // A node is 40 bytes of snapshot: a corrupt count cannot ask for more than there are.
+    // A node is 41 bytes of snapshot: a corrupt count cannot ask for more than there are.
     if constexpr (Io::kReading) {
-        tree.nodes_.assign(io.count(40), Node{});
+        tree.nodes_.assign(io.count(41), Node{});
+        tree.changed_.assign(tree.nodes_.size(), 0);
     } else {
         io.count(tree.nodes_.size());
     }
@@ -316,6 +498,11 @@ void DynamicTree::describe(Io& io, Tree& tree) {
         io.value(node.next);
         io.value(node.height);
         io.value(node.userData);
+    }
+    for (std::size_t i = 0; i < tree.nodes_.size(); ++i) {
+        bool changed = tree.changed_[i] != 0;
+        io.value(changed);
+        if constexpr (Io::kReading) tree.changed_[i] = changed ? 1 : 0;
     }
     io.value(tree.root_);
     io.value(tree.freeList_);
@@ -345,7 +532,7 @@ bool DynamicTree::isValid() const {
     std::vector<bool> seen(nodes_.size(), false);
     std::int32_t freeCount = 0;
     for (std::int32_t id = freeList_; id != kNullNode; id = nodes_[id].next) {
-        if (!inPool(id) || seen[id] || nodes_[id].height != -1) return false;
+        if (!inPool(id) || seen[id] || nodes_[id].height != -1 || changed_[id]) return false;
         seen[id] = true;
         ++freeCount;
     }
@@ -363,8 +550,11 @@ bool DynamicTree::isValid() const {
             ++usedCount;
 
             const Node& node = nodes_[id];
+            // rebuildChanged finds marks from the root down: a mark below an unmarked node
+            // would never be cleared.
+            if (changed_[id] && node.parent != kNullNode && !changed_[node.parent]) return false;
             if (node.isLeaf()) {
-                if (node.child2 != kNullNode || node.height != 0) return false;
+                if (node.child2 != kNullNode || node.height != 0 || changed_[id]) return false;
                 ++leafCount;
                 continue;
             }

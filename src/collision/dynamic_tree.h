@@ -1,7 +1,8 @@
-// A dynamic AABB tree: a balanced binary tree of fattened boxes, one leaf ("proxy") per shape.
+// A dynamic AABB tree: a binary tree of fattened boxes, one leaf ("proxy") per shape.
 // Leaves are inserted where they grow the tree's total perimeter least and the tree is kept
 // balanced by rotations, so queries cost O(log n) and moving a proxy is cheap when its box
-// stays inside its fattened box.
+// stays inside its fattened box. Moved proxies can instead be refitted in place and the part of
+// the tree they grew rebuilt in one go (refitProxy, rebuildChanged).
 #pragma once
 
 #include <array>
@@ -60,6 +61,19 @@ public:
     /// Whether moveProxy would re-insert the proxy. Read-only: safe from several threads.
     bool needsMove(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) const;
 
+    /// The other way to move a proxy: under the same test as needsMove with no displacement,
+    /// stores the box fattened by kAabbMargin only (no stretch) where the leaf is, growing the
+    /// ancestors that no longer hold it and marking them for rebuildChanged; returns whether
+    /// it moved the proxy. The tree stays valid, but a leaf that travelled is left among its
+    /// old neighbours until rebuildChanged.
+    bool refitProxy(std::int32_t proxyId, const AABB& tightBox);
+    /// Rebuilds the part of the tree refitProxy grew, top down: the subtrees it did not reach
+    /// are kept whole, and they and the moved leaves are grouped again where the surface-area
+    /// heuristic says (binned by box centres). Proxy ids, boxes and user data are kept; only
+    /// the tree's shape changes (so the order queries visit proxies in). The same tree and
+    /// moves give the same result. Nothing to do when nothing grew.
+    void rebuildChanged();
+
     /// How much larger than needed (in margins, per side) a stored box may be before it is
     /// shrunk: enough slack that a shape wandering about a little never causes a re-insert.
     static constexpr float kOversizeMargins = 4.0f;
@@ -87,6 +101,9 @@ public:
     bool isLeafInUse(std::int32_t id) const {
         return nodes_[id].height == 0 && nodes_[id].isLeaf();
     }
+    /// The sum of the internal nodes' perimeters: what the surface-area heuristic minimises (a
+    /// small query's chance of entering a node grows with its perimeter). For tests and tuning.
+    float cost() const;
     /// Height of the tree (0 for a single leaf, -1 when empty).
     int height() const;
     /// Checks every structural invariant (parents, heights, boxes enclosing children, free
@@ -141,7 +158,32 @@ private:
     void refitNode(std::int32_t nodeId);
     void replaceChild(std::int32_t parent, std::int32_t oldChild, std::int32_t newChild);
 
+    // rebuildChanged's pieces: the kept subtrees and moved leaves it groups ("parts"), a range
+    // of them still to be split under a parent, and the split itself.
+    struct Part {
+        AABB box;
+        Vec2 centre;
+        std::int32_t node;
+    };
+    struct BuildTask {
+        std::int32_t begin;
+        std::int32_t end;
+        std::int32_t parent;  ///< kNullNode for the root
+        AABB centres;         ///< the bounds of the parts' centres
+    };
+    /// Returns the bounds of the parts' centres.
+    AABB collectParts();
+    /// Returns where the second half starts; `halves` gets the two halves' centre bounds.
+    std::int32_t splitParts(const BuildTask& task, AABB (&halves)[2]);
+
     std::vector<Node> nodes_;
+    // Per node: grown around a moved leaf since the last rebuildChanged, or above such a node
+    // (so the marks are a subtree at the top). Saved with the tree.
+    std::vector<std::uint8_t> changed_;
+    // rebuildChanged's scratch, kept for its capacity.
+    std::vector<Part> parts_;  // copies of the boxes, so the splits read them in order
+    std::vector<BuildTask> buildTasks_;
+    std::vector<std::int32_t> builtNodes_;
     std::int32_t root_ = kNullNode;
     std::int32_t freeList_ = kNullNode;
     std::int32_t proxyCount_ = 0;

@@ -320,7 +320,7 @@ void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& so
             }
         }
     });
-    // Re-insertions change the tree: one at a time, in a fixed order.
+    // New boxes change the tree: one at a time, in a fixed order.
     for (std::int32_t b : solvedBodies) {
         const Body& body = bodies_[b];
         if (body.type == BodyType::Static) continue;

@@ -42,7 +42,9 @@ World::Impl::Impl(const WorldDef& def)
       hitEventThreshold(def.hitEventThreshold),
       pool(def.workerCount),
       contactManager(bodies, shapes, joints, contacts, pool, id),
-      stepper(pool) {}
+      stepper(pool) {
+    contactManager.broadPhase().setBoxes(def.broadPhaseBoxes);
+}
 
 std::int32_t World::Impl::bodyIndex(const char* call, BodyId id) const {
     return checkHandle(call, "body", id, bodies, this->id);
@@ -74,6 +76,7 @@ World::World(const WorldDef& def) {
     requireInRange(call, "def.hitEventThreshold", def.hitEventThreshold, 0.0f, kMaxSpeed);
     requireNonNegative(call, "def.jointLetGoSeparation", def.jointLetGoSeparation);
     checkSubstepCount(call, "def.substepCount", def.substepCount);
+    checkBroadPhaseBoxes(call, "def.broadPhaseBoxes", def.broadPhaseBoxes);
     if (def.workerCount < 1 || def.workerCount > 64) {
         fail(call,
              "def.workerCount must be in [1, 64] (got " + std::to_string(def.workerCount) + ")");
@@ -153,6 +156,10 @@ void World::setGravity(Vec2 gravity) {
 
 PositionSolver World::defaultPositionSolver() const {
     return impl_->defaultPositionSolver;
+}
+
+BroadPhaseBoxes World::broadPhaseBoxes() const {
+    return impl_->contactManager.broadPhase().boxes();
 }
 
 ContactCorrection World::contactCorrection() const {

@@ -42,6 +42,14 @@ inline void checkContactCorrection(const char* call, const char* field,
     }
 }
 
+inline void checkBroadPhaseBoxes(const char* call, const char* field, BroadPhaseBoxes boxes) {
+    int value = static_cast<int>(boxes);
+    if (value < 0 || value > static_cast<int>(BroadPhaseBoxes::Compact)) {
+        fail(call,
+             std::string(field) + " is not a BroadPhaseBoxes (got " + std::to_string(value) + ")");
+    }
+}
+
 inline void checkLimit(const char* call, const std::string& field, const JointLimit& limit) {
     requireMagnitude(call, (field + ".lower").c_str(), limit.lower);
     requireMagnitude(call, (field + ".upper").c_str(), limit.upper);

@@ -151,6 +151,9 @@ std::uint64_t World::stateHash() const {
     // These, and the soft-step settings, are hashed only when they differ from their defaults,
     // so that hashes recorded before they existed still hold.
     if (w.substepCount != 1) h.add(w.substepCount);
+    if (w.contactManager.broadPhase().boxes() != BroadPhaseBoxes::Predictive) {
+        h.add(static_cast<std::int32_t>(w.contactManager.broadPhase().boxes()));
+    }
     if (w.hitEventThreshold != kDefaultHitEventThreshold) h.add(w.hitEventThreshold);
     if (w.contactHertz != kDefaultContactHertz ||
         w.contactDampingRatio != kDefaultContactDampingRatio ||

@@ -35,6 +35,7 @@ struct Options {
     int workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     bool workersGiven = false;  // --workers on the command line (--profile then uses it)
     bool continuous = true;
+    bool compactBoxes = false;         // --boxes compact: pivot2d's worlds use Compact boxes
     std::string only;                  // --scene
     std::vector<std::string> engines;  // --engines; empty: all
     std::string profileEngine;         // --profile: step one engine, untimed, for a profiler
@@ -59,11 +60,12 @@ std::string engineNames(const std::vector<EngineKind>& kinds) {
 // A run of a scene in one engine: built, then stepped; the script runs before each step.
 class Run {
 public:
-    Run(const SuiteScene& scene, const EngineKind& kind, int threads, bool continuous) {
+    Run(const SuiteScene& scene, const EngineKind& kind, int threads, const Options& options) {
         WorldSettings settings;
         settings.threads = threads;
         settings.sleep = scene.sleep;
-        settings.continuous = continuous;
+        settings.continuous = options.continuous;
+        settings.compactBoxes = options.compactBoxes;
         engine_ = kind.make(settings);
         script_ = scene.build(*engine_);
     }
@@ -73,6 +75,8 @@ public:
         engine_->step();
     }
 
+    int contactCount() const { return engine_->contactCount(); }
+
 private:
     std::unique_ptr<Engine> engine_;
     Script script_;
@@ -81,8 +85,8 @@ private:
 // ms per step over steps 1 .. steps - 1, as Box2D v3's app times them: the world is built and
 // its first step taken outside the timed region.
 double timeRun(const SuiteScene& scene, const EngineKind& kind, int threads, int steps,
-               bool continuous) {
-    Run run(scene, kind, threads, continuous);
+               const Options& options) {
+    Run run(scene, kind, threads, options);
     run.step(0);
     const Clock::time_point start = Clock::now();
     for (int i = 1; i < steps; ++i) run.step(i);
@@ -123,11 +127,11 @@ std::vector<Row> runScene(const SuiteScene& scene, const std::vector<EngineKind>
         }
     }
     if (!options.quick && !kinds.empty()) {  // warm-up: caches, page faults, clock speed
-        timeRun(scene, kinds.front(), threadCounts.back(), steps, options.continuous);
+        timeRun(scene, kinds.front(), threadCounts.back(), steps, options);
     }
     for (int r = 0; r < options.repeats; ++r) {
         for (Configuration& c : configurations) {
-            c.times.push_back(timeRun(scene, *c.kind, c.threads, steps, options.continuous));
+            c.times.push_back(timeRun(scene, *c.kind, c.threads, steps, options));
         }
     }
     std::vector<Row> rows;
@@ -163,8 +167,16 @@ int profileRun(const Options& options, const std::vector<EngineKind>& kinds) {
         if (scene.name != options.only) continue;
         for (const EngineKind& kind : kinds) {
             if (kind.name != options.profileEngine) continue;
-            Run run(scene, kind, std::min(threads, kind.maxThreads), options.continuous);
-            for (int i = 0; i < options.profileSteps; ++i) run.step(i);
+            Run run(scene, kind, std::min(threads, kind.maxThreads), options);
+            double contacts = 0.0;
+            for (int i = 0; i < options.profileSteps; ++i) {
+                run.step(i);
+                contacts += run.contactCount();
+            }
+            // The broad phase's contacts per step, to compare engines' pair finding.
+            std::cerr << "pivot-bench: " << options.profileSteps << " steps, "
+                      << contacts / std::max(1, options.profileSteps)
+                      << " contacts per step on average\n";
             return 0;
         }
         std::cerr << "pivot-bench: --profile takes " << engineNames(kinds) << " (got '"
@@ -178,8 +190,8 @@ int profileRun(const Options& options, const std::vector<EngineKind>& kinds) {
 void usage(const std::vector<EngineKind>& kinds) {
     std::cerr
         << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] [--scene NAME]\n"
-           "                   [--engines A,B,...] [--continuous on|off] [--list]\n"
-           "                   [--profile ENGINE STEPS]\n"
+           "                   [--engines A,B,...] [--continuous on|off]\n"
+           "                   [--boxes predictive|compact] [--list] [--profile ENGINE STEPS]\n"
            "  Times each scene in every engine, 1/60 s steps, continuous collision on, sleeping\n"
            "  as the scene says, and prints the median milliseconds per step (the first step\n"
            "  left out, as Box2D v3's benchmark app does) with ratios: x 2.4.1 = Box2D 2.4.1's\n"
@@ -194,6 +206,8 @@ void usage(const std::vector<EngineKind>& kinds) {
            "             ratio is empty when its engine did not run), then the memory table\n"
            "  --engines  only these engines (the ratios need their engine in the run)\n"
            "  --continuous off  continuous collision off in every engine\n"
+           "  --boxes compact  pivot2d's worlds use BroadPhaseBoxes::Compact (Box2D v3's\n"
+           "             boxes) instead of the default, Predictive (Box2D 2.4.1's)\n"
            "  --list     name and describe the scenes\n"
            "  --scene queries  only the query rows (ray casts and box queries in 10^4\n"
            "             shapes); --scene memory  only the memory rows\n"
@@ -225,6 +239,10 @@ int main(int argc, char** argv) {
         } else if (arg == "--continuous" && i + 1 < argc &&
                    (std::string(argv[i + 1]) == "on" || std::string(argv[i + 1]) == "off")) {
             options.continuous = std::string(argv[++i]) == "on";
+        } else if (arg == "--boxes" && i + 1 < argc &&
+                   (std::string(argv[i + 1]) == "predictive" ||
+                    std::string(argv[i + 1]) == "compact")) {
+            options.compactBoxes = std::string(argv[++i]) == "compact";
         } else if (arg == "--profile" && i + 2 < argc) {
             options.profileEngine = argv[++i];
             options.profileSteps = std::max(0, std::atoi(argv[++i]));
@@ -317,9 +335,10 @@ int main(int argc, char** argv) {
     }
     std::printf(
         "%s: median ms per step over %d run%s (first step left out); continuous collision "
-        "%s.\n",
+        "%s; pivot2d's broad-phase boxes %s.\n",
         options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
-        options.repeats == 1 ? "" : "s", options.continuous ? "on" : "off");
+        options.repeats == 1 ? "" : "s", options.continuous ? "on" : "off",
+        options.compactBoxes ? "compact" : "predictive");
     for (const EngineKind& kind : kinds) {
         std::printf("  %-12s %s\n", kind.name.c_str(), kind.about.c_str());
     }

@@ -130,6 +130,7 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
     def.contactCorrection = options.contactCorrection;
     def.workerCount = options.workerCount;
     def.substepCount = options.substepCount;
+    def.broadPhaseBoxes = options.broadPhaseBoxes;
     scene.world = std::make_unique<World>(def);
     info.build(scene, options);
     if (options.continuous) scene.world->setContinuousEnabled(*options.continuous);

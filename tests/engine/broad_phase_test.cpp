@@ -50,7 +50,8 @@ struct SceneBody {
 // Plays a contact manager over a random scene for `rounds` rounds and checks after each
 // update that the pairs it knows are exactly the overlapping pairs of live fat boxes.
 // Returns the number of pairs reported, so callers can check the scene was not trivial.
-std::size_t runRandomScene(std::uint32_t seed, int rounds) {
+std::size_t runRandomScene(std::uint32_t seed, int rounds,
+                           BroadPhaseBoxes boxes = BroadPhaseBoxes::Predictive) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     std::uniform_real_distribution<float> symmetric(-1.0f, 1.0f);
@@ -61,6 +62,7 @@ std::size_t runRandomScene(std::uint32_t seed, int rounds) {
     };
 
     BroadPhase broadPhase;
+    broadPhase.setBoxes(boxes);
     std::map<std::int32_t, SceneBody> bodies;
     std::set<UserPair> known;  // (smaller user data, larger user data)
     std::int32_t nextUserData = 1000;
@@ -173,6 +175,13 @@ std::size_t runRandomScene(std::uint32_t seed, int rounds) {
 TEST(BroadPhase, ReportsExactlyTheBruteForcePairsInRandomisedScenes) {
     for (std::uint32_t seed : {1u, 7u, 42u, 2024u}) {
         const std::size_t reported = runRandomScene(seed, 300);
+        EXPECT_GT(reported, 1000u) << "seed " << seed << ": the scene hardly had any pairs";
+    }
+}
+
+TEST(BroadPhase, CompactBoxesReportExactlyTheBruteForcePairsToo) {
+    for (std::uint32_t seed : {1u, 7u, 42u, 2024u}) {
+        const std::size_t reported = runRandomScene(seed, 300, BroadPhaseBoxes::Compact);
         EXPECT_GT(reported, 1000u) << "seed " << seed << ": the scene hardly had any pairs";
     }
 }

@@ -46,9 +46,11 @@ struct Shot {
     float furthest = -1e9f;
     int impacts = 0;
 };
-Shot shootAtThinWall(bool worldContinuous, bool bodyContinuous) {
+Shot shootAtThinWall(bool worldContinuous, bool bodyContinuous,
+                     BroadPhaseBoxes boxes = BroadPhaseBoxes::Predictive) {
     WorldDef def = weightless();
     def.enableContinuous = worldContinuous;
+    def.broadPhaseBoxes = boxes;
     World world(def);
     staticBox(world, {0.0f, 0.0f}, 0.025f, 2.0f);
     const BodyId shot = ball(world, {-3.0f, 0.0f}, {500.0f, 0.0f}, 0.1f, bodyContinuous);
@@ -71,6 +73,16 @@ TEST(Continuous, AFastBallStopsAtAThinWall) {
     const Shot off = shootAtThinWall(false, true);
     EXPECT_GT(off.furthest, 0.5f);
     EXPECT_EQ(off.impacts, 0);
+}
+
+TEST(Continuous, CompactBroadPhaseBoxesStillCoverTheWholeStep) {
+    // Compact boxes are not stretched ahead of the motion, but they still hold the step's
+    // sweep, so the contact with the wall exists when the impact is sought.
+    const Shot on = shootAtThinWall(true, true, BroadPhaseBoxes::Compact);
+    EXPECT_LT(on.furthest, -0.025f) << "the ball's centre passed the wall's near face";
+    EXPECT_GE(on.impacts, 1);
+    const Shot off = shootAtThinWall(false, true, BroadPhaseBoxes::Compact);
+    EXPECT_GT(off.furthest, 0.5f);
 }
 
 TEST(Continuous, IsSwitchedPerBody) {

@@ -150,18 +150,22 @@ TEST(Determinism, WorldsDoNotShareState) {
 
 TEST(Determinism, TheNumberOfWorkersChangesNothing) {
     // Islands, contact updates and broad-phase queries are shared among the workers, and every
-    // result is merged in a fixed order: the state is bit-identical for any worker count.
-    for (const SceneInfo& info : allScenes()) {
-        std::uint64_t hashes[2];
-        for (int workers = 1; workers <= 2; ++workers) {
-            SceneOptions options;
-            options.workerCount = workers;
-            Scene scene = buildScene(info, options);
-            RunSettings settings;
-            settings.steps = 300;
-            runScene(scene, settings);
-            hashes[workers - 1] = scene.world->stateHash();
+    // result is merged in a fixed order: the state is bit-identical for any worker count, with
+    // either policy for the broad phase's boxes.
+    for (const BroadPhaseBoxes boxes : {BroadPhaseBoxes::Predictive, BroadPhaseBoxes::Compact}) {
+        for (const SceneInfo& info : allScenes()) {
+            std::uint64_t hashes[2];
+            for (int workers = 1; workers <= 2; ++workers) {
+                SceneOptions options;
+                options.workerCount = workers;
+                options.broadPhaseBoxes = boxes;
+                Scene scene = buildScene(info, options);
+                RunSettings settings;
+                settings.steps = 300;
+                runScene(scene, settings);
+                hashes[workers - 1] = scene.world->stateHash();
+            }
+            EXPECT_EQ(hashes[0], hashes[1]) << info.name << " boxes " << static_cast<int>(boxes);
         }
-        EXPECT_EQ(hashes[0], hashes[1]) << info.name;
     }
 }

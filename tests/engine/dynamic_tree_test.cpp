@@ -360,3 +360,101 @@ TEST(DynamicTree, ABoxStretchedByAFastMoveShrinksOnceTheShapeSlows) {
     // Small moves inside a right-sized box are still free.
     EXPECT_FALSE(tree.moveProxy(id, translated(still, {0.02f, 0.0f}), {0.02f, 0.0f}));
 }
+
+// --- refitProxy and rebuildChanged (BroadPhaseBoxes::Compact) ----------------------------------
+
+TEST(DynamicTree, RefitMovesAndPartialRebuildsKeepTheTreeValidAndQueriesExact) {
+    for (std::uint32_t seed : {5u, 6u, 7u}) {
+        std::mt19937 rng(seed);
+        std::uniform_int_distribution<int> action(0, 19);
+        std::uniform_real_distribution<float> step(-1.0f, 1.0f);
+        DynamicTree tree;
+        std::vector<std::int32_t> live;
+        std::vector<AABB> tight;
+        int moved = 0;
+        for (int op = 0; op < 3000; ++op) {
+            const int a = action(rng);
+            if (live.empty() || a < 4) {
+                const AABB box = randomBox(rng, 40.0f, 2.0f);
+                live.push_back(tree.createProxy(box, op));
+                tight.push_back(box);
+            } else if (a < 6) {
+                std::uniform_int_distribution<std::size_t> pick(0, live.size() - 1);
+                const std::size_t i = pick(rng);
+                tree.destroyProxy(live[i]);
+                live.erase(live.begin() + static_cast<std::ptrdiff_t>(i));
+                tight.erase(tight.begin() + static_cast<std::ptrdiff_t>(i));
+            } else if (a == 6) {
+                tree.rebuildChanged();
+            } else {
+                std::uniform_int_distribution<std::size_t> pick(0, live.size() - 1);
+                const std::size_t i = pick(rng);
+                const float scale = a >= 17 ? 20.0f : 0.3f;
+                tight[i] = translated(tight[i], {scale * step(rng), scale * step(rng)});
+                if (tree.refitProxy(live[i], tight[i])) ++moved;
+                ASSERT_TRUE(contains(tree.fatBox(live[i]), tight[i]));
+            }
+            // Creations and destructions between refits and rebuilds (their rotations too) must
+            // keep the marks a subtree at the top, which isValid checks.
+            ASSERT_TRUE(tree.isValid()) << "seed " << seed << " op " << op;
+        }
+        EXPECT_GT(moved, 300) << "seed " << seed;
+        std::size_t hits = 0;
+        for (int q = 0; q < 200; ++q) {
+            const AABB box = randomBox(rng, 45.0f, q % 10 == 0 ? 20.0f : 4.0f);
+            std::vector<std::int32_t> found = queryIds(tree, box);
+            std::vector<std::int32_t> expected = bruteForceIds(tree, live, box);
+            std::sort(found.begin(), found.end());
+            std::sort(expected.begin(), expected.end());
+            ASSERT_EQ(found, expected) << "seed " << seed << " query " << q;
+            hits += found.size();
+        }
+        EXPECT_GT(hits, 200u);
+    }
+}
+
+TEST(DynamicTree, ARebuildRegroupsLeavesThatTravelled) {
+    std::mt19937 rng(3);
+    DynamicTree tree;
+    std::vector<std::int32_t> ids;
+    std::vector<AABB> tight;
+    for (int i = 0; i < 500; ++i) {
+        tight.push_back(randomBox(rng, 50.0f, 0.5f));
+        ids.push_back(tree.createProxy(tight.back(), i));
+    }
+    const float settled = tree.cost();
+    // Every leaf jumps somewhere else: refitted in place, the groups now span the whole world.
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        tight[i] = randomBox(rng, 50.0f, 0.5f);
+        ASSERT_TRUE(tree.refitProxy(ids[i], tight[i]));
+    }
+    const float scattered = tree.cost();
+    EXPECT_GT(scattered, 5.0f * settled);
+    tree.rebuildChanged();
+    ASSERT_TRUE(tree.isValid());
+    EXPECT_LT(tree.cost(), 1.5f * settled);
+    EXPECT_LE(tree.height(), 3 * heightBound(500));
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        EXPECT_TRUE(contains(tree.fatBox(ids[i]), tight[i]));
+}
+
+TEST(DynamicTree, ALeafMovingInsideItsGroupsBoxLeavesTheTreeAsItWas) {
+    DynamicTree tree;
+    // Two leaves far apart: their parent's box spans the gap, so the first can move about in
+    // it without growing anything.
+    const AABB a = boxAt({0, 0}, {0.5f, 0.5f});
+    const std::int32_t first = tree.createProxy(a, 1);
+    tree.createProxy(boxAt({10, 0}, {0.5f, 0.5f}), 2);
+    const float before = tree.cost();
+    ASSERT_TRUE(tree.refitProxy(first, translated(a, {5.0f, 0.0f})));
+    tree.rebuildChanged();
+    EXPECT_EQ(tree.cost(), before);  // the parent's box was not refitted to its children
+    // Moving beyond the group grows the parent (to x = 20.6) and marks it; the rebuild fits it
+    // to its children again (from x = 9.4).
+    ASSERT_TRUE(tree.refitProxy(first, translated(a, {20.0f, 0.0f})));
+    EXPECT_GT(tree.cost(), before);
+    tree.rebuildChanged();
+    EXPECT_TRUE(tree.isValid());
+    const float m = kAabbMargin;
+    EXPECT_FLOAT_EQ(tree.cost(), perimeter(boxAt({15.0f, 0.0f}, {5.5f + m, 0.5f + m})));
+}

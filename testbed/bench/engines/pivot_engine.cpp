@@ -38,6 +38,7 @@ public:
         def.contactCorrection = setup.contacts;
         def.substepCount = setup.substeps;
         def.workerCount = settings.threads;
+        if (settings.compactBoxes) def.broadPhaseBoxes = BroadPhaseBoxes::Compact;
         world_ = std::make_unique<World>(def);
     }
 
