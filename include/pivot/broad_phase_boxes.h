@@ -14,8 +14,9 @@ enum class BroadPhaseBoxes : std::uint8_t {
     /// Box2D v3's: the swept box fattened by kAabbMargin only. Fast shapes pair with far fewer
     /// shapes they never touch (Box2D v3's spinner, tumbler and smash scenes keep 42%, 66% and
     /// 52% of the contacts Predictive makes), and moving many shapes costs one partial rebuild
-    /// of the tree instead of a re-insertion each. Continuous collision is unchanged: the box
-    /// still covers the whole step's sweep.
+    /// of the tree instead of a re-insertion each. Static bodies' shapes are kept in a tree of
+    /// their own, which moving shapes query beside theirs. Continuous collision is unchanged:
+    /// the box still covers the whole step's sweep.
     Compact,
 };
 

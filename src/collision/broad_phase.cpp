@@ -2,16 +2,39 @@
 // updatePairs.
 #include "collision/broad_phase.h"
 
+#include <cassert>
+#include <string>
+
 namespace pivot {
 
 namespace {
 constexpr int kBroadPhaseBoxesCount = 2;
 }  // namespace
 
-std::int32_t BroadPhase::createProxy(const AABB& tightBox, std::int32_t userData) {
-    const std::int32_t proxyId = tree_.createProxy(tightBox, userData);
+std::int32_t BroadPhase::createProxy(const AABB& tightBox, std::int32_t userData,
+                                     bool onStaticBody) {
+    const bool inStaticTree = onStaticBody && boxes_ == BroadPhaseBoxes::Compact;
+    DynamicTree& tree = inStaticTree ? static_ : moving_;
+    const std::int32_t node = tree.createProxy(tightBox, userData);
+    // 2^30 nodes would take 40 GiB of tree before the tag could clash.
+    assert(node < kStaticTag);
+    const std::int32_t proxyId = inStaticTree ? node | kStaticTag : node;
     moveBuffer_.push_back(proxyId);
     return proxyId;
+}
+
+std::int32_t BroadPhase::setOnStaticBody(std::int32_t proxyId, const AABB& tightBox,
+                                         bool onStaticBody) {
+    const bool inStaticTree = (proxyId & kStaticTag) != 0;
+    if (inStaticTree == (onStaticBody && boxes_ == BroadPhaseBoxes::Compact)) return proxyId;
+    const std::int32_t data = userData(proxyId);
+    destroyProxy(proxyId);
+    return createProxy(tightBox, data, onStaticBody);
+}
+
+void BroadPhase::setBoxes(BroadPhaseBoxes boxes) {
+    assert(proxyCount() == 0);
+    boxes_ = boxes;
 }
 
 void BroadPhase::destroyProxy(std::int32_t proxyId) {
@@ -20,13 +43,14 @@ void BroadPhase::destroyProxy(std::int32_t proxyId) {
     for (std::int32_t& buffered : moveBuffer_) {
         if (buffered == proxyId) buffered = kNullProxy;
     }
-    tree_.destroyProxy(proxyId);
+    treeOf(proxyId).destroyProxy(nodeOf(proxyId));
 }
 
 void BroadPhase::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) {
+    DynamicTree& tree = treeOf(proxyId);
     const bool moved = boxes_ == BroadPhaseBoxes::Compact
-                           ? tree_.refitProxy(proxyId, tightBox)
-                           : tree_.moveProxy(proxyId, tightBox, displacement);
+                           ? tree.refitProxy(nodeOf(proxyId), tightBox)
+                           : tree.moveProxy(nodeOf(proxyId), tightBox, displacement);
     if (moved) moveBuffer_.push_back(proxyId);
 }
 
@@ -35,47 +59,56 @@ void BroadPhase::touchProxy(std::int32_t proxyId) {
 }
 
 bool BroadPhase::testOverlap(std::int32_t proxyA, std::int32_t proxyB) const {
-    return overlaps(tree_.fatBox(proxyA), tree_.fatBox(proxyB));
+    return overlaps(fatBox(proxyA), fatBox(proxyB));
 }
 
-const AABB& BroadPhase::fatBox(std::int32_t proxyId) const {
-    return tree_.fatBox(proxyId);
+bool BroadPhase::isProxy(std::int32_t proxyId) const {
+    if (proxyId < 0) return false;
+    const DynamicTree& tree = treeOf(proxyId);
+    const std::int32_t node = nodeOf(proxyId);
+    return node < tree.idBound() && tree.isLeafInUse(node);
 }
 
-std::int32_t BroadPhase::userData(std::int32_t proxyId) const {
-    return tree_.userData(proxyId);
+bool BroadPhase::isValid() const {
+    return moving_.isValid() && static_.isValid() &&
+           (boxes_ == BroadPhaseBoxes::Compact || static_.proxyCount() == 0);
+}
+
+void BroadPhase::rebuildChanged() {
+    moving_.rebuildChanged();
+    static_.rebuildChanged();  // only after a static body was moved by hand
 }
 
 void BroadPhase::markBuffered(std::uint8_t value) {
-    if (buffered_.size() < static_cast<std::size_t>(tree_.idBound())) {
-        buffered_.resize(static_cast<std::size_t>(tree_.idBound()), 0);
+    if (buffered_.size() < static_cast<std::size_t>(moving_.idBound())) {
+        buffered_.resize(static_cast<std::size_t>(moving_.idBound()), 0);
     }
     for (const std::int32_t proxy : moveBuffer_) {
-        if (proxy != kNullProxy) buffered_[proxy] = value;
+        if (proxy != kNullProxy && !(proxy & kStaticTag)) buffered_[proxy] = value;
     }
 }
 
+// The static tree is written only under Compact, so Predictive's snapshots hold what they did
+// when there was one tree.
 void BroadPhase::save(SnapshotWriter& out) const {
     out.enumValue(boxes_, kBroadPhaseBoxesCount);
-    tree_.save(out);
+    moving_.save(out);
+    if (boxes_ == BroadPhaseBoxes::Compact) static_.save(out);
     out.sequence(moveBuffer_, [&](std::int32_t proxy) { out.value(proxy); });
 }
 
 void BroadPhase::load(SnapshotReader& in) {
     in.enumValue(boxes_, kBroadPhaseBoxesCount);
-    tree_.load(in);
+    moving_.load(in);
+    static_ = DynamicTree{};
+    if (boxes_ == BroadPhaseBoxes::Compact) static_.load(in);
     in.sequence(moveBuffer_, [&](std::int32_t& proxy) { in.value(proxy); });
     for (const std::int32_t proxy : moveBuffer_) {
-        if (proxy != kNullProxy &&
-            (proxy < 0 || proxy >= tree_.idBound() || !tree_.isLeafInUse(proxy))) {
+        if (proxy != kNullProxy && !isProxy(proxy)) {
             in.corrupt("the broad phase's buffer names proxy " + std::to_string(proxy));
         }
     }
-    buffered_.assign(static_cast<std::size_t>(tree_.idBound()), 0);
-}
-
-const DynamicTree& BroadPhase::tree() const {
-    return tree_;
+    buffered_.assign(static_cast<std::size_t>(moving_.idBound()), 0);
 }
 
 }  // namespace pivot

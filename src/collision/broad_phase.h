@@ -1,14 +1,18 @@
-// The broad phase: which shapes might touch. Keeps a DynamicTree of every shape's fat box and a
+// The broad phase: which shapes might touch. Keeps DynamicTrees of every shape's fat box and a
 // buffer of proxies that moved (or were created) since the last update; updatePairs reports
 // each overlapping pair that involves at least one of them.
 //
-// Two policies for the boxes (pivot::BroadPhaseBoxes). Predictive, Box2D 2.4.1's: a proxy that
+// Two policies (pivot::BroadPhaseBoxes). Predictive, Box2D 2.4.1's: one tree; a proxy that
 // leaves its box gets one stretched ahead by its displacement and is re-inserted where the
 // tree's heuristic says. Compact, Box2D v3's: the box is only fattened by the margin, and a
 // proxy that leaves it is refitted where it sits; the part of the tree that grew is rebuilt
 // just before the next updatePairs queries it. Fast shapes pair with far less than they will
 // ever touch under Compact, and moving many proxies costs one partial rebuild instead of as
-// many re-insertions (or none, while nothing that moved looks for pairs).
+// many re-insertions (or none, while nothing that moved looks for pairs). Compact also keeps
+// static bodies' proxies in a tree of their own, which moving proxies query beside theirs:
+// the moving tree stays small and is rebuilt without them, and two static proxies are never
+// paired (static bodies never touch). Predictive keeps one tree so that proxy ids, and with
+// them the order pairs are reported in, stay Box2D 2.4.1's.
 #pragma once
 
 #include <algorithm>
@@ -23,12 +27,18 @@ namespace pivot {
 
 class BroadPhase {
 public:
-    std::int32_t createProxy(const AABB& tightBox, std::int32_t userData);
+    /// `onStaticBody`: the shape's body is static (under Compact its proxy goes to the static
+    /// tree; its id then has kStaticTag set).
+    std::int32_t createProxy(const AABB& tightBox, std::int32_t userData,
+                             bool onStaticBody = false);
     /// Also forgets the proxy if it is buffered, so it is never reported after this call.
     void destroyProxy(std::int32_t proxyId);
-    /// The policy for boxes from now on (a new broad phase is Predictive). Boxes already in the
-    /// tree stay as they are until their proxies next move.
-    void setBoxes(BroadPhaseBoxes boxes) { boxes_ = boxes; }
+    /// For a body whose type changed: returns the proxy's id from now on, which is new (and
+    /// buffered, with a box fattened from `tightBox`) when the proxy has to change trees.
+    std::int32_t setOnStaticBody(std::int32_t proxyId, const AABB& tightBox, bool onStaticBody);
+    /// The policy (a new broad phase is Predictive). Only while there are no proxies: the
+    /// policy decides which tree each goes to.
+    void setBoxes(BroadPhaseBoxes boxes);
     BroadPhaseBoxes boxes() const { return boxes_; }
 
     /// DynamicTree::moveProxy (Predictive) or refitProxy (Compact, which ignores the
@@ -37,8 +47,8 @@ public:
     /// Whether moveProxy would give the proxy a new box (and so buffer it). Read-only:
     /// thread-safe.
     bool needsMove(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) const {
-        return tree_.needsMove(
-            proxyId, tightBox,
+        return treeOf(proxyId).needsMove(
+            nodeOf(proxyId), tightBox,
             boxes_ == BroadPhaseBoxes::Compact ? Vec2{0.0f, 0.0f} : displacement);
     }
     /// Buffers a proxy so its pairs are reported again at the next updatePairs (for example
@@ -46,9 +56,38 @@ public:
     void touchProxy(std::int32_t proxyId);
 
     bool testOverlap(std::int32_t proxyA, std::int32_t proxyB) const;
-    const AABB& fatBox(std::int32_t proxyId) const;
-    std::int32_t userData(std::int32_t proxyId) const;
-    const DynamicTree& tree() const;
+    const AABB& fatBox(std::int32_t proxyId) const {
+        return treeOf(proxyId).fatBox(nodeOf(proxyId));
+    }
+    std::int32_t userData(std::int32_t proxyId) const {
+        return treeOf(proxyId).userData(nodeOf(proxyId));
+    }
+
+    /// DynamicTree::query over every tree (the static one after the moving one): `visit`
+    /// gets proxy ids and returns false to stop.
+    template <typename Visit>
+    void query(const AABB& box, Visit&& visit) const;
+    /// DynamicTree::rayCast over every tree, the fraction one tree's visits shortened the
+    /// segment to carried into the next.
+    template <typename Visit>
+    void rayCast(Vec2 origin, Vec2 translation, float maxFraction, Visit&& visit) const;
+
+    /// Set in the ids of proxies in the static tree (never under Predictive).
+    static constexpr std::int32_t kStaticTag = std::int32_t{1} << 30;
+    /// Whether `proxyId` names a live proxy (any int is accepted: for restoring snapshots).
+    bool isProxy(std::int32_t proxyId) const;
+    /// A dense index for a live proxy, below indexBound(): for tables of proxies.
+    std::size_t indexOf(std::int32_t proxyId) const {
+        return static_cast<std::size_t>(nodeOf(proxyId)) +
+               ((proxyId & kStaticTag) ? static_cast<std::size_t>(moving_.idBound()) : 0);
+    }
+    std::size_t indexBound() const {
+        return static_cast<std::size_t>(moving_.idBound()) +
+               static_cast<std::size_t>(static_.idBound());
+    }
+    int proxyCount() const { return moving_.proxyCount() + static_.proxyCount(); }
+    /// DynamicTree::isValid of both trees, and no static proxies under Predictive.
+    bool isValid() const;
 
     /// Snapshots: the policy, the tree and the proxies buffered for the next update, in their
     /// order. load refuses a buffer naming anything but live proxies (or the mark of a
@@ -83,31 +122,82 @@ private:
         std::int32_t upper;
     };
 
-    DynamicTree tree_;
+    DynamicTree moving_;  // every proxy under Predictive
+    DynamicTree static_;  // static bodies' proxies under Compact
     BroadPhaseBoxes boxes_ = BroadPhaseBoxes::Predictive;
     // Buffered proxy ids in the order they were buffered; destroyed ones are overwritten with
     // kNullProxy rather than erased, which keeps destroyProxy from shifting the rest.
     std::vector<std::int32_t> moveBuffer_;
-    // Marks of the buffered proxies during updatePairs: a pair of two buffered proxies is taken
-    // only from the query of the larger id, so it is collected once instead of twice.
+    // Marks of the buffered moving proxies (by node) during updatePairs: a pair of two of them
+    // is taken only from the query of the larger id, so it is collected once instead of twice.
     std::vector<std::uint8_t> buffered_;
     // Kept between calls for its capacity: updatePairs allocates nothing once it has grown.
     std::vector<ProxyPair> pairBuffer_;
     std::vector<std::vector<ProxyPair>> workerPairs_;  // one per worker of the pool
 
+    const DynamicTree& treeOf(std::int32_t proxyId) const {
+        return (proxyId & kStaticTag) ? static_ : moving_;
+    }
+    DynamicTree& treeOf(std::int32_t proxyId) { return (proxyId & kStaticTag) ? static_ : moving_; }
+    static std::int32_t nodeOf(std::int32_t proxyId) { return proxyId & ~kStaticTag; }
+
     template <typename Emit>
     void queryMoved(std::int32_t queryProxy, Emit&& emit) const;
+    void rebuildChanged();
     template <typename AddPair>
     void reportSortedPairs(AddPair&& addPair);
     void markBuffered(std::uint8_t value);
 };
 
+template <typename Visit>
+void BroadPhase::query(const AABB& box, Visit&& visit) const {
+    bool stopped = false;
+    moving_.query(box, [&](std::int32_t node) {
+        stopped = !visit(node);
+        return !stopped;
+    });
+    if (stopped) return;
+    static_.query(box, [&](std::int32_t node) { return visit(node | kStaticTag); });
+}
+
+template <typename Visit>
+void BroadPhase::rayCast(Vec2 origin, Vec2 translation, float maxFraction, Visit&& visit) const {
+    bool stopped = false;
+    moving_.rayCast(origin, translation, maxFraction, [&](std::int32_t node, float fraction) {
+        const float next = visit(node, fraction);
+        if (!(next > 0.0f)) {
+            stopped = true;
+        } else if (next < maxFraction) {
+            maxFraction = next;
+        }
+        return next;
+    });
+    if (stopped) return;
+    static_.rayCast(origin, translation, maxFraction, [&](std::int32_t node, float fraction) {
+        return visit(node | kStaticTag, fraction);
+    });
+}
+
 template <typename Emit>
 void BroadPhase::queryMoved(std::int32_t queryProxy, Emit&& emit) const {
-    tree_.query(tree_.fatBox(queryProxy), [&](std::int32_t otherProxy) {
+    const AABB& box = fatBox(queryProxy);
+    if (queryProxy & kStaticTag) {
+        // A static proxy meets only moving ones, whose ids are all smaller.
+        moving_.query(box, [&](std::int32_t other) {
+            emit(ProxyPair{other, queryProxy});
+            return true;
+        });
+        return;
+    }
+    moving_.query(box, [&](std::int32_t otherProxy) {
         if (otherProxy == queryProxy) return true;
         if (buffered_[otherProxy] && otherProxy > queryProxy) return true;  // its own query
         emit(ProxyPair{std::min(queryProxy, otherProxy), std::max(queryProxy, otherProxy)});
+        return true;
+    });
+    // A buffered static proxy finds the pair too: the copies are merged when sorted.
+    static_.query(box, [&](std::int32_t other) {
+        emit(ProxyPair{queryProxy, other | kStaticTag});
         return true;
     });
 }
@@ -126,14 +216,14 @@ void BroadPhase::reportSortedPairs(AddPair&& addPair) {
             pair.upper == pairBuffer_[i - 1].upper) {
             continue;
         }
-        addPair(tree_.userData(pair.lower), tree_.userData(pair.upper));
+        addPair(userData(pair.lower), userData(pair.upper));
     }
 }
 
 template <typename AddPair>
 void BroadPhase::updatePairs(AddPair&& addPair) {
     pairBuffer_.clear();
-    if (!moveBuffer_.empty()) tree_.rebuildChanged();
+    if (!moveBuffer_.empty()) rebuildChanged();
     markBuffered(1);
     for (const std::int32_t queryProxy : moveBuffer_) {
         if (queryProxy == kNullProxy) continue;
@@ -152,23 +242,23 @@ void BroadPhase::updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayP
     // A tree refitted around moved proxies answers right but slowly: it is rebuilt when it is
     // about to be searched (a grid of shapes that never look for pairs never pays for it).
     const bool anyQuery = std::any_of(moveBuffer_.begin(), moveBuffer_.end(), [&](std::int32_t p) {
-        return p != kNullProxy && mayQuery(tree_.userData(p));
+        return p != kNullProxy && mayQuery(userData(p));
     });
-    if (anyQuery) tree_.rebuildChanged();
+    if (anyQuery) rebuildChanged();
     markBuffered(1);
-    pool.parallelFor(
-        static_cast<int>(moveBuffer_.size()), 256, [&](int begin, int end, int worker) {
-            std::vector<ProxyPair>& pairs = workerPairs_[worker];
-            for (int i = begin; i < end; ++i) {
-                const std::int32_t proxy = moveBuffer_[i];
-                if (proxy == kNullProxy || !mayQuery(tree_.userData(proxy))) continue;
-                queryMoved(proxy, [&](ProxyPair pair) {
-                    if (mayPair(tree_.userData(pair.lower), tree_.userData(pair.upper))) {
-                        pairs.push_back(pair);
-                    }
-                });
-            }
-        });
+    pool.parallelFor(static_cast<int>(moveBuffer_.size()), 256,
+                     [&](int begin, int end, int worker) {
+                         std::vector<ProxyPair>& pairs = workerPairs_[worker];
+                         for (int i = begin; i < end; ++i) {
+                             const std::int32_t proxy = moveBuffer_[i];
+                             if (proxy == kNullProxy || !mayQuery(userData(proxy))) continue;
+                             queryMoved(proxy, [&](ProxyPair pair) {
+                                 if (mayPair(userData(pair.lower), userData(pair.upper))) {
+                                     pairs.push_back(pair);
+                                 }
+                             });
+                         }
+                     });
     markBuffered(0);
     moveBuffer_.clear();
     pairBuffer_.clear();

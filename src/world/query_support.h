@@ -75,7 +75,7 @@ void forEachCandidate(const World::Impl& w, const AABB& box, const QueryFilter& 
                       Visit&& visit) {
     QueryScope scope(w);
     const BroadPhase& broadPhase = w.contactManager.broadPhase();
-    broadPhase.tree().query(box, [&](std::int32_t proxy) {
+    broadPhase.query(box, [&](std::int32_t proxy) {
         const std::int32_t index = broadPhase.userData(proxy);
         const Shape& shape = w.shapes[index];
         return !sees(filter, shape) || visit(index, shape);

@@ -120,6 +120,12 @@ void World::setBodyType(BodyId id, BodyType type) {
     }
     body.sleepTime = 0.0f;
     body.awake = true;
+    // Under BroadPhaseBoxes::Compact static bodies' proxies live in a tree of their own.
+    for (std::int32_t s = body.shapeList; s != -1; s = w.shapes[s].next) {
+        Shape& shape = w.shapes[s];
+        shape.proxyId = w.contactManager.broadPhase().setOnStaticBody(shape.proxyId, shape.box,
+                                                                      type == BodyType::Static);
+    }
     // Contacts that became static-static or kinematic-static go at the next step's contact
     // update; pairs that were not allowed to collide before are found then.
     w.contactManager.refilterBody(index);

@@ -79,19 +79,18 @@ void castRayNamed(const char* call, const World::Impl& w, Vec2 origin, Vec2 tran
     if (!(lengthSquared(translation) > 0.0f)) return;
     QueryScope scope(w);
     const BroadPhase& broadPhase = w.contactManager.broadPhase();
-    broadPhase.tree().rayCast(
-        origin, translation, 1.0f, [&](std::int32_t proxy, float maxFraction) {
-            const std::int32_t index = broadPhase.userData(proxy);
-            const Shape& shape = w.shapes[index];
-            if (!sees(filter, shape)) return maxFraction;
-            const std::optional<RayEntry> entry =
-                castOnShape(shape, w.bodies[shape.body].xf, origin, translation, maxFraction);
-            if (!entry) return maxFraction;
-            const float answer =
-                callback(RayHit{w.shapeId(index), entry->point, entry->normal, entry->fraction});
-            if (answer < 0.0f) return maxFraction;  // ignore this shape
-            return answer;  // 0 or NaN stops; the tree keeps the smaller of the two fractions
-        });
+    broadPhase.rayCast(origin, translation, 1.0f, [&](std::int32_t proxy, float maxFraction) {
+        const std::int32_t index = broadPhase.userData(proxy);
+        const Shape& shape = w.shapes[index];
+        if (!sees(filter, shape)) return maxFraction;
+        const std::optional<RayEntry> entry =
+            castOnShape(shape, w.bodies[shape.body].xf, origin, translation, maxFraction);
+        if (!entry) return maxFraction;
+        const float answer =
+            callback(RayHit{w.shapeId(index), entry->point, entry->normal, entry->fraction});
+        if (answer < 0.0f) return maxFraction;  // ignore this shape
+        return answer;  // 0 or NaN stops; the tree keeps the smaller of the two fractions
+    });
 }
 
 }  // namespace

@@ -41,7 +41,8 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
     ++body.shapeCount;
     updateBodyMass(body, w.shapes);
     w.shapes[index].box = computeShapeBox(w.shapes[index], body.xf);
-    w.shapes[index].proxyId = w.contactManager.broadPhase().createProxy(w.shapes[index].box, index);
+    w.shapes[index].proxyId = w.contactManager.broadPhase().createProxy(
+        w.shapes[index].box, index, body.type == BodyType::Static);
     w.contactManager.markNewShapes();
     // A sleeping body stays asleep, as Box2D's do: a body made asleep (BodyDef::isAwake false)
     // is given its shapes and sleeps on until something wakes it.

@@ -26,7 +26,7 @@ namespace pivot {
 namespace {
 
 constexpr std::uint8_t kMagic[8] = {'P', 'I', 'V', 'O', 'T', '2', 'D', 'S'};
-constexpr std::uint32_t kFormatVersion = 2;
+constexpr std::uint32_t kFormatVersion = 3;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8;
 constexpr std::size_t kChecksumSize = 8;
 constexpr int kBodyTypes = 3;
@@ -473,9 +473,8 @@ void checkContactOrder(SnapshotReader& in, const WorldState& w, std::int32_t hea
 void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broadPhase,
                 std::uint64_t contactsMade) {
     if (w.substepCount < 1 || w.substepCount > kMaxSubsteps) in.corrupt("the substep count");
-    const DynamicTree& tree = broadPhase.tree();
     std::vector<std::uint8_t> shapeSeen(static_cast<std::size_t>(w.shapes.capacity()), 0);
-    std::vector<std::uint8_t> proxySeen(static_cast<std::size_t>(tree.idBound()), 0);
+    std::vector<std::uint8_t> proxySeen(broadPhase.indexBound(), 0);
     std::vector<std::uint8_t> jointEdges(2 * static_cast<std::size_t>(w.joints.capacity()), 0);
     std::vector<std::uint8_t> contactEdges(2 * static_cast<std::size_t>(w.contacts.capacity()), 0);
     std::vector<std::uint8_t> mouseSeen(static_cast<std::size_t>(w.mouseJoints.capacity()), 0);
@@ -507,14 +506,20 @@ void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broad
     w.shapes.forEach([&](std::int32_t s, const Shape& shape) {
         if (!shapeSeen[static_cast<std::size_t>(s)]) in.corrupt("a shape is on no body's list");
         const std::int32_t proxy = shape.proxyId;
-        if (proxy < 0 || proxy >= tree.idBound() || !tree.isLeafInUse(proxy) ||
-            tree.userData(proxy) != s || proxySeen[static_cast<std::size_t>(proxy)]) {
+        if (!broadPhase.isProxy(proxy) || broadPhase.userData(proxy) != s ||
+            proxySeen[broadPhase.indexOf(proxy)]) {
             in.corrupt("a shape's broad-phase proxy is wrong");
         }
-        proxySeen[static_cast<std::size_t>(proxy)] = 1;
+        // The tree a proxy is in decides whom it is paired with.
+        const bool staticTree = (proxy & BroadPhase::kStaticTag) != 0;
+        if (staticTree != (broadPhase.boxes() == BroadPhaseBoxes::Compact &&
+                           w.bodies[shape.body].type == BodyType::Static)) {
+            in.corrupt("a shape's broad-phase proxy is in the wrong tree");
+        }
+        proxySeen[broadPhase.indexOf(proxy)] = 1;
         ++proxies;
     });
-    if (proxies != tree.proxyCount()) in.corrupt("the broad phase has proxies of no shape");
+    if (proxies != broadPhase.proxyCount()) in.corrupt("the broad phase has proxies of no shape");
     auto bothEdgesSeen = [](const std::vector<std::uint8_t>& seen, std::int32_t index) {
         return seen[2 * static_cast<std::size_t>(index)] &&
                seen[2 * static_cast<std::size_t>(index) + 1];

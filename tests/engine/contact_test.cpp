@@ -354,3 +354,41 @@ TEST(ContactFiltering, AShapeThatCouldMeetNothingIsFoundOnceSomethingItMeetsAppe
     for (int i = 0; i < 120; ++i) world.step(kDt);
     EXPECT_NEAR(world.bodyPosition(box).y, 0.5f, 0.05f);
 }
+
+// Under Compact broad-phase boxes a static body's shapes sit in a tree of their own, so a body
+// whose type changes must change trees and still meet what it touches, under both policies.
+TEST(ContactBodyTypes, ABodyTurnedStaticOrDynamicKeepsMeetingWhatItTouches) {
+    for (const BroadPhaseBoxes boxes : {BroadPhaseBoxes::Predictive, BroadPhaseBoxes::Compact}) {
+        WorldDef worldDef;
+        worldDef.broadPhaseBoxes = boxes;
+        World world(worldDef);
+        addGround(world);
+        BodyDef def;
+        def.position = {0.0f, 5.0f};
+        const BodyId shelf = world.createBody(def);  // static, in the air
+        world.createShape(shelf, ShapeDef{}, Polygon::box(1.0f, 0.5f));
+        def.type = BodyType::Dynamic;
+        def.position = {0.0f, 7.0f};
+        const BodyId box = world.createBody(def);
+        world.createShape(box, ShapeDef{}, Polygon::box(0.5f, 0.5f));
+
+        for (int i = 0; i < 120; ++i) world.step(kDt);
+        EXPECT_NEAR(world.bodyPosition(box).y, 6.0f, 0.02f) << "rests on the static shelf";
+
+        world.setBodyType(shelf, BodyType::Dynamic);  // falls to the ground, carrying the box
+        for (int i = 0; i < 180; ++i) world.step(kDt);
+        EXPECT_NEAR(world.bodyPosition(shelf).y, 0.5f, 0.02f) << "meets the static ground";
+        EXPECT_NEAR(world.bodyPosition(box).y, 1.5f, 0.03f);
+
+        world.setBodyType(shelf, BodyType::Static);
+        world.setBodyTransform(box, {0.0f, 3.0f}, 0.0f);  // dropped again onto the shelf
+        for (int i = 0; i < 120; ++i) world.step(kDt);
+        // On the shelf: a fall stopped by continuous collision may rest up to the two shapes'
+        // skins (kPolygonRadius each) apart, as in Box2D.
+        const float gap = world.bodyPosition(box).y - world.bodyPosition(shelf).y - 1.0f;
+        EXPECT_GT(gap, -kLinearSlop);
+        EXPECT_LT(gap, 2.0f * kPolygonRadius);
+        // The box's; the ground's went, as two static bodies never touch.
+        EXPECT_EQ(world.bodyContacts(shelf).size(), 1u);
+    }
+}

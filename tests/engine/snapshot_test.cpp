@@ -182,8 +182,8 @@ TEST(Snapshot, RefusesWhatIsNotASnapshotAndChangesNothing) {
     EXPECT_NE(errorOf(target, {'h', 'e', 'l', 'l', 'o'}).find("not a pivot2d snapshot"),
               std::string::npos);
     std::vector<std::uint8_t> version = good;
-    version[8] = 3;
-    EXPECT_NE(errorOf(target, version).find("format version 3"), std::string::npos);
+    version[8] = 99;  // a later pivot2d's
+    EXPECT_NE(errorOf(target, version).find("format version 99"), std::string::npos);
     // Every cut is truncated.
     for (std::size_t size = 8; size < good.size(); size += 1 + size / 64) {
         const std::vector<std::uint8_t> cut(good.begin(), good.begin() + size);
