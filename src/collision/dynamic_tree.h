@@ -8,13 +8,55 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "collision/aabb.h"
 #include "collision/ray_cast.h"
 #include "core/snapshot_io.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace pivot {
+
+/// overlaps(node, box) for one query box and many nodes, without a branch per side: whether a
+/// node is entered is a coin toss to the branch predictor, so a query pays one misprediction
+/// per node at most instead of up to four. For finite boxes (the tree's) the answers are
+/// overlaps'.
+class OverlapTest {
+public:
+#if defined(__SSE2__)
+    // A node overlaps when lower <= box.upper and upper >= box.lower, side by side.
+    explicit OverlapTest(const AABB& box)
+        : upperBound_(_mm_setr_ps(box.upper.x, box.upper.y, kInf, kInf)),
+          lowerBound_(_mm_setr_ps(-kInf, -kInf, box.lower.x, box.lower.y)) {}
+#else
+    explicit OverlapTest(const AABB& box) : box_(box) {}
+#endif
+    bool operator()(const AABB& node) const {
+#if defined(__SSE2__)
+        static_assert(sizeof(AABB) == 4 * sizeof(float), "lower.x, lower.y, upper.x, upper.y");
+        const __m128 corners = _mm_loadu_ps(&node.lower.x);
+        const __m128 inside =
+            _mm_and_ps(_mm_cmple_ps(corners, upperBound_), _mm_cmpge_ps(corners, lowerBound_));
+        return _mm_movemask_ps(inside) == 0xF;
+#else
+        return (node.lower.x <= box_.upper.x) & (node.lower.y <= box_.upper.y) &
+               (box_.lower.x <= node.upper.x) & (box_.lower.y <= node.upper.y);
+#endif
+    }
+
+private:
+#if defined(__SSE2__)
+    static constexpr float kInf = std::numeric_limits<float>::infinity();
+    __m128 upperBound_;
+    __m128 lowerBound_;
+#else
+    AABB box_;
+#endif
+};
 
 /// A LIFO stack whose first N entries live inline (no allocation); it spills onto the heap
 /// only beyond that, so deep traversals stay correct while the usual ones never allocate.
@@ -192,12 +234,13 @@ private:
 template <typename Visit>
 void DynamicTree::query(const AABB& box, Visit&& visit) const {
     if (root_ == kNullNode) return;
+    const OverlapTest overlapsBox(box);
     InlineStack<std::int32_t, kQueryStackSize> stack;
     stack.push(root_);
     while (!stack.empty()) {
         const std::int32_t nodeId = stack.pop();
         const Node& node = nodes_[nodeId];
-        if (!overlaps(node.box, box)) continue;
+        if (!overlapsBox(node.box)) continue;
         if (node.isLeaf()) {
             if (!visit(nodeId)) return;
         } else {
