@@ -1,5 +1,5 @@
-// The broad phase's bookkeeping around its tree: which proxies to re-examine at the next
-// updatePairs.
+// The broad phase's bookkeeping around its trees: which tree a proxy lives in, and which
+// proxies to re-examine at the next updatePairs.
 #include "collision/broad_phase.h"
 
 #include <cassert>

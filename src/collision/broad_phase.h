@@ -89,7 +89,7 @@ public:
     /// DynamicTree::isValid of both trees, and no static proxies under Predictive.
     bool isValid() const;
 
-    /// Snapshots: the policy, the tree and the proxies buffered for the next update, in their
+    /// Snapshots: the policy, the trees and the proxies buffered for the next update, in their
     /// order. load refuses a buffer naming anything but live proxies (or the mark of a
     /// destroyed one).
     void save(SnapshotWriter& out) const;
