@@ -185,9 +185,9 @@ MeasuredPoint measure(const ContactPositionConstraint& pc, const Transform& xfA,
 }
 
 // Contacts come to prepare in colour order, scattered over the pool, and each leads to two
-// bodies and two shapes elsewhere again: the contact this far ahead is fetched, and the bodies
-// and shapes of the one half as far ahead (whose contact has arrived by then), so the misses
-// overlap instead of following one another.
+// bodies elsewhere again: the contact this far ahead is fetched, and the bodies of the one half
+// as far ahead (whose contact has arrived by then), so the misses overlap instead of following
+// one another.
 constexpr int kContactsAhead = 16;
 constexpr int kPartsAhead = kContactsAhead / 2;
 
@@ -197,15 +197,10 @@ void prefetchContact(const Contact& contact) {
 
 // Only the lines prepare reads: a line fetched for nothing takes one of the few slots the core
 // has for loads in flight.
-void prefetchParts(const Contact& contact, const SlotPool<Body>& bodies,
-                   const SlotPool<Shape>& shapes) {
+void prefetchBodies(const Contact& contact, const SlotPool<Body>& bodies) {
     for (const Body* body : {&bodies[contact.bodyA()], &bodies[contact.bodyB()]}) {
         prefetch(&body->localCenter);
         prefetch(&body->invInertia);
-    }
-    for (const Shape* shape : {&shapes[contact.shapeA], &shapes[contact.shapeB]}) {
-        prefetch(&shape->circle.radius);  // with the type
-        prefetch(&shape->polygon.radius);
     }
 }
 
@@ -253,17 +248,43 @@ void writeTile(ContactTile& tile, int lane, const ContactVelocityConstraint& c) 
     }
 }
 
+// The inverse of writeTile.
+void readTile(const ContactTile& tile, int lane, ContactVelocityConstraint& c) {
+    using T = ContactTile;
+    c.normal = {tile.lanes(T::kNormalX)[lane], tile.lanes(T::kNormalY)[lane]};
+    c.friction = tile.lanes(T::kFriction)[lane];
+    c.mA = tile.lanes(T::kMassA)[lane];
+    c.mB = tile.lanes(T::kMassB)[lane];
+    c.iA = tile.lanes(T::kInertiaA)[lane];
+    c.iB = tile.lanes(T::kInertiaB)[lane];
+    c.K.cx = {tile.lanes(T::kKxx)[lane], tile.lanes(T::kKxy)[lane]};
+    c.K.cy = {tile.lanes(T::kKyx)[lane], tile.lanes(T::kKyy)[lane]};
+    c.normalMass.cx = {tile.lanes(T::kMxx)[lane], tile.lanes(T::kMxy)[lane]};
+    c.normalMass.cy = {tile.lanes(T::kMyx)[lane], tile.lanes(T::kMyy)[lane]};
+    for (int j = 0; j < 2; ++j) {
+        ContactVelocityPoint& p = c.points[j];
+        p.rA = {tile.lanes(j, T::kAnchorAx)[lane], tile.lanes(j, T::kAnchorAy)[lane]};
+        p.rB = {tile.lanes(j, T::kAnchorBx)[lane], tile.lanes(j, T::kAnchorBy)[lane]};
+        p.normalMass = tile.lanes(j, T::kNormalMass)[lane];
+        p.tangentMass = tile.lanes(j, T::kTangentMass)[lane];
+        p.normalImpulse = tile.lanes(j, T::kNormalImpulse)[lane];
+        p.tangentImpulse = tile.lanes(j, T::kTangentImpulse)[lane];
+        p.velocityBias = tile.lanes(j, T::kVelocityBias)[lane];
+        p.softTarget = tile.lanes(j, T::kSoftTarget)[lane];
+        p.baseSeparation = tile.lanes(j, T::kBaseSeparation)[lane];
+    }
+    c.indexA = tile.indexA[lane];
+    c.indexB = tile.indexB[lane];
+    c.pointCount = tile.pointCount[lane];
+}
+
 }  // namespace
 
-void ContactSolver::takeImpulses(int k, ContactVelocityConstraint& c) const {
+ContactVelocityConstraint& ContactSolver::oneByOne(int k, ContactVelocityConstraint& scratch) {
     const int slot = tiles_.slot(k);
-    if (slot < 0) return;  // its impulses live in c
-    const ContactTile& tile = tiles_.tileOf(slot);
-    const int lane = slot % kContactLanes;
-    for (int j = 0; j < 2; ++j) {
-        c.points[j].normalImpulse = tile.lanes(j, ContactTile::kNormalImpulse)[lane];
-        c.points[j].tangentImpulse = tile.lanes(j, ContactTile::kTangentImpulse)[lane];
-    }
+    if (slot < 0) return velocity_[k];
+    readTile(tiles_.tileOf(slot), slot % kContactLanes, scratch);
+    return scratch;
 }
 
 void ContactSolver::putImpulses(int k, const ContactVelocityConstraint& c) {
@@ -287,6 +308,7 @@ void ContactSolver::reset(int count, const StepContext& step, const std::vector<
         pushSpeed_ = step.contactPushSpeed;
     }
     const bool ngs = step.contactCorrection == ContactCorrection::NGS;
+    resizeBuffer(records_, static_cast<std::size_t>(count));
     resizeBuffer(velocity_, static_cast<std::size_t>(count));
     tiles_.layOut(count, batches, wideSolving());
     resizeBuffer(position_, ngs ? static_cast<std::size_t>(count) : 0);
@@ -294,24 +316,28 @@ void ContactSolver::reset(int count, const StepContext& step, const std::vector<
 
 void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
                             const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
-                            const SlotPool<Shape>& shapes, const StepContext& step,
-                            const SolverPose* positions, const Rot* rotations) {
+                            const StepContext& step, const SolverPose* positions,
+                            const Rot* rotations) {
     for (int k = range.begin; k < range.end; ++k) {
         if (k + kContactsAhead < range.end) prefetchContact(pool[ids[k + kContactsAhead]]);
-        if (k + kPartsAhead < range.end) prefetchParts(pool[ids[k + kPartsAhead]], bodies, shapes);
+        if (k + kPartsAhead < range.end) prefetchBodies(pool[ids[k + kPartsAhead]], bodies);
         const std::int32_t contactIndex = ids[k];
         const Contact& contact = pool[contactIndex];
         const Manifold& manifold = contact.manifold;
         const Body& bodyA = bodies[contact.bodyA()];
         const Body& bodyB = bodies[contact.bodyB()];
 
-        // Built in place: a copy of a constraint assembled on the stack reads back, in wide
-        // loads, fields just written narrow, which stalls each store-to-load forward.
-        ContactVelocityConstraint& c = velocity_[k];
-        c = ContactVelocityConstraint{};
+        // A tiled contact's is assembled here and written field by field into its tile; an
+        // untiled one's is built in place (a copy of one assembled here would read back, in
+        // wide loads, fields just written narrow, which stalls each store-to-load forward).
+        const int slot = tiles_.slot(k);
+        ContactVelocityConstraint assembled;
+        ContactVelocityConstraint& c = slot >= 0 ? assembled : velocity_[k];
+        if (slot < 0) c = ContactVelocityConstraint{};
         c.indexA = pairs[k][0];
         c.indexB = pairs[k][1];
-        c.contactIndex = contactIndex;
+        ContactRecord& record = records_[k];
+        record = ContactRecord{contactIndex, {0.0f, 0.0f}};
         c.mA = bodyA.invMass;
         c.mB = bodyB.invMass;
         c.iA = bodyA.invInertia;
@@ -334,8 +360,8 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
         pc.localPoint = manifold.localPoint;
         pc.type = manifold.type;
         pc.pointCount = manifold.pointCount;
-        pc.radiusA = collisionRadius(shapes[contact.shapeA]);
-        pc.radiusB = collisionRadius(shapes[contact.shapeB]);
+        pc.radiusA = contact.radiusA;
+        pc.radiusB = contact.radiusB;
 
         const SolverPose& posA = positions[c.indexA];
         const SolverPose& posB = positions[c.indexB];
@@ -367,7 +393,7 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
             // gravity acts after the bounce. (Measuring after it would return the ball about
             // one step's travel higher than it fell, v * h, 5% for a 2 m drop at 60 Hz.)
             float vRel = dot(c.normal, relativeVelocity(startA, startB, p.rA, p.rB));
-            p.approachSpeed = -vRel;
+            record.approachSpeeds[j] = -vRel;
             if (vRel < -step.restitutionThreshold) p.velocityBias = -contact.restitution * vRel;
             if (baumgarte_) {
                 float push = -step.contactBiasFactor * step.invDt *
@@ -395,7 +421,6 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
                 c.pointCount = 1;
             }
         }
-        const int slot = tiles_.slot(k);
         if (slot >= 0) writeTile(tiles_.tileOf(slot), slot % kContactLanes, c);
     }
 }
@@ -409,7 +434,8 @@ void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* moti
             k += tiles_.tileAt(k).contactCount;
             continue;
         }
-        ContactVelocityConstraint& c = velocity_[k];
+        ContactVelocityConstraint scratch;
+        ContactVelocityConstraint& c = oneByOne(k, scratch);
         const SolverMotion& A = motion[c.indexA];
         const SolverMotion& B = motion[c.indexB];
         for (int j = 0; j < c.pointCount; ++j) {
@@ -432,8 +458,8 @@ void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* moti
 void ContactSolver::warmStart(IndexRange range, SolverVelocity* velocities, bool independent) {
     const int first = independent ? warmStartWide(range, velocities) : range.begin;
     for (int k = first; k < range.end; ++k) {
-        ContactVelocityConstraint& c = velocity_[k];
-        takeImpulses(k, c);
+        ContactVelocityConstraint scratch;
+        const ContactVelocityConstraint& c = oneByOne(k, scratch);
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
         Vec2 tangent = tangentOf(c.normal);
@@ -448,10 +474,10 @@ void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities
                                     bool independent) {
     const int first = independent ? solveWide(range, velocities, false) : range.begin;
     for (int k = first; k < range.end; ++k) {
-        ContactVelocityConstraint& c = velocity_[k];
+        ContactVelocityConstraint scratch;
+        ContactVelocityConstraint& c = oneByOne(k, scratch);
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
-        takeImpulses(k, c);
         // Friction first: its bound depends on the normal impulse, and penetration matters
         // more than sliding, so the normal solve gets the last word.
         solveFriction(c, A, B);
@@ -469,10 +495,10 @@ void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities
 void ContactSolver::relax(IndexRange range, SolverVelocity* velocities, bool independent) {
     const int first = independent ? solveWide(range, velocities, true) : range.begin;
     for (int k = first; k < range.end; ++k) {
-        ContactVelocityConstraint& c = velocity_[k];
+        ContactVelocityConstraint scratch;
+        ContactVelocityConstraint& c = oneByOne(k, scratch);
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
-        takeImpulses(k, c);
         solveFriction(c, A, B);
         solveNormalSoft<false>(c, A, B, softness_);
         putImpulses(k, c);
@@ -482,23 +508,27 @@ void ContactSolver::relax(IndexRange range, SolverVelocity* velocities, bool ind
 void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool,
                                   bool approachSpeeds) const {
     for (int k = range.begin; k < range.end; ++k) {
-        const ContactVelocityConstraint& c = velocity_[k];
-        Manifold& m = pool[c.contactIndex].manifold;
+        // The manifolds are scattered over the pool like the contacts prepare reads.
+        if (k + kContactsAhead < range.end) {
+            prefetch(&pool[records_[k + kContactsAhead].contactIndex].manifold, sizeof(Manifold));
+        }
+        const ContactRecord& record = records_[k];
+        Manifold& m = pool[record.contactIndex].manifold;
         if (approachSpeeds) {
             for (int j = 0; j < m.pointCount; ++j) {
-                m.points[j].approachSpeed = c.points[j].approachSpeed;
+                m.points[j].approachSpeed = record.approachSpeeds[j];
             }
         }
         const int slot = tiles_.slot(k);
-        for (int j = 0; j < c.pointCount; ++j) {
+        const ContactTile* tile = slot >= 0 ? &tiles_.tileOf(slot) : nullptr;
+        const int lane = slot % kContactLanes;
+        const int pointCount = tile ? tile->pointCount[lane] : velocity_[k].pointCount;
+        for (int j = 0; j < pointCount; ++j) {
             // A non-finite impulse is not carried into the next step's warm start.
-            float normal = c.points[j].normalImpulse;
-            float tangent = c.points[j].tangentImpulse;
-            if (slot >= 0) {
-                const ContactTile& tile = tiles_.tileOf(slot);
-                normal = tile.lanes(j, ContactTile::kNormalImpulse)[slot % kContactLanes];
-                tangent = tile.lanes(j, ContactTile::kTangentImpulse)[slot % kContactLanes];
-            }
+            const float normal = tile ? tile->lanes(j, ContactTile::kNormalImpulse)[lane]
+                                      : velocity_[k].points[j].normalImpulse;
+            const float tangent = tile ? tile->lanes(j, ContactTile::kTangentImpulse)[lane]
+                                       : velocity_[k].points[j].tangentImpulse;
             const bool finite = std::isfinite(normal) && std::isfinite(tangent);
             m.points[j].normalImpulse = finite ? normal : 0.0f;
             m.points[j].tangentImpulse = finite ? tangent : 0.0f;

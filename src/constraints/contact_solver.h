@@ -46,15 +46,14 @@ namespace pivot {
 struct ContactVelocityPoint {
     Vec2 rA;
     Vec2 rB;
-    // A tiled contact's impulses live in its tile (contact_tiles.h); these are then the one-by-
-    // one solve's working copy.
+    // A tiled contact's constraint lives in its tile (contact_tiles.h); this is then only the
+    // one-by-one paths' working copy of it.
     float normalImpulse = 0.0f;
     float tangentImpulse = 0.0f;
     float normalMass = 0.0f;
     float tangentMass = 0.0f;
     float velocityBias = 0.0f;    // restitution or Baumgarte target, m/s
     float softTarget = 0.0f;      // soft contacts: the spring's push-out speed, m/s
-    float approachSpeed = 0.0f;   // m/s, -vn at the start of the step (hit events)
     float baseSeparation = 0.0f;  // soft contacts: m, s0 - (rB - rA) . n (see above)
 };
 
@@ -65,10 +64,16 @@ struct ContactVelocityConstraint {
     Mat22 normalMass;  // its inverse
     std::int32_t indexA = 0;
     std::int32_t indexB = 0;
-    std::int32_t contactIndex = 0;
     float mA = 0.0f, mB = 0.0f, iA = 0.0f, iB = 0.0f;
     float friction = 0.0f;
     int pointCount = 0;  // 1 when a two-point manifold is too ill-conditioned to block solve
+};
+
+// What the end of the step needs of every contact, tiled or not: which contact it is, and how
+// fast its points closed at the start of the step (hit events).
+struct ContactRecord {
+    std::int32_t contactIndex = 0;
+    float approachSpeeds[2] = {0.0f, 0.0f};  // m/s, -vn
 };
 
 struct ContactPositionConstraint {
@@ -87,8 +92,10 @@ struct ContactPositionConstraint {
 };
 
 /// The contact constraints of one island, rebuilt every step into reused buffers. Contact k
-/// is constraint k of both the velocity and the position arrays; each stage works on a range
-/// of them, so a team can share it out by colour (island_schedule.h).
+/// is constraint k of the record, velocity and position arrays; each stage works on a range
+/// of them, so a team can share it out by colour (island_schedule.h). A tiled contact's
+/// velocity constraint lives only in its tile (its entry of the velocity array is left
+/// unwritten): writing both was a third of prepare's memory traffic.
 class ContactSolver {
 public:
     /// Sizes the arrays for `count` contacts, and lays out tiles for the wide sweeps over the
@@ -98,6 +105,7 @@ public:
     /// Room for `count` contacts in at most `batches` batches, so that reset does not allocate
     /// up to that many.
     void reserve(std::size_t count, std::size_t batches) {
+        records_.reserve(count);
         velocity_.reserve(count);
         tiles_.reserve(count, batches);
         position_.reserve(count);
@@ -109,8 +117,8 @@ public:
     /// rather than once per contact).
     void prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
                  const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
-                 const SlotPool<Shape>& shapes, const StepContext& step,
-                 const SolverPose* positions, const Rot* rotations = nullptr);
+                 const StepContext& step, const SolverPose* positions,
+                 const Rot* rotations = nullptr);
     /// Whether constraints are built once a step (soft contacts): later substeps call
     /// updateSeparations instead of prepare, and storeImpulses only at the last.
     bool builtOncePerStep() const { return soft_; }
@@ -139,7 +147,7 @@ public:
     float solveImpactPositions(IndexRange range, SolverPose* positions, std::int32_t movableA,
                                std::int32_t movableB, float bias) const;
     /// m/s, how fast point j of constraint k closed when prepare measured it.
-    float approachSpeed(int k, int j) const { return velocity_[k].points[j].approachSpeed; }
+    float approachSpeed(int k, int j) const { return records_[k].approachSpeeds[j]; }
     /// For tests, process-wide: off, independent batches are solved one contact at a time too,
     /// the reference the wide path must match bit for bit.
     static void setWideSolving(bool enabled);
@@ -169,8 +177,11 @@ private:
     void updateTileSeparations(int k, const SolverMotion* motion);
     /// Likewise for the warm start.
     int warmStartWide(IndexRange range, SolverVelocity* velocities) const;
-    /// A tiled contact's impulses into c (the one-by-one solve works on c), and back.
-    void takeImpulses(int k, ContactVelocityConstraint& c) const;
+    /// Contact k's velocity constraint for the one-by-one paths: its entry of the velocity
+    /// array, or, for a tiled contact (one a range's edge cut from its tile), a copy read from
+    /// its tile into `scratch`.
+    ContactVelocityConstraint& oneByOne(int k, ContactVelocityConstraint& scratch);
+    /// A tiled contact's impulses back into its tile after a one-by-one solve (none untiled).
     void putImpulses(int k, const ContactVelocityConstraint& c);
     /// Solves contacts [range.begin, returned) several at a time (a sweep's work, or with
     /// `relaxing` a relax sweep's); the caller solves the rest one by one.
@@ -190,7 +201,8 @@ private:
         return std::min(-softness_.biasRate * std::min(0.0f, separation + kLinearSlop), pushSpeed_);
     }
 
-    std::vector<ContactVelocityConstraint> velocity_;
+    std::vector<ContactRecord> records_;
+    std::vector<ContactVelocityConstraint> velocity_;  // untiled contacts' (see above)
     ContactTiles tiles_;  // the wide sweeps' constraints (home of their impulses)
     std::vector<ContactPositionConstraint> position_;
     float positionBias_ = 0.0f;

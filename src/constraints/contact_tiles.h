@@ -13,8 +13,9 @@
 // at multiples of kBatchAlignment from its start (islands/team.h), so a block's tiles always start
 // at its start, whatever the number of workers.
 //
-// A tiled contact's impulses live in its tile: every sweep, wide or one contact at a time,
-// reads and writes them there.
+// A tiled contact's constraint lives only in its tile: a sweep that solves it one contact at a
+// time (where a range's edge cuts its tile) reads a copy from there and writes its impulses
+// back.
 #pragma once
 
 #include <algorithm>

@@ -20,6 +20,10 @@ struct Contact {
     Manifold manifold;
     float friction = 0.0f;  // mixed from the two shapes when the contact is made
     float restitution = 0.0f;
+    // The shapes' collision radii (collisionRadius): a shape's geometry never changes, so they
+    // are copied here when the contact is made, and the solver's build reads no shape.
+    float radiusA = 0.0f;
+    float radiusB = 0.0f;
     bool touching = false;
     bool needsFiltering = false;  // re-check the filter before the next update
     // A sensor overlap (one shape is a sensor): "touching" means overlapping; it never reaches

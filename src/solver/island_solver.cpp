@@ -331,9 +331,9 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
         if (contactsBuilt) {
             work.contactSolver.updateSeparations(range, work.motion.data());
         } else {
-            work.contactSolver.prepare(
-                range, schedule.contactIds.data(), schedule.contactPairs.data(), storage.contacts,
-                bodies, storage.shapes, step, work.positions.data(), work.rotations.data());
+            work.contactSolver.prepare(range, schedule.contactIds.data(),
+                                       schedule.contactPairs.data(), storage.contacts, bodies, step,
+                                       work.positions.data(), work.rotations.data());
         }
     });
     prepareJoints(team, work, bodies, storage.joints, step, firstSubstep, mine);

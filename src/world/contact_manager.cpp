@@ -112,6 +112,8 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     contact.edges[1].body = shapes_[shapeB].body;
     contact.friction = mixFriction(shapes_[shapeA].friction, shapes_[shapeB].friction);
     contact.restitution = mixRestitution(shapes_[shapeA].restitution, shapes_[shapeB].restitution);
+    contact.radiusA = collisionRadius(shapes_[shapeA]);
+    contact.radiusB = collisionRadius(shapes_[shapeB]);
     contact.serial = ++contactsMade_;
     contact.sensor = a.sensor || b.sensor;
     std::int32_t index = contacts_.insert(contact);

@@ -237,9 +237,8 @@ void ContinuousSolver::buildIsland(std::int32_t contactIndex, float alpha, SlotP
     }
 }
 
-void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
-                                   const SlotPool<Contact>& contacts, const StepContext& step,
-                                   float alpha) {
+void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Contact>& contacts,
+                                   const StepContext& step, float alpha) {
     const std::size_t bodyCount = islandBodies_.size();
     const int contactCount = static_cast<int>(islandContacts_.size());
     resizeBuffer(positions_, bodyCount);
@@ -265,8 +264,8 @@ void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Shape>
     rest.contactCorrection = ContactCorrection::NGS;
     const IndexRange all{0, contactCount};
     contactSolver_.reset(contactCount, rest);
-    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts, bodies,
-                           shapes, rest, positions_.data());
+    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts, bodies, rest,
+                           positions_.data());
     // The impact's contact is the island's first: how fast it closed, before anything pushed.
     Impact impact{islandContacts_[0], 0, 0.0f};
     for (int j = 0; j < contacts[impact.contact].manifold.pointCount; ++j) {
@@ -286,8 +285,8 @@ void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Shape>
         b.angle0 = positions_[static_cast<std::size_t>(slot)].a;
     }
     // Velocity constraints at the corrected poses.
-    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts, bodies,
-                           shapes, rest, positions_.data());
+    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts, bodies, rest,
+                           positions_.data());
     for (int i = 0; i < step.velocityIterations; ++i) {
         contactSolver_.solveVelocities(all, velocities_.data());
     }
@@ -428,7 +427,7 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
         tunnelFlags_[static_cast<std::size_t>(contacts[contactIndex].bodyB())] = tunnelFlags(b);
 
         buildIsland(contactIndex, alpha, bodies, contacts, contactManager);
-        solveIsland(bodies, shapes, contacts, step, alpha);
+        solveIsland(bodies, contacts, step, alpha);
         for (const KinematicPath& path : kinematicPaths_) path.motion.restore(bodies[path.body]);
         ++impacts;
 

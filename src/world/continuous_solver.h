@@ -83,8 +83,8 @@ private:
                      SlotPool<Contact>& contacts, ContactManager& contactManager);
     /// Remembers a kinematic body's motion before an impact moves it (none for other types).
     void keepPath(std::int32_t index, const Body& body);
-    void solveIsland(SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
-                     const SlotPool<Contact>& contacts, const StepContext& step, float alpha);
+    void solveIsland(SlotPool<Body>& bodies, const SlotPool<Contact>& contacts,
+                     const StepContext& step, float alpha);
 
     std::vector<std::int32_t> unknown_;     // contacts whose impact a pass must compute
     std::vector<std::int32_t> dirty_;       // contacts an impact touched: unknown_ comes from these

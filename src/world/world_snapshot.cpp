@@ -651,6 +651,11 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     w.shapes = std::move(state.shapes);
     w.joints = std::move(state.joints);
     w.contacts = std::move(state.contacts);
+    // Not in the snapshot: they follow from the shapes, checked above.
+    w.contacts.forEach([&](std::int32_t, Contact& c) {
+        c.radiusA = collisionRadius(w.shapes[c.shapeA]);
+        c.radiusB = collisionRadius(w.shapes[c.shapeB]);
+    });
     w.mouseJoints = std::move(state.mouseJoints);
     w.letGoEvents = std::move(state.letGoEvents);
     w.edgeEvents = std::move(state.edgeEvents);
