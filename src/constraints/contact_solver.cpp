@@ -318,6 +318,12 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
                             const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
                             const StepContext& step, const SolverPose* positions,
                             const Rot* rotations) {
+    // A tiled contact's constraint is assembled here and written field by field into its tile;
+    // an untiled one's is built in place (a copy of one assembled here would read back, in wide
+    // loads, fields just written narrow, which stalls each store-to-load forward). Every field
+    // is written for every contact, so nothing is cleared first (clearing a constraint cost as
+    // much as a tenth of this loop).
+    ContactVelocityConstraint assembled;
     for (int k = range.begin; k < range.end; ++k) {
         if (k + kContactsAhead < range.end) prefetchContact(pool[ids[k + kContactsAhead]]);
         if (k + kPartsAhead < range.end) prefetchBodies(pool[ids[k + kPartsAhead]], bodies);
@@ -327,41 +333,42 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
         const Body& bodyA = bodies[contact.bodyA()];
         const Body& bodyB = bodies[contact.bodyB()];
 
-        // A tiled contact's is assembled here and written field by field into its tile; an
-        // untiled one's is built in place (a copy of one assembled here would read back, in
-        // wide loads, fields just written narrow, which stalls each store-to-load forward).
         const int slot = tiles_.slot(k);
-        ContactVelocityConstraint assembled;
         ContactVelocityConstraint& c = slot >= 0 ? assembled : velocity_[k];
-        if (slot < 0) c = ContactVelocityConstraint{};
         c.indexA = pairs[k][0];
         c.indexB = pairs[k][1];
-        ContactRecord& record = records_[k];
-        record = ContactRecord{contactIndex, {0.0f, 0.0f}};
         c.mA = bodyA.invMass;
         c.mB = bodyB.invMass;
         c.iA = bodyA.invInertia;
         c.iB = bodyB.invInertia;
         c.friction = contact.friction;
         c.pointCount = manifold.pointCount;
+        c.K = Mat22{};
+        c.normalMass = Mat22{};
+        ContactRecord& record = records_[k];
+        record = ContactRecord{contactIndex, {0.0f, 0.0f}};
 
-        // Only NGS contacts keep theirs (the array is empty otherwise).
-        ContactPositionConstraint scratch;
-        ContactPositionConstraint& pc = position_.empty() ? scratch : position_[k];
-        pc.indexA = c.indexA;
-        pc.indexB = c.indexB;
-        pc.mA = c.mA;
-        pc.mB = c.mB;
-        pc.iA = c.iA;
-        pc.iB = c.iB;
-        pc.localCenterA = bodyA.localCenter;
-        pc.localCenterB = bodyB.localCenter;
-        pc.localNormal = manifold.localNormal;
-        pc.localPoint = manifold.localPoint;
-        pc.type = manifold.type;
-        pc.pointCount = manifold.pointCount;
-        pc.radiusA = contact.radiusA;
-        pc.radiusB = contact.radiusB;
+        // Only NGS contacts keep one (the array is empty otherwise).
+        if (!position_.empty()) {
+            ContactPositionConstraint& pc = position_[k];
+            pc.indexA = c.indexA;
+            pc.indexB = c.indexB;
+            pc.mA = c.mA;
+            pc.mB = c.mB;
+            pc.iA = c.iA;
+            pc.iB = c.iB;
+            pc.localCenterA = bodyA.localCenter;
+            pc.localCenterB = bodyB.localCenter;
+            pc.localNormal = manifold.localNormal;
+            pc.localPoint = manifold.localPoint;
+            pc.type = manifold.type;
+            pc.pointCount = manifold.pointCount;
+            pc.radiusA = contact.radiusA;
+            pc.radiusB = contact.radiusB;
+            for (int j = 0; j < manifold.pointCount; ++j) {
+                pc.localPoints[j] = manifold.points[j].localPoint;
+            }
+        }
 
         const SolverPose& posA = positions[c.indexA];
         const SolverPose& posB = positions[c.indexB];
@@ -369,20 +376,21 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
         const SolverVelocity startB{bodyB.linearVelocity, bodyB.angularVelocity};
         const Rot qA = rotations ? rotations[c.indexA] : Rot(posA.a);
         const Rot qB = rotations ? rotations[c.indexB] : Rot(posB.a);
-        WorldManifold wm =
-            computeWorldManifold(manifold, solverTransform(posA, qA, bodyA.localCenter), pc.radiusA,
-                                 solverTransform(posB, qB, bodyB.localCenter), pc.radiusB);
+        WorldManifold wm = computeWorldManifold(
+            manifold, solverTransform(posA, qA, bodyA.localCenter), contact.radiusA,
+            solverTransform(posB, qB, bodyB.localCenter), contact.radiusB);
         c.normal = wm.normal;
         const Vec2 tangent = tangentOf(c.normal);
 
-        for (int j = 0; j < manifold.pointCount; ++j) {
-            const ManifoldPoint& mp = manifold.points[j];
+        for (int j = 0; j < 2; ++j) {
             ContactVelocityPoint& p = c.points[j];
-            pc.localPoints[j] = mp.localPoint;
-            if (step.warmStarting) {
-                p.normalImpulse = step.dtRatio * mp.normalImpulse;
-                p.tangentImpulse = step.dtRatio * mp.tangentImpulse;
+            if (j >= manifold.pointCount) {
+                p = ContactVelocityPoint{};  // the tile's lanes read it (writeTile)
+                continue;
             }
+            const ManifoldPoint& mp = manifold.points[j];
+            p.normalImpulse = step.warmStarting ? step.dtRatio * mp.normalImpulse : 0.0f;
+            p.tangentImpulse = step.warmStarting ? step.dtRatio * mp.tangentImpulse : 0.0f;
             p.rA = wm.points[j] - posA.c;
             p.rB = wm.points[j] - posB.c;
             p.normalMass = effectiveMass(c, p.rA, p.rB, c.normal);
@@ -394,7 +402,9 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
             // one step's travel higher than it fell, v * h, 5% for a 2 m drop at 60 Hz.)
             float vRel = dot(c.normal, relativeVelocity(startA, startB, p.rA, p.rB));
             record.approachSpeeds[j] = -vRel;
-            if (vRel < -step.restitutionThreshold) p.velocityBias = -contact.restitution * vRel;
+            p.velocityBias = vRel < -step.restitutionThreshold ? -contact.restitution * vRel : 0.0f;
+            p.softTarget = 0.0f;
+            p.baseSeparation = 0.0f;
             if (baumgarte_) {
                 float push = -step.contactBiasFactor * step.invDt *
                              std::min(0.0f, wm.separations[j] + kLinearSlop);
