@@ -436,6 +436,7 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
 }
 
 void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* motion) {
+    ContactVelocityConstraint scratch;  // out of the loop: clearing it is not free
     for (int k = range.begin; k < range.end;) {
         // A whole tile at once where the range holds one (its contacts' softTarget is then
         // the tile's only: they are solved from there).
@@ -444,7 +445,6 @@ void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* moti
             k += tiles_.tileAt(k).contactCount;
             continue;
         }
-        ContactVelocityConstraint scratch;
         ContactVelocityConstraint& c = oneByOne(k, scratch);
         const SolverMotion& A = motion[c.indexA];
         const SolverMotion& B = motion[c.indexB];
@@ -467,8 +467,8 @@ void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* moti
 
 void ContactSolver::warmStart(IndexRange range, SolverVelocity* velocities, bool independent) {
     const int first = independent ? warmStartWide(range, velocities) : range.begin;
+    ContactVelocityConstraint scratch;
     for (int k = first; k < range.end; ++k) {
-        ContactVelocityConstraint scratch;
         const ContactVelocityConstraint& c = oneByOne(k, scratch);
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
@@ -483,8 +483,8 @@ void ContactSolver::warmStart(IndexRange range, SolverVelocity* velocities, bool
 void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities,
                                     bool independent) {
     const int first = independent ? solveWide(range, velocities, false) : range.begin;
+    ContactVelocityConstraint scratch;
     for (int k = first; k < range.end; ++k) {
-        ContactVelocityConstraint scratch;
         ContactVelocityConstraint& c = oneByOne(k, scratch);
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];
@@ -504,8 +504,8 @@ void ContactSolver::solveVelocities(IndexRange range, SolverVelocity* velocities
 
 void ContactSolver::relax(IndexRange range, SolverVelocity* velocities, bool independent) {
     const int first = independent ? solveWide(range, velocities, true) : range.begin;
+    ContactVelocityConstraint scratch;
     for (int k = first; k < range.end; ++k) {
-        ContactVelocityConstraint scratch;
         ContactVelocityConstraint& c = oneByOne(k, scratch);
         SolverVelocity& A = velocities[c.indexA];
         SolverVelocity& B = velocities[c.indexB];

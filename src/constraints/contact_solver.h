@@ -95,7 +95,7 @@ struct ContactPositionConstraint {
 /// is constraint k of the record, velocity and position arrays; each stage works on a range
 /// of them, so a team can share it out by colour (island_schedule.h). A tiled contact's
 /// velocity constraint lives only in its tile (its entry of the velocity array is left
-/// unwritten): writing both was a third of prepare's memory traffic.
+/// unwritten): the copy was 172 of the about 420 bytes prepare wrote per contact.
 class ContactSolver {
 public:
     /// Sizes the arrays for `count` contacts, and lays out tiles for the wide sweeps over the
@@ -203,7 +203,7 @@ private:
 
     std::vector<ContactRecord> records_;
     std::vector<ContactVelocityConstraint> velocity_;  // untiled contacts' (see above)
-    ContactTiles tiles_;  // the wide sweeps' constraints (home of their impulses)
+    ContactTiles tiles_;  // the wide sweeps' constraints (a tiled contact's only copy)
     std::vector<ContactPositionConstraint> position_;
     float positionBias_ = 0.0f;
     bool baumgarte_ = false;
