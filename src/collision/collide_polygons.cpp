@@ -47,8 +47,9 @@ struct FaceSeparation {
 // face, the distance of poly2's deepest vertex in front of the face's plane.
 #if defined(__SSE2__)
 // Four faces at a time, one per lane, each lane doing the scalar form's operations in its order
-// (below): the same separations to the bit, and minps keeps the scalar loop's choice, s < d ? s
-// : d, NaN included. The lanes past poly1.count read the arrays' spare zeros and are not used.
+// (below): the same separations to the bit, and minps keeps the scalar loop's choice
+// (s < d ? s : d, NaN included). The lanes past poly1.count read the arrays' spare entries
+// (fixed-size arrays, so always in bounds), and their results are never looked at.
 FaceSeparation maxFaceSeparation(const ConvexPolygon& poly1, const Transform& xf1,
                                  const ConvexPolygon& poly2, const Transform& xf2) {
     static_assert(kMaxPolygonVertices % 4 == 0, "faces are read four at a time");
