@@ -42,6 +42,13 @@ constexpr float kPolygonRadius = 2.0f * kLinearSlop;
 /// not need its box updated every step.
 constexpr float kAabbMargin = 0.1f;
 
+/// Metres. BroadPhaseBoxes::Compact's margins, Box2D v3's: a moving shape's box is fattened by
+/// v3's margin (0.05 m) plus the speculative distance v3 adds to every box (4 linear slops,
+/// 0.02 m); a static shape's by the speculative distance twice, since static shapes never move
+/// out of their boxes. Tighter boxes make fewer pairs that never touch.
+constexpr float kCompactAabbMargin = 0.07f;
+constexpr float kCompactStaticAabbMargin = 0.04f;
+
 /// Broad-phase boxes are also stretched along a body's motion by this many steps' worth of
 /// displacement, predicting where it will be.
 constexpr float kAabbMotionFactor = 4.0f;

@@ -35,6 +35,7 @@ std::int32_t BroadPhase::setOnStaticBody(std::int32_t proxyId, const AABB& tight
 void BroadPhase::setBoxes(BroadPhaseBoxes boxes) {
     assert(proxyCount() == 0);
     boxes_ = boxes;
+    moving_ = DynamicTree{movingMargin(boxes)};
 }
 
 void BroadPhase::destroyProxy(std::int32_t proxyId) {
@@ -46,11 +47,30 @@ void BroadPhase::destroyProxy(std::int32_t proxyId) {
     treeOf(proxyId).destroyProxy(nodeOf(proxyId));
 }
 
-void BroadPhase::moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) {
+BroadPhase::Motion BroadPhase::motionOf(const DynamicTree& tree, const AABB& from,
+                                        const AABB& to) const {
+    if (boxes_ == BroadPhaseBoxes::Compact) {
+        // A fattened end box that holds the start box covers the sweep as well as the swept
+        // box would, and is smaller.
+        const Vec2 margin{tree.margin(), tree.margin()};
+        const bool slow = contains({to.lower - margin, to.upper + margin}, from);
+        return {slow ? to : combine(from, to), Vec2{0.0f, 0.0f}};
+    }
+    return {combine(from, to), 0.5f * (to.lower + to.upper) - 0.5f * (from.lower + from.upper)};
+}
+
+bool BroadPhase::needsMove(std::int32_t proxyId, const AABB& from, const AABB& to) const {
+    const DynamicTree& tree = treeOf(proxyId);
+    const Motion motion = motionOf(tree, from, to);
+    return tree.needsMove(nodeOf(proxyId), motion.box, motion.displacement);
+}
+
+void BroadPhase::moveProxy(std::int32_t proxyId, const AABB& from, const AABB& to) {
     DynamicTree& tree = treeOf(proxyId);
+    const Motion motion = motionOf(tree, from, to);
     const bool moved = boxes_ == BroadPhaseBoxes::Compact
-                           ? tree.refitProxy(nodeOf(proxyId), tightBox)
-                           : tree.moveProxy(nodeOf(proxyId), tightBox, displacement);
+                           ? tree.refitProxy(nodeOf(proxyId), motion.box)
+                           : tree.moveProxy(nodeOf(proxyId), motion.box, motion.displacement);
     if (moved) moveBuffer_.push_back(proxyId);
 }
 
@@ -99,8 +119,9 @@ void BroadPhase::save(SnapshotWriter& out) const {
 
 void BroadPhase::load(SnapshotReader& in) {
     in.enumValue(boxes_, kBroadPhaseBoxesCount);
+    moving_ = DynamicTree{movingMargin(boxes_)};
     moving_.load(in);
-    static_ = DynamicTree{};
+    static_ = DynamicTree{kCompactStaticAabbMargin};
     if (boxes_ == BroadPhaseBoxes::Compact) static_.load(in);
     in.sequence(moveBuffer_, [&](std::int32_t& proxy) { in.value(proxy); });
     for (const std::int32_t proxy : moveBuffer_) {

@@ -6,13 +6,16 @@
 // leaves its box gets one stretched ahead by its displacement and is re-inserted where the
 // tree's heuristic says. Compact, Box2D v3's: the box is only fattened by the margin, and a
 // proxy that leaves it is refitted where it sits; the part of the tree that grew is rebuilt
-// just before the next updatePairs queries it. Fast shapes pair with far less than they will
-// ever touch under Compact, and moving many proxies costs one partial rebuild instead of as
-// many re-insertions (or none, while nothing that moved looks for pairs). Compact also keeps
-// static bodies' proxies in a tree of their own, which moving proxies query beside theirs:
-// the moving tree stays small and is rebuilt without them, and two static proxies are never
-// paired (static bodies never touch). Predictive keeps one tree so that proxy ids, and with
-// them the order pairs are reported in, stay Box2D 2.4.1's.
+// just before the next updatePairs queries it. Its box covers only where the shape ended the
+// step when that box, fattened, still holds where it started (the shape moved less than the
+// margin); otherwise the whole sweep, so continuous collision has the pairs a fast shape
+// passed through. Fast shapes pair with far less than they will ever touch under Compact,
+// and moving many proxies costs one partial rebuild instead of as many re-insertions (or
+// none, while nothing that moved looks for pairs). Compact also keeps static bodies' proxies
+// in a tree of their own, which moving proxies query beside theirs: the moving tree stays
+// small and is rebuilt without them, and two static proxies are never paired (static bodies
+// never touch). Predictive keeps one tree so that proxy ids, and with them the order pairs are
+// reported in, stay Box2D 2.4.1's.
 #pragma once
 
 #include <algorithm>
@@ -41,16 +44,15 @@ public:
     void setBoxes(BroadPhaseBoxes boxes);
     BroadPhaseBoxes boxes() const { return boxes_; }
 
-    /// DynamicTree::moveProxy (Predictive) or refitProxy (Compact, which ignores the
-    /// displacement); a proxy given a new box is buffered for updatePairs.
-    void moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement);
+    /// For a shape whose box was `from` at the start of its motion and is `to` now:
+    /// DynamicTree::moveProxy with the swept box and the displacement of its centre
+    /// (Predictive), or refitProxy with `to` alone if the tree's margin around it still holds
+    /// `from`, else with the swept box (Compact). A proxy given a new box is buffered for
+    /// updatePairs.
+    void moveProxy(std::int32_t proxyId, const AABB& from, const AABB& to);
     /// Whether moveProxy would give the proxy a new box (and so buffer it). Read-only:
     /// thread-safe.
-    bool needsMove(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) const {
-        return treeOf(proxyId).needsMove(
-            nodeOf(proxyId), tightBox,
-            boxes_ == BroadPhaseBoxes::Compact ? Vec2{0.0f, 0.0f} : displacement);
-    }
+    bool needsMove(std::int32_t proxyId, const AABB& from, const AABB& to) const;
     /// Buffers a proxy so its pairs are reported again at the next updatePairs (for example
     /// after its filter changed).
     void touchProxy(std::int32_t proxyId);
@@ -122,8 +124,8 @@ private:
         std::int32_t upper;
     };
 
-    DynamicTree moving_;  // every proxy under Predictive
-    DynamicTree static_;  // static bodies' proxies under Compact
+    DynamicTree moving_{kAabbMargin};               // every proxy under Predictive
+    DynamicTree static_{kCompactStaticAabbMargin};  // static bodies' proxies under Compact
     BroadPhaseBoxes boxes_ = BroadPhaseBoxes::Predictive;
     // Buffered proxy ids in the order they were buffered; destroyed ones are overwritten with
     // kNullProxy rather than erased, which keeps destroyProxy from shifting the rest.
@@ -134,6 +136,16 @@ private:
     // Kept between calls for its capacity: updatePairs allocates nothing once it has grown.
     std::vector<ProxyPair> pairBuffer_;
     std::vector<std::vector<ProxyPair>> workerPairs_;  // one per worker of the pool
+
+    static float movingMargin(BroadPhaseBoxes boxes) {
+        return boxes == BroadPhaseBoxes::Compact ? kCompactAabbMargin : kAabbMargin;
+    }
+    /// What moveProxy gives the tree: the box to cover, and the displacement to stretch it by.
+    struct Motion {
+        AABB box;
+        Vec2 displacement;
+    };
+    Motion motionOf(const DynamicTree& tree, const AABB& from, const AABB& to) const;
 
     const DynamicTree& treeOf(std::int32_t proxyId) const {
         return (proxyId & kStaticTag) ? static_ : moving_;

@@ -14,6 +14,7 @@
 #include "collision/aabb.h"
 #include "collision/ray_cast.h"
 #include "core/snapshot_io.h"
+#include "pivot/constants.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -91,27 +92,32 @@ private:
 
 class DynamicTree {
 public:
-    /// Adds a leaf for `tightBox`, stored fattened by kAabbMargin. Returns the proxy id.
+    /// `margin`: how far every stored box reaches beyond the shape's own (kAabbMargin for
+    /// Box2D 2.4.1's boxes). Not saved in snapshots: the owner sets it.
+    explicit DynamicTree(float margin = kAabbMargin) : margin_(margin) {}
+    float margin() const { return margin_; }
+
+    /// Adds a leaf for `tightBox`, stored fattened by the margin. Returns the proxy id.
     std::int32_t createProxy(const AABB& tightBox, std::int32_t userData);
     void destroyProxy(std::int32_t proxyId);
     /// Updates a proxy whose shape now has `tightBox` and moved by `displacement` this step.
     /// Does nothing and returns false while the stored fat box still contains `tightBox` and is
     /// not oversized (wider or taller by more than 2 kOversizeMargins margins than the box it
-    /// would get now); otherwise re-inserts the leaf with a box fattened by kAabbMargin and
+    /// would get now); otherwise re-inserts the leaf with a box fattened by the margin and
     /// stretched by kAabbMotionFactor * displacement, and returns true.
     bool moveProxy(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement);
     /// Whether moveProxy would re-insert the proxy. Read-only: safe from several threads.
     bool needsMove(std::int32_t proxyId, const AABB& tightBox, Vec2 displacement) const;
 
     /// The other way to move a proxy: under the same test as needsMove with no displacement,
-    /// stores the box fattened by kAabbMargin only (no stretch) where the leaf is, growing the
+    /// stores the box fattened by the margin only (no stretch) where the leaf is, growing the
     /// ancestors that no longer hold it and marking them for rebuildChanged; returns whether
     /// it moved the proxy. The tree stays valid, but a leaf that travelled is left among its
     /// old neighbours until rebuildChanged.
     bool refitProxy(std::int32_t proxyId, const AABB& tightBox);
     /// Rebuilds the part of the tree refitProxy grew, top down: the subtrees it did not reach
-    /// are kept whole, and they and the moved leaves are grouped again where the surface-area
-    /// heuristic says (binned by box centres). Proxy ids, boxes and user data are kept; only
+    /// are kept whole, and they and the moved leaves are grouped again, split at the middle of
+    /// the longer side of their centres. Proxy ids, boxes and user data are kept; only
     /// the tree's shape changes (so the order queries visit proxies in). The same tree and
     /// moves give the same result. Nothing to do when nothing grew.
     void rebuildChanged();
@@ -180,7 +186,10 @@ private:
 
     template <typename Io, typename Tree>
     static void describe(Io& io, Tree& tree);
-    static AABB fatBoxFor(const AABB& tightBox, Vec2 displacement);
+    AABB fatten(const AABB& tightBox) const {
+        return {tightBox.lower - Vec2{margin_, margin_}, tightBox.upper + Vec2{margin_, margin_}};
+    }
+    AABB fatBoxFor(const AABB& tightBox, Vec2 displacement) const;
     std::int32_t allocateNode();
     void freeNode(std::int32_t nodeId);
     bool isProxy(std::int32_t proxyId) const;
@@ -203,8 +212,7 @@ private:
     // rebuildChanged's pieces: the kept subtrees and moved leaves it groups ("parts"), a range
     // of them still to be split under a parent, and the split itself.
     struct Part {
-        AABB box;
-        Vec2 centre;
+        Vec2 centre;  // of the part's box: the splits group parts by it
         std::int32_t node;
     };
     struct BuildTask {
@@ -223,12 +231,13 @@ private:
     // (so the marks are a subtree at the top). Saved with the tree.
     std::vector<std::uint8_t> changed_;
     // rebuildChanged's scratch, kept for its capacity.
-    std::vector<Part> parts_;  // copies of the boxes, so the splits read them in order
+    std::vector<Part> parts_;  // the centres copied, so the splits read them in order
     std::vector<BuildTask> buildTasks_;
     std::vector<std::int32_t> builtNodes_;
     std::int32_t root_ = kNullNode;
     std::int32_t freeList_ = kNullNode;
     std::int32_t proxyCount_ = 0;
+    float margin_;
 };
 
 template <typename Visit>

@@ -279,12 +279,10 @@ void ContactManager::synchronizeShapes(std::int32_t bodyIndex, bool swept) {
     for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
         Shape& shape = shapes_[s];
         // The box kept from the last sync is the box at the start of this step's motion.
-        AABB after = computeShapeBox(shape, body.xf);
-        AABB before = swept ? shape.box : after;
+        const AABB after = computeShapeBox(shape, body.xf);
+        const AABB before = swept ? shape.box : after;
         shape.box = after;
-        Vec2 displacement =
-            0.5f * (after.lower + after.upper) - 0.5f * (before.lower + before.upper);
-        broadPhase_.moveProxy(shape.proxyId, combine(before, after), displacement);
+        broadPhase_.moveProxy(shape.proxyId, before, after);
     }
 }
 
@@ -293,11 +291,8 @@ void ContactManager::synchronizeShapesFrom(std::int32_t bodyIndex, const Transfo
     for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
         Shape& shape = shapes_[s];
         const AABB before = computeShapeBox(shape, from);
-        const AABB after = computeShapeBox(shape, body.xf);
-        shape.box = after;
-        const Vec2 displacement =
-            0.5f * (after.lower + after.upper) - 0.5f * (before.lower + before.upper);
-        broadPhase_.moveProxy(shape.proxyId, combine(before, after), displacement);
+        shape.box = computeShapeBox(shape, body.xf);
+        broadPhase_.moveProxy(shape.proxyId, before, shape.box);
     }
 }
 
@@ -312,12 +307,10 @@ void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& so
             if (body.type == BodyType::Static) continue;
             for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
                 Shape& shape = shapes_[s];
-                AABB after = computeShapeBox(shape, body.xf);
+                const AABB after = computeShapeBox(shape, body.xf);
                 ShapeMove& move = shapeMoves_[s];
-                move.swept = combine(shape.box, after);
-                move.displacement =
-                    0.5f * (after.lower + after.upper) - 0.5f * (shape.box.lower + shape.box.upper);
-                move.needed = broadPhase_.needsMove(shape.proxyId, move.swept, move.displacement);
+                move.from = shape.box;
+                move.needed = broadPhase_.needsMove(shape.proxyId, shape.box, after);
                 shape.box = after;
             }
         }
@@ -328,8 +321,7 @@ void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& so
         if (body.type == BodyType::Static) continue;
         for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
             const ShapeMove& move = shapeMoves_[s];
-            if (move.needed)
-                broadPhase_.moveProxy(shapes_[s].proxyId, move.swept, move.displacement);
+            if (move.needed) broadPhase_.moveProxy(shapes_[s].proxyId, move.from, shapes_[s].box);
         }
     }
 }

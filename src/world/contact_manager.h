@@ -158,8 +158,7 @@ private:
     std::vector<SensorEvent> sensorEndEvents_;
     std::vector<std::uint8_t> contactOutcomes_;  // updateContacts' first phase, per contact slot
     struct ShapeMove {
-        AABB swept;
-        Vec2 displacement;
+        AABB from;  // the shape's box at the start of the step
         bool needed = false;
     };
     std::vector<ShapeMove> shapeMoves_;  // per shape slot, for synchronizeSolvedBodies

@@ -123,18 +123,17 @@ std::size_t runRandomScene(std::uint32_t seed, int rounds,
                 const float speed = r < 0.8f ? 0.05f : 0.6f;
                 d = speed * body.velocity;
             }
+            const AABB from = body.tight;
             body.tight = translated(body.tight, d);
             // Keep the scene dense: wrap bodies that drift far off back to the other side.
             const Vec2 centre = 0.5f * (body.tight.lower + body.tight.upper);
             if (centre.x > 2.0f * worldHalfWidth || centre.x < -2.0f * worldHalfWidth) {
                 body.tight = translated(body.tight, {-centre.x, 0.0f});
-                d.x -= centre.x;
             }
             if (centre.y > 2.0f * worldHalfWidth || centre.y < -2.0f * worldHalfWidth) {
                 body.tight = translated(body.tight, {0.0f, -centre.y});
-                d.y -= centre.y;
             }
-            broadPhase.moveProxy(body.proxy, body.tight, d);
+            broadPhase.moveProxy(body.proxy, from, body.tight);
         }
 
         // Now and then a filter change asks for a body's pairs again.
@@ -227,12 +226,44 @@ TEST(BroadPhase, SmallMovesAreNotBufferedAndLargeOnesAre) {
     ASSERT_EQ(update(broadPhase).size(), 1u);
 
     const Vec2 small{0.05f, 0.0f};
-    broadPhase.moveProxy(mover, translated(tight, small), small);
+    broadPhase.moveProxy(mover, tight, translated(tight, small));
     EXPECT_TRUE(update(broadPhase).empty());  // still inside its fat box: not re-examined
 
     const Vec2 large{-0.5f, 0.0f};
-    broadPhase.moveProxy(mover, translated(tight, large), large);
+    broadPhase.moveProxy(mover, translated(tight, small), translated(tight, large));
     EXPECT_EQ(update(broadPhase), (std::vector<UserPair>{{1, 2}}));
+}
+
+// Compact keeps a slow shape's box around where it ended (it still covers where it started)
+// and a fast one's around its whole sweep, so continuous collision finds what it passed.
+TEST(BroadPhase, CompactBoxesCoverTheEndOfASlowMoveAndTheSweepOfAFastOne) {
+    BroadPhase broadPhase;
+    broadPhase.setBoxes(BroadPhaseBoxes::Compact);
+    const AABB start = boxAt({0, 0}, {1, 1});
+    const std::int32_t proxy = broadPhase.createProxy(start, 1);
+    const Vec2 margin{kCompactAabbMargin, kCompactAabbMargin};
+    EXPECT_EQ(broadPhase.fatBox(proxy).lower, start.lower - margin);
+
+    // Two small steps: the first stays in the box, the second leaves it but moved less than the
+    // margin, so the end box, fattened, is kept.
+    const AABB halfway = translated(start, {0.05f, 0.0f});
+    broadPhase.moveProxy(proxy, start, halfway);
+    EXPECT_EQ(broadPhase.fatBox(proxy).lower, start.lower - margin);
+    const AABB nudged = translated(halfway, {0.05f, 0.0f});
+    broadPhase.moveProxy(proxy, halfway, nudged);
+    EXPECT_EQ(broadPhase.fatBox(proxy).lower, nudged.lower - margin);
+    EXPECT_EQ(broadPhase.fatBox(proxy).upper, nudged.upper + margin);
+
+    // Further than the margin in one step: the swept box, fattened.
+    const AABB far = translated(nudged, {3.0f, 0.0f});
+    broadPhase.moveProxy(proxy, nudged, far);
+    EXPECT_EQ(broadPhase.fatBox(proxy).lower, nudged.lower - margin);
+    EXPECT_EQ(broadPhase.fatBox(proxy).upper, far.upper + margin);
+
+    // A static shape's box gets the smaller static margin.
+    const std::int32_t wall = broadPhase.createProxy(start, 2, true);
+    const Vec2 staticMargin{kCompactStaticAabbMargin, kCompactStaticAabbMargin};
+    EXPECT_EQ(broadPhase.fatBox(wall).lower, start.lower - staticMargin);
 }
 
 TEST(BroadPhase, TouchProxyReportsExistingPairsAgain) {
@@ -252,7 +283,7 @@ TEST(BroadPhase, TouchProxyReportsExistingPairsAgain) {
     broadPhase.touchProxy(a);
     broadPhase.touchProxy(a);
     const Vec2 d{0.0f, 0.5f};
-    broadPhase.moveProxy(a, boxAt(d, {1, 1}), d);
+    broadPhase.moveProxy(a, boxAt({0, 0}, {1, 1}), boxAt(d, {1, 1}));
     EXPECT_EQ(update(broadPhase), (std::vector<UserPair>{{10, 20}, {10, 30}}));
 }
 
@@ -262,8 +293,7 @@ TEST(BroadPhase, AProxyDestroyedAfterAMoveIsNeverReported) {
     const std::int32_t doomed = broadPhase.createProxy(boxAt({5, 0}, {1, 1}), 2);
     EXPECT_TRUE(update(broadPhase).empty());
 
-    const Vec2 d{-4.0f, 0.0f};
-    broadPhase.moveProxy(doomed, boxAt({1, 0}, {1, 1}), d);
+    broadPhase.moveProxy(doomed, boxAt({5, 0}, {1, 1}), boxAt({1, 0}, {1, 1}));
     broadPhase.touchProxy(doomed);
     broadPhase.destroyProxy(doomed);
     EXPECT_TRUE(update(broadPhase).empty());
@@ -295,8 +325,9 @@ TEST(BroadPhase, TheSameCallsReportTheSameSequence) {
             }
             for (std::size_t i = 0; i < proxies.size(); ++i) {
                 const Vec2 d{step(rng), step(rng)};
+                const AABB from = tight[i];
                 tight[i] = translated(tight[i], d);
-                broadPhase.moveProxy(proxies[i], tight[i], d);
+                broadPhase.moveProxy(proxies[i], from, tight[i]);
             }
             if (round % 4 == 3) {
                 broadPhase.destroyProxy(proxies[round % proxies.size()]);
