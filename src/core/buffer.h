@@ -18,6 +18,22 @@
 
 namespace pivot {
 
+/// What to reserve for `needed` objects where `reserved` are reserved already: unchanged while
+/// they fit, else `needed` rounded up to a power of two (16 at least), so a count that grows one
+/// at a time reserves again only when it has doubled.
+inline std::size_t withRoom(std::size_t reserved, std::size_t needed) {
+    if (needed <= reserved) return reserved;
+    std::size_t rounded = 16;
+    while (rounded < needed) rounded *= 2;
+    return rounded;
+}
+
+/// Reserves room for `count` elements by withRoom.
+template <typename T>
+void reserveBuffer(std::vector<T>& buffer, std::size_t count) {
+    if (count > buffer.capacity()) buffer.reserve(withRoom(buffer.capacity(), count));
+}
+
 template <typename T>
 void resizeBuffer(std::vector<T>& buffer, std::size_t size) {
     if (size > buffer.capacity()) buffer.reserve(std::max(size, 2 * buffer.capacity()));

@@ -72,6 +72,10 @@ struct IslandSchedule {
         jointPairs.reserve(bound.joints);
         contactIds.reserve(bound.contacts);
         contactPairs.reserve(bound.contacts);
+        // A colouring makes at most one batch per colour and the overflow.
+        constexpr std::size_t kMostBatches = GraphColoring::kMaxColors + 1;
+        for (std::vector<Batch>& batches : jointBatches) batches.reserve(kMostBatches);
+        contactBatches.reserve(kMostBatches);
     }
 
     int slotCount(const IslandView& island) const {

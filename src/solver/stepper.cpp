@@ -8,18 +8,12 @@ namespace {
 // Below this many island bodies in a step, the islands are solved on the calling thread.
 constexpr std::size_t kParallelBodies = 512;
 
-// A count that grew past the last reservation is reserved for rounded up to a power of two,
-// so a count that grows one at a time reserves again only when it has doubled.
-std::size_t withRoom(std::size_t reserved, std::size_t needed) {
-    if (needed <= reserved) return reserved;
-    std::size_t rounded = 16;
-    while (rounded < needed) rounded *= 2;
-    return rounded;
-}
+// Each count that grew past the last reservation is reserved for rounded up to a power of two.
 BufferBounds withRoom(const BufferBounds& reserved, const BufferBounds& needed) {
-    return {withRoom(reserved.bodies, needed.bodies), withRoom(reserved.joints, needed.joints),
-            withRoom(reserved.contacts, needed.contacts),
-            withRoom(reserved.mouseJoints, needed.mouseJoints)};
+    return {pivot::withRoom(reserved.bodies, needed.bodies),
+            pivot::withRoom(reserved.joints, needed.joints),
+            pivot::withRoom(reserved.contacts, needed.contacts),
+            pivot::withRoom(reserved.mouseJoints, needed.mouseJoints)};
 }
 }  // namespace
 

@@ -147,11 +147,12 @@ void ContactManager::updateContacts() {
     resizeBuffer(contactOutcomes_, static_cast<std::size_t>(contacts_.capacity()));
     // A contact begins or ends once in the narrow phase and seldom more than once in continuous
     // collision's impacts: room for twice every one, so that a step with more events than any
-    // before does not allocate (only a grown contact pool does).
-    beginEvents_.reserve(2 * static_cast<std::size_t>(contacts_.capacity()));
-    endEvents_.reserve(2 * static_cast<std::size_t>(contacts_.capacity()));
-    sensorBeginEvents_.reserve(static_cast<std::size_t>(contacts_.capacity()));
-    sensorEndEvents_.reserve(static_cast<std::size_t>(contacts_.capacity()));
+    // before does not allocate (only a contact pool that has doubled does).
+    const auto contactSlots = static_cast<std::size_t>(contacts_.capacity());
+    reserveBuffer(beginEvents_, 2 * contactSlots);
+    reserveBuffer(endEvents_, 2 * contactSlots);
+    reserveBuffer(sensorBeginEvents_, contactSlots);
+    reserveBuffer(sensorEndEvents_, contactSlots);
     pool_.parallelFor(contacts_.capacity(), 1024, [&](int begin, int end, int) {
         for (std::int32_t index = begin; index < end; ++index) {
             std::uint8_t& outcome = contactOutcomes_[index];

@@ -367,9 +367,10 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
 
     resizeBuffer(bodySlot_, static_cast<std::size_t>(bodies.capacity()), std::int32_t{-1});
     // Room for the most an impact can involve, so that a warm step does not allocate.
-    unknown_.reserve(2 * static_cast<std::size_t>(contacts.capacity()));
-    dirty_.reserve(2 * static_cast<std::size_t>(contacts.capacity()));  // a contact per side
-    candidates_.reserve(static_cast<std::size_t>(contacts.capacity()));
+    const auto contactSlots = static_cast<std::size_t>(contacts.capacity());
+    reserveBuffer(unknown_, 2 * contactSlots);
+    reserveBuffer(dirty_, 2 * contactSlots);  // a contact per side
+    reserveBuffer(candidates_, contactSlots);
     islandBodies_.reserve(kMaxIslandBodies);
     islandContacts_.reserve(kMaxIslandContacts);
     islandPairs_.reserve(kMaxIslandContacts);
@@ -378,7 +379,7 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     kinematicPaths_.reserve(kMaxIslandBodies);
     contactSolver_.reserve(kMaxIslandContacts, 0);  // unbatched: no tiles
     // Most contacts have one impact a step at most; twice that is room for the busiest steps.
-    impacts_.reserve(2 * static_cast<std::size_t>(contacts.capacity()));
+    reserveBuffer(impacts_, 2 * contactSlots);
     if (!(earliest <= kLatestImpact)) return 0;
     // There are impacts: list the contacts that may be the earliest (a known impact before the
     // end of the step), so that each search after an impact reads those and the contacts the

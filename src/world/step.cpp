@@ -47,8 +47,8 @@ void World::Impl::recordBodyEvents(const IslandSet::Range& island) {
 void World::Impl::recordHitAndMoveEvents() {
     const IslandSet& islands = stepper.islands();
     // A warm step does not allocate: room for every contact and body there is.
-    hitEvents.reserve(static_cast<std::size_t>(contacts.capacity()));
-    moveEvents.reserve(static_cast<std::size_t>(bodies.capacity()));
+    reserveBuffer(hitEvents, static_cast<std::size_t>(contacts.capacity()));
+    reserveBuffer(moveEvents, static_cast<std::size_t>(bodies.capacity()));
     for (std::int32_t index : islands.bodies) {
         const Body& body = bodies[index];
         if (body.type == BodyType::Static) continue;
