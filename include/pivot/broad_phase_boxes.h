@@ -11,6 +11,7 @@ enum class BroadPhaseBoxes : std::uint8_t {
     /// form steps before a fast shape arrives. Worlds that must agree with Box2D 2.4.1 bit for
     /// bit need it (it decides which contacts exist, and so their order).
     Predictive,
+    /// The default.
     /// Box2D v3's: the box fattened by v3's margins only (kCompactAabbMargin, and
     /// kCompactStaticAabbMargin for static shapes), around where the shape ended the step or,
     /// if it moved further than the margin, around its sweep. Fast shapes pair with far fewer

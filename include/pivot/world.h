@@ -75,11 +75,12 @@ struct WorldDef {
     /// agrees with it bit for bit; soft step (Box2D v3) uses 4. docs/position-correction.md,
     /// "Substeps", says what each strategy does per substep.
     int substepCount = 1;
-    /// How the broad phase sizes its boxes: Predictive, the default, is Box2D 2.4.1's (and
-    /// needed to agree with it bit for bit); Compact is Box2D v3's, for worlds of fast bodies.
-    /// Same behaviour either way, except which non-touching pairs have contacts (and so the
-    /// order contacts are made and solved in, and the bits that follow).
-    BroadPhaseBoxes broadPhaseBoxes = BroadPhaseBoxes::Predictive;
+    /// How the broad phase sizes its boxes: Compact, the default, is Box2D v3's (tight boxes,
+    /// fewer contacts between shapes that never touch); Predictive is Box2D 2.4.1's, needed to
+    /// agree with it bit for bit. Same behaviour either way, except which non-touching pairs
+    /// have contacts (and so the order contacts are made and solved in, and the bits that
+    /// follow). docs/contacts.md says what each costs.
+    BroadPhaseBoxes broadPhaseBoxes = BroadPhaseBoxes::Compact;
 };
 
 /// A touching contact as seen from outside, measured at the bodies' current poses.

@@ -35,7 +35,7 @@ struct Options {
     int workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     bool workersGiven = false;  // --workers on the command line (--profile then uses it)
     bool continuous = true;
-    bool compactBoxes = false;         // --boxes compact: pivot2d's worlds use Compact boxes
+    bool predictiveBoxes = false;      // --boxes predictive: pivot2d's worlds use Box2D 2.4.1's
     std::string only;                  // --scene
     std::vector<std::string> engines;  // --engines; empty: all
     std::string profileEngine;         // --profile: step one engine, untimed, for a profiler
@@ -65,7 +65,7 @@ public:
         settings.threads = threads;
         settings.sleep = scene.sleep;
         settings.continuous = options.continuous;
-        settings.compactBoxes = options.compactBoxes;
+        settings.predictiveBoxes = options.predictiveBoxes;
         engine_ = kind.make(settings);
         script_ = scene.build(*engine_);
     }
@@ -191,7 +191,7 @@ void usage(const std::vector<EngineKind>& kinds) {
     std::cerr
         << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] [--scene NAME]\n"
            "                   [--engines A,B,...] [--continuous on|off]\n"
-           "                   [--boxes predictive|compact] [--list] [--profile ENGINE STEPS]\n"
+           "                   [--boxes compact|predictive] [--list] [--profile ENGINE STEPS]\n"
            "  Times each scene in every engine, 1/60 s steps, continuous collision on, sleeping\n"
            "  as the scene says, and prints the median milliseconds per step (the first step\n"
            "  left out, as Box2D v3's benchmark app does) with ratios: x 2.4.1 = Box2D 2.4.1's\n"
@@ -206,8 +206,8 @@ void usage(const std::vector<EngineKind>& kinds) {
            "             ratio is empty when its engine did not run), then the memory table\n"
            "  --engines  only these engines (the ratios need their engine in the run)\n"
            "  --continuous off  continuous collision off in every engine\n"
-           "  --boxes compact  pivot2d's worlds use BroadPhaseBoxes::Compact (Box2D v3's\n"
-           "             boxes) instead of the default, Predictive (Box2D 2.4.1's)\n"
+           "  --boxes predictive  pivot2d's worlds use BroadPhaseBoxes::Predictive (Box2D\n"
+           "             2.4.1's boxes) instead of the default, Compact (Box2D v3's)\n"
            "  --list     name and describe the scenes\n"
            "  --scene queries  only the query rows (ray casts and box queries in 10^4\n"
            "             shapes); --scene memory  only the memory rows\n"
@@ -242,7 +242,7 @@ int main(int argc, char** argv) {
         } else if (arg == "--boxes" && i + 1 < argc &&
                    (std::string(argv[i + 1]) == "predictive" ||
                     std::string(argv[i + 1]) == "compact")) {
-            options.compactBoxes = std::string(argv[++i]) == "compact";
+            options.predictiveBoxes = std::string(argv[++i]) == "predictive";
         } else if (arg == "--profile" && i + 2 < argc) {
             options.profileEngine = argv[++i];
             options.profileSteps = std::max(0, std::atoi(argv[++i]));
@@ -338,7 +338,7 @@ int main(int argc, char** argv) {
         "%s; pivot2d's broad-phase boxes %s.\n",
         options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
         options.repeats == 1 ? "" : "s", options.continuous ? "on" : "off",
-        options.compactBoxes ? "compact" : "predictive");
+        options.predictiveBoxes ? "predictive" : "compact");
     for (const EngineKind& kind : kinds) {
         std::printf("  %-12s %s\n", kind.name.c_str(), kind.about.c_str());
     }

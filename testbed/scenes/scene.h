@@ -24,7 +24,7 @@ struct SceneOptions {
     Vec2 gravity{0.0f, -10.0f};
     int workerCount = 1;                                            ///< WorldDef::workerCount
     int substepCount = 1;                                           ///< WorldDef::substepCount
-    BroadPhaseBoxes broadPhaseBoxes = BroadPhaseBoxes::Predictive;  ///< WorldDef's
+    BroadPhaseBoxes broadPhaseBoxes = BroadPhaseBoxes::Compact;  ///< WorldDef's
     /// Continuous collision switched on or off after the scene is built; unset: as the scene
     /// has it (on, unless the scene calls keepContinuousOffForJoints).
     std::optional<bool> continuous;

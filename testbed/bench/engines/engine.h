@@ -19,7 +19,7 @@ struct WorldSettings {
     int threads = 1;
     bool sleep = false;         ///< bodies may sleep
     bool continuous = true;     ///< continuous collision
-    bool compactBoxes = false;  ///< pivot2d: BroadPhaseBoxes::Compact (other engines ignore it)
+    bool predictiveBoxes = false;  ///< pivot2d: BroadPhaseBoxes::Predictive (others ignore it)
 };
 
 class Engine : public Builder {

@@ -38,7 +38,7 @@ public:
         def.contactCorrection = setup.contacts;
         def.substepCount = setup.substeps;
         def.workerCount = settings.threads;
-        if (settings.compactBoxes) def.broadPhaseBoxes = BroadPhaseBoxes::Compact;
+        if (settings.predictiveBoxes) def.broadPhaseBoxes = BroadPhaseBoxes::Predictive;
         world_ = std::make_unique<World>(def);
     }
 
