@@ -256,22 +256,24 @@ std::uint16_t ContactManager::presentCategories() const {
 }
 
 void ContactManager::findNewContacts() {
-    // The cheap, read-only part of addPair's test runs inside the (parallel) queries, the
-    // pair map's included (nothing writes it until addPair): most pairs a moved box reports
-    // have their contact already, and dropping them here spares the merge, the sort and
-    // addPair. The new pairs keep their order, so contacts are made as before.
-    auto mayPair = [this](std::int32_t a, std::int32_t b) {
+    // addPair's read-only tests run inside the (parallel) queries, the pair map's and the
+    // joints' included (nothing writes them until addPair): most pairs a moved box reports have
+    // their contact already, or are bodies a joint keeps apart (every link of a chain finds its
+    // two neighbours at every query), and dropping them here spares the merge, the sort and
+    // addPair. Only the custom filter, the user's code, waits for addPair. The new pairs keep
+    // their order, so contacts are made as before.
+    auto worthPairing = [this](std::int32_t a, std::int32_t b) {
         const Shape& shapeA = shapes_[a];
         const Shape& shapeB = shapes_[b];
         return shapeA.body != shapeB.body && filtersAllowContact(shapeA.filter, shapeB.filter) &&
-               pairs_.find(PairMap::key(a, b)) == -1;
+               pairs_.find(PairMap::key(a, b)) == -1 && mayPair(shapeA, shapeB);
     };
     const std::uint16_t present = presentCategories();
     auto mayMeetAnything = [this, present](std::int32_t s) {
         const Filter& filter = shapes_[s].filter;
         return filter.groupIndex > 0 || (filter.maskBits & present) != 0;
     };
-    broadPhase_.updatePairs(pool_, mayMeetAnything, mayPair,
+    broadPhase_.updatePairs(pool_, mayMeetAnything, worthPairing,
                             [this](std::int32_t a, std::int32_t b) { addPair(a, b); });
 }
 
