@@ -23,7 +23,12 @@ void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodie
 void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Joint>& joints,
                                  IslandSchedule& schedule) {
     std::array<std::int32_t, kJointGroupCount> sizes{};
-    for (int j = 0; j < island.jointCount; ++j) ++sizes[jointGroup(joints[island.joints[j]])];
+    schedule.jointsMayBreak = false;
+    for (int j = 0; j < island.jointCount; ++j) {
+        const Joint& joint = joints[island.joints[j]];
+        ++sizes[jointGroup(joint)];
+        if (joint.breakForce > 0.0f || joint.breakTorque > 0.0f) schedule.jointsMayBreak = true;
+    }
     schedule.groupStart[0] = 0;
     for (int g = 0; g < kJointGroupCount; ++g) {
         schedule.groupStart[g + 1] = schedule.groupStart[g] + sizes[g];

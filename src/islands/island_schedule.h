@@ -60,6 +60,7 @@ struct IslandSchedule {
     std::vector<JointSlots> jointPairs;  // their solver bodies
     std::array<std::int32_t, kJointGroupCount + 1> groupStart{};
     std::array<std::vector<Batch>, kJointGroupCount> jointBatches;  // within each group
+    bool jointsMayBreak = false;           // a joint of the island has a break force or torque
     std::vector<std::int32_t> contactIds;  // contact pool indices, in solving order
     std::vector<BodyPair> contactPairs;
     std::vector<Batch> contactBatches;

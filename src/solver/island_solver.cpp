@@ -93,7 +93,7 @@ bool beyondLetGoSeparation(const Joint& joint, float separationSquared, const St
 // their let-go separation; later substeps rebuild each constraint at the current poses from the
 // impulses the substep before stored, or re-measure it where it already holds those
 // (kKeptAcrossSubsteps: the same values without reading the joint and its bodies again), and
-// keep a let-go joint inert.
+// keep a let-go joint inert (work.jointLetGo says which, so a re-measured joint is not read).
 void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
                    SlotPool<Joint>& joints, const StepContext& step, bool firstSubstep,
                    IslandReport& report) {
@@ -114,7 +114,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                 bool remeasured = false;
                 if constexpr (S::kKeptAcrossSubsteps && CanRemeasure<C>::value) {
                     if (remeasure) {
-                        if (joint.letGo) {
+                        if (work.jointLetGo[at]) {
                             c.makeInert();
                         } else {
                             c.remeasure(poses, step);
@@ -138,6 +138,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                         const bool warm = S::kWarmStart || isVelocityOnly<C>();
                         c.startImpulses(joint, step.warmStarting && warm, step.dtRatio);
                     }
+                    work.jointLetGo[at] = joint.letGo ? 1 : 0;
                 }
                 // The strategy's bias from the error at these poses (the constraint's own).
                 S::prepareBias(c, poses, step.invDt);
@@ -151,11 +152,27 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
 // phase (`afterPositionPhase`), so that what it adds counts; the others before it, as the velocity
 // phase left them (the pseudo-velocity pass reuses their accumulators, and ModifiedNGS's frozen
 // mass re-measures the directions the reactions are reported along).
+//
+// Constraints the next substep re-measures keep their impulses themselves: in an island where no
+// joint can break, they are stored (and checked) at the last substep only. Writing every joint
+// back at every substep was a sixth of `joint_grid`'s soft step. Their impulses go non-finite
+// only when the island diverged, and then their bodies are already discarded at the end of the
+// step; the joint is let go then.
 void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
-                        const SlotPool<Body>& bodies, float invDt, bool afterPositionPhase,
-                        IslandReport& report) {
-    work.groups.forEachGroup([&](auto strategy, auto& group, int) {
-        if (decltype(strategy)::kStoreAfterPositionPhase != afterPositionPhase) return;
+                        const SlotPool<Body>& bodies, const StepContext& step, bool lastSubstep,
+                        bool afterPositionPhase, IslandReport& report) {
+    const bool nextRemeasures = !lastSubstep && step.warmStarting &&
+                                jointRemeasuring.load(std::memory_order_relaxed) &&
+                                !work.schedule.jointsMayBreak;
+    const float invDt = step.invDt;
+    work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
+        using S = decltype(strategy);
+        using C = typename std::decay_t<decltype(group)>::value_type;
+        if (S::kStoreAfterPositionPhase != afterPositionPhase) return;
+        if constexpr (S::kKeptAcrossSubsteps && CanRemeasure<C>::value) {
+            if (nextRemeasures) return;
+        }
+        const std::int32_t start = work.schedule.groupStart[g];
         team.forBlocks(static_cast<int>(group.size()), [&](IndexRange mine) {
             for (int k = mine.begin; k < mine.end; ++k) {
                 const auto& c = group[k];
@@ -164,9 +181,11 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
                 // zero impulse can still be 0 * inf = NaN when its island diverged).
                 if (joint.letGo) continue;
                 c.storeImpulses(joint, invDt);
+                std::uint8_t& letGo = work.jointLetGo[static_cast<std::size_t>(start + k)];
                 // The bodies are still at their start-of-step poses (written back later).
                 if (!joint.hasFiniteReactions()) {
                     joint.letGoFor(JointLetGoReason::NonFinite, joint.separation(bodies));
+                    letGo = 1;
                     ++report.letGoJoints;
                 } else if (joint.breakForce > 0.0f || joint.breakTorque > 0.0f) {
                     // Finite components can still square past the float range: such a force is
@@ -179,6 +198,7 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
                         joint.letGoFor(
                             forceBroke ? JointLetGoReason::Force : JointLetGoReason::Torque,
                             joint.separation(bodies), forceBroke ? force : torque);
+                        letGo = 1;
                         ++report.letGoJoints;
                     }
                 }
@@ -366,7 +386,7 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
         });
     }
 
-    storeJointImpulses(team, work, storage.joints, bodies, step.invDt, false, mine);
+    storeJointImpulses(team, work, storage.joints, bodies, step, lastSubstep, false, mine);
     if (hasMouse) {
         team.once([&] {
             for (const MouseConstraint& c : work.mouseConstraints) {
@@ -382,7 +402,7 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
         team, work.groups, schedule, work.contactSolver, work.positions.data(), velocities,
         work.positionScratch, step.positionIterations, step.dt, substep);
     // After the relax sweeps, which add to the impulses (the contacts' NGS solves do not).
-    storeJointImpulses(team, work, storage.joints, bodies, step.invDt, true, mine);
+    storeJointImpulses(team, work, storage.joints, bodies, step, lastSubstep, true, mine);
     // Constraints rebuilt each substep read the impulses back from the manifolds; those built
     // once a step keep them until its end, where they also keep the first substep's approach.
     const bool builtOnce = work.contactSolver.builtOncePerStep();
@@ -430,6 +450,7 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     resizeBuffer(work.motion, slots);
     resizeBuffer(work.rotations, slots);
     work.groups.resize(schedule.groupStart);
+    resizeBuffer(work.jointLetGo, schedule.jointIds.size());
     work.contactSolver.reset(island.contactCount, step, &schedule.contactBatches);
     resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
     resizeBuffer(work.positionScratch.pseudo, slots);

@@ -50,6 +50,9 @@ struct IslandWorkspace {
     std::vector<SolverMotion> motion;
     std::vector<Rot> rotations;  // Rot(positions[i].a), for the contacts' set-up
     JointGroups groups;
+    // Per joint, in schedule order: let go this step (so later substeps keep its constraint
+    // inert without reading the joint).
+    std::vector<std::uint8_t> jointLetGo;
     std::vector<MouseConstraint> mouseConstraints;
     ContactSolver contactSolver;
     PositionPhaseScratch positionScratch;
