@@ -156,8 +156,8 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
 // Constraints the next substep re-measures keep their impulses themselves: in an island where no
 // joint can break, they are stored (and checked) at the last substep only. Writing every joint
 // back at every substep was a sixth of `joint_grid`'s soft step. Their impulses go non-finite
-// only when the island diverged, and then their bodies are already discarded at the end of the
-// step; the joint is let go then.
+// only when the island diverged, and then their bodies' solved state is not finite either (they
+// are discarded at the end of the step); the joint is let go then.
 void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
                         const SlotPool<Body>& bodies, const StepContext& step, bool lastSubstep,
                         bool afterPositionPhase, IslandReport& report) {
