@@ -25,9 +25,9 @@ long long warmStepAllocations(SceneOptions options, const std::string& name) {
     // which may allocate) and until the number of contacts has peaked: 10 s, or 7 s after a
     // late disturbance (the platformer's crate, dropped at 8 s, breaks a bridge whose planks
     // tumble into a pit for seconds after). A new peak may still come later (the far chain's
-    // swinging links have 7 contacts at most in their first 20 s, 12 in the 5 s after): the
-    // step's arrays are reserved for the contact pool rounded up to a power of two, so only a
-    // pool that has doubled allocates.
+    // swinging links reach a new most of contacts now and then, long after their first
+    // seconds): the step's arrays are reserved for the contact pool rounded up to a power of
+    // two, so only a pool that has doubled allocates.
     const int warmUp = std::max(600, scene.disturbanceEndStep + 420);
     for (int i = 0; i < warmUp; ++i) {
         if (scene.beforeStep) scene.beforeStep(scene, i);
