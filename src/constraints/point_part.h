@@ -75,13 +75,17 @@ inline Mat22 pointEffectiveMassForPositions(const ConstraintBodies& b, Vec2 rA, 
 }
 
 /// Radius vectors and effective mass from the current angles; returns the current error C.
-inline Vec2 preparePoint(const ConstraintBodies& b, PointPart& p, const SolverPose* positions) {
+inline Vec2 preparePoint(const ConstraintBodies& b, PointPart& p, const SolverPose* positions,
+                         const Rot& qA, const Rot& qB) {
     const SolverPose& A = positions[b.indexA];
     const SolverPose& B = positions[b.indexB];
-    p.rA = rotate(Rot(A.a), p.localRA);
-    p.rB = rotate(Rot(B.a), p.localRB);
+    p.rA = rotate(qA, p.localRA);
+    p.rB = rotate(qB, p.localRB);
     cacheInverse(p, pointEffectiveMass(b, p.rA, p.rB));
     return B.c + p.rB - A.c - p.rA;
+}
+inline Vec2 preparePoint(const ConstraintBodies& b, PointPart& p, const SolverPose* positions) {
+    return preparePoint(b, p, positions, Rot(positions[b.indexA].a), Rot(positions[b.indexB].a));
 }
 
 /// One Gauss-Seidel solve of K P = -(Cdot + bias) on the given velocities, softened under

@@ -77,6 +77,11 @@ struct RevoluteConstraint {
         preparePoint(bodies, point, poses);
         prepareAngle(bodies, angle, poses, step.invDt);
     }
+    /// The same, with each solver slot's rotation at these poses given (the same values).
+    void remeasure(const SolverPose* poses, const Rot* rotations, const StepContext& step) {
+        preparePoint(bodies, point, poses, rotations[bodies.indexA], rotations[bodies.indexB]);
+        prepareAngle(bodies, angle, poses, step.invDt);
+    }
 
     /// Warm starting: impulses scale with the step, so that they keep the force they stand
     /// for when dt changes. Without it, every impulse starts at zero.

@@ -96,7 +96,7 @@ bool beyondLetGoSeparation(const Joint& joint, float separationSquared, const St
 // keep a let-go joint inert (work.jointLetGo says which, so a re-measured joint is not read).
 void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
                    SlotPool<Joint>& joints, const StepContext& step, bool firstSubstep,
-                   IslandReport& report) {
+                   const Rot* rotations, IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
     // Without warm starting, each substep's impulses start at zero: rebuilt.
     const bool remeasure =
@@ -116,6 +116,12 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                     if (remeasure) {
                         if (work.jointLetGo[at]) {
                             c.makeInert();
+                        } else if constexpr (RemeasuresWithRotations<C>::value) {
+                            if (rotations) {
+                                c.remeasure(poses, rotations, step);
+                            } else {
+                                c.remeasure(poses, step);
+                            }
                         } else {
                             c.remeasure(poses, step);
                         }
@@ -340,11 +346,22 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
     const bool firstSubstep = substep == 0;
     const bool lastSubstep = substep == step.substepCount - 1;
     const bool contactsBuilt = !firstSubstep && work.contactSolver.builtOncePerStep();
+    // Joints re-measured at this substep read each body's rotation from work.rotations where
+    // that costs fewer sines and cosines than two per joint.
+    const bool jointsRemeasure = !firstSubstep && step.warmStarting &&
+                                 jointRemeasuring.load(std::memory_order_relaxed) &&
+                                 2 * island.jointCount >= island.bodyCount;
+    bool rotationsMeasured = false;
     integrateVelocities(team, island, work, bodies, step);
     if (contactsBuilt) {
         measureMotion(team, work);
     } else if (island.contactCount > 0) {
         measureRotations(team, work);
+        rotationsMeasured = true;
+    }
+    if (jointsRemeasure && !rotationsMeasured) {
+        measureRotations(team, work);
+        rotationsMeasured = true;
     }
     team.sync();
     team.forBlocks(island.contactCount, [&](IndexRange range) {
@@ -356,7 +373,8 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
                                        work.positions.data(), work.rotations.data());
         }
     });
-    prepareJoints(team, work, bodies, storage.joints, step, firstSubstep, mine);
+    prepareJoints(team, work, bodies, storage.joints, step, firstSubstep,
+                  rotationsMeasured ? work.rotations.data() : nullptr, mine);
     team.sync();
 
     // Warm start: contacts, then joints, then mouse joints; each velocity sweep then solves

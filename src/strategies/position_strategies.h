@@ -68,6 +68,14 @@ template <typename C>
 struct CanRemeasure<C, std::void_t<decltype(std::declval<C&>().remeasure(
                            std::declval<const SolverPose*>(), std::declval<const StepContext&>()))>>
     : std::true_type {};
+/// Those whose remeasure also takes each solver slot's rotation (remeasure(poses, rotations,
+/// step)), so that a body's sine and cosine are computed once, not once per joint.
+template <typename C, typename = void>
+struct RemeasuresWithRotations : std::false_type {};
+template <typename C>
+struct RemeasuresWithRotations<C, std::void_t<decltype(std::declval<C&>().remeasure(
+                                      std::declval<const SolverPose*>(), std::declval<const Rot*>(),
+                                      std::declval<const StepContext&>()))>> : std::true_type {};
 
 /// What a strategy does unless it says otherwise: rigid velocities, no bias, no position phase.
 struct StrategyDefaults {
