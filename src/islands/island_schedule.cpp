@@ -24,9 +24,14 @@ void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Joint>
                                  IslandSchedule& schedule) {
     std::array<std::int32_t, kJointGroupCount> sizes{};
     schedule.jointsMayBreak = false;
+    // One pass over the joints, which lie all over the pool: the groups are read from here on.
+    static_assert(kJointGroupCount <= 256, "a joint's group is kept in a byte");
+    resizeBuffer(jointGroups_, static_cast<std::size_t>(island.jointCount));
     for (int j = 0; j < island.jointCount; ++j) {
         const Joint& joint = joints[island.joints[j]];
-        ++sizes[jointGroup(joint)];
+        const int group = jointGroup(joint);
+        jointGroups_[static_cast<std::size_t>(j)] = static_cast<std::uint8_t>(group);
+        ++sizes[group];
         if (joint.breakForce > 0.0f || joint.breakTorque > 0.0f) schedule.jointsMayBreak = true;
     }
     schedule.groupStart[0] = 0;
@@ -42,7 +47,7 @@ void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Joint>
         if (sizes[g] == 0) continue;
         items_.clear();
         for (int j = 0; j < island.jointCount; ++j) {
-            if (jointGroup(joints[island.joints[j]]) == g) items_.push_back(j);
+            if (jointGroups_[static_cast<std::size_t>(j)] == g) items_.push_back(j);
         }
         if (schedule.colored) {
             coloring_.color(items_.data(), sizes[g], island.jointBodies, fixed_.data(),

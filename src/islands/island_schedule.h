@@ -92,6 +92,7 @@ public:
     /// Room to plan an island holding every body, joint and contact of the world.
     void reserve(const BufferBounds& bound) {
         fixed_.reserve(bound.bodies);
+        jointGroups_.reserve(bound.joints);
         items_.reserve(std::max(bound.joints, bound.contacts));
         order_.reserve(std::max(bound.joints, bound.contacts));
     }
@@ -108,6 +109,7 @@ private:
     std::vector<std::uint8_t> fixed_;  // per island body: never moves
     std::vector<std::int32_t> items_;
     std::vector<std::int32_t> order_;
+    std::vector<std::uint8_t> jointGroups_;  // per island joint: its group, read once
 };
 
 }  // namespace pivot
