@@ -22,8 +22,8 @@ struct SceneOptions {
     ContactCorrection contactCorrection = ContactCorrection::NGS;
     float hz = 60.0f;
     Vec2 gravity{0.0f, -10.0f};
-    int workerCount = 1;                                            ///< WorldDef::workerCount
-    int substepCount = 1;                                           ///< WorldDef::substepCount
+    int workerCount = 1;                                         ///< WorldDef::workerCount
+    int substepCount = 1;                                        ///< WorldDef::substepCount
     BroadPhaseBoxes broadPhaseBoxes = BroadPhaseBoxes::Compact;  ///< WorldDef's
     /// Continuous collision switched on or off after the scene is built; unset: as the scene
     /// has it (on, unless the scene calls keepContinuousOffForJoints).

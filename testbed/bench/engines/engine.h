@@ -17,8 +17,8 @@ constexpr float kTimeStep = 1.0f / 60.0f;
 /// What a scene asks of the world it is built into.
 struct WorldSettings {
     int threads = 1;
-    bool sleep = false;         ///< bodies may sleep
-    bool continuous = true;     ///< continuous collision
+    bool sleep = false;            ///< bodies may sleep
+    bool continuous = true;        ///< continuous collision
     bool predictiveBoxes = false;  ///< pivot2d: BroadPhaseBoxes::Predictive (others ignore it)
 };
 
