@@ -15,6 +15,12 @@ namespace {
 
 std::atomic<bool> jointRemeasuring{true};
 
+// Whether the substep after a first one re-measures the joints kept across substeps instead of
+// rebuilding them (without warm starting, each substep's impulses start at zero: rebuilt).
+bool laterSubstepsRemeasure(const StepContext& step) {
+    return step.warmStarting && jointRemeasuring.load(std::memory_order_relaxed);
+}
+
 // Copy body state into the solver slots, with private copies of the bodies that never move
 // (nothing integrates them, so a copy is simply the body's own state); with `keepStart`, the
 // poses also into stepStart.
@@ -98,9 +104,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                    SlotPool<Joint>& joints, const StepContext& step, bool firstSubstep,
                    const Rot* rotations, IslandReport& report) {
     const IslandSchedule& schedule = work.schedule;
-    // Without warm starting, each substep's impulses start at zero: rebuilt.
-    const bool remeasure =
-        !firstSubstep && step.warmStarting && jointRemeasuring.load(std::memory_order_relaxed);
+    const bool remeasure = !firstSubstep && laterSubstepsRemeasure(step);
     const SolverPose* poses = work.positions.data();
     work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
@@ -167,9 +171,8 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
 void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
                         const SlotPool<Body>& bodies, const StepContext& step, bool lastSubstep,
                         bool afterPositionPhase, IslandReport& report) {
-    const bool nextRemeasures = !lastSubstep && step.warmStarting &&
-                                jointRemeasuring.load(std::memory_order_relaxed) &&
-                                !work.schedule.jointsMayBreak;
+    const bool nextRemeasures =
+        !lastSubstep && laterSubstepsRemeasure(step) && !work.schedule.jointsMayBreak;
     const float invDt = step.invDt;
     work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
@@ -348,9 +351,8 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
     const bool contactsBuilt = !firstSubstep && work.contactSolver.builtOncePerStep();
     // Joints re-measured at this substep read each body's rotation from work.rotations where
     // that costs fewer sines and cosines than two per joint.
-    const bool jointsRemeasure = !firstSubstep && step.warmStarting &&
-                                 jointRemeasuring.load(std::memory_order_relaxed) &&
-                                 2 * island.jointCount >= island.bodyCount;
+    const bool jointsRemeasure =
+        !firstSubstep && laterSubstepsRemeasure(step) && 2 * island.jointCount >= island.bodyCount;
     bool rotationsMeasured = false;
     integrateVelocities(team, island, work, bodies, step);
     if (contactsBuilt) {
