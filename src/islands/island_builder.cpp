@@ -128,7 +128,10 @@ void IslandBuilder::collect(std::int32_t seed, SolverStorage& storage, IslandSet
         stack_.pop_back();
         Body& body = storage.bodies[bodyIndex];
         if (body.type == BodyType::Static) continue;  // does not connect islands
-        body.awake = true;  // keeps its sleep timer: it may still be at rest
+        // Keeps its sleep timer: it may still be at rest. Awake, it is a seed of its own next
+        // step, which may list the islands in another order: the next step searches again.
+        if (!body.awake) storage.islandRevision.bump();
+        body.awake = true;
         const std::int32_t self = body.islandIndex;
         for (std::int32_t m = body.mouseList; m != -1; m = storage.mouseJoints[m].next) {
             set.mouseJoints.push_back(m);

@@ -6,6 +6,7 @@
 #include "joints/mouse_joint.h"
 #include "model/body.h"
 #include "model/contact.h"
+#include "model/island_revision.h"
 #include "model/shape.h"
 
 namespace pivot {
@@ -17,6 +18,7 @@ struct SolverStorage {
     SlotPool<Joint>& joints;
     SlotPool<Contact>& contacts;
     SlotPool<MouseJoint>& mouseJoints;
+    IslandRevision& islandRevision;
 };
 
 }  // namespace pivot

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/slot_pool.h"
+#include "model/island_revision.h"
 #include "model/shape.h"
 #include "pivot/body.h"
 #include "pivot/constants.h"
@@ -119,7 +120,9 @@ inline bool holdAngularSpeed(float& w) {
 /// velocity outwards across that edge is stopped. Returns whether it had to.
 bool holdAtWorldEdge(Body& body);
 
-/// Sleep: no motion and no pending push until something wakes the body.
+/// Sleep: no motion and no pending push until something wakes the body. The islands change:
+/// the caller counts it in the world's IslandRevision (the stepper does so after its islands
+/// are solved, since islands fall asleep on several workers at once).
 inline void putToSleep(Body& body) {
     body.awake = false;
     body.sleepTime = 0.0f;
@@ -129,9 +132,10 @@ inline void putToSleep(Body& body) {
     body.torque = 0.0f;
 }
 
-/// Wake a body; static bodies have nothing to wake.
-inline void wakeUp(Body& body) {
+/// Wake a body; static bodies have nothing to wake. A sleeping body waking changes the islands.
+inline void wakeUp(Body& body, IslandRevision& islands) {
     if (body.type == BodyType::Static) return;
+    if (!body.awake) islands.bump();
     body.awake = true;
     body.sleepTime = 0.0f;
 }

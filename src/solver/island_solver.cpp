@@ -459,10 +459,17 @@ void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
 }
 
 void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
-                const SolverStorage& storage, const StepContext& step, int teamSize) {
+                const SolverStorage& storage, const StepContext& step, int teamSize,
+                std::uint64_t islandRevision) {
     const IslandView island = set.view(index);
     IslandSchedule& schedule = work.schedule;
-    work.scheduler.plan(island, storage.bodies, storage.joints, schedule);
+    const bool planned = islandRevision != IslandWorkspace::kNeverPlanned &&
+                         work.plannedAt == islandRevision && work.plannedIsland == index;
+    if (!planned) {
+        work.scheduler.plan(island, storage.bodies, storage.joints, schedule);
+        work.plannedIsland = index;
+        work.plannedAt = islandRevision;
+    }
     const std::size_t slots = static_cast<std::size_t>(schedule.slotCount(island));
     resizeBuffer(work.velocities, slots);
     resizeBuffer(work.positions, slots);

@@ -42,6 +42,11 @@ struct IslandReport {
 struct IslandWorkspace {
     IslandScheduler scheduler;
     IslandSchedule schedule;
+    // The island `schedule` was planned for, and the IslandRevision count its islands were
+    // searched at: the same island at the same count has the same plan.
+    static constexpr std::uint64_t kNeverPlanned = ~std::uint64_t{0};
+    int plannedIsland = -1;
+    std::uint64_t plannedAt = kNeverPlanned;
     std::vector<SolverVelocity> velocities;  // one per solver slot
     std::vector<SolverPose> positions;
     // Contacts built once a step (soft): the poses the step started from, and each slot's
@@ -63,10 +68,13 @@ struct IslandWorkspace {
 /// world (joint constraints, larger and rarely churning, grow as needed, at least twofold).
 void reserveWorkspace(IslandWorkspace& workspace, const BufferBounds& bound);
 
-/// Before a team solves island `index`, on one thread: plans its schedule and sizes every
-/// array of `workspace` for a team of `teamSize`.
+/// Before a team solves island `index`, on one thread: plans its schedule (unless `workspace`
+/// holds the plan of the same island at the same `islandRevision`, a count of
+/// IslandRevision's, or IslandWorkspace::kNeverPlanned to plan anyway) and sizes every array
+/// of `workspace` for a team of `teamSize`.
 void planIsland(const IslandSet& set, int index, IslandWorkspace& workspace,
-                const SolverStorage& storage, const StepContext& step, int teamSize);
+                const SolverStorage& storage, const StepContext& step, int teamSize,
+                std::uint64_t islandRevision);
 
 /// One member's part of advancing the planned island `index` by one step: every member of the
 /// team calls it with the same arguments. Stores the joints' and contacts' impulses and updates
@@ -82,8 +90,9 @@ void setJointRemeasuring(bool enabled);
 
 /// Plans and solves island `index` on the calling thread.
 inline IslandReport solveIsland(const IslandSet& set, int index, IslandWorkspace& workspace,
-                                SolverStorage& storage, const StepContext& step) {
-    planIsland(set, index, workspace, storage, step, 1);
+                                SolverStorage& storage, const StepContext& step,
+                                std::uint64_t islandRevision) {
+    planIsland(set, index, workspace, storage, step, 1, islandRevision);
     return solveIsland(Team{}, set, index, workspace, storage, step);
 }
 

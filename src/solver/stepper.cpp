@@ -1,12 +1,31 @@
 #include "solver/stepper.h"
 
 #include <algorithm>
+#include <atomic>
 
 namespace pivot {
 
 namespace {
 // Below this many island bodies in a step, the islands are solved on the calling thread.
 constexpr std::size_t kParallelBodies = 512;
+
+std::atomic<Stepper::IslandReuse> islandReuse{Stepper::IslandReuse::Keep};
+std::atomic<std::uint64_t> misKept{0};
+std::atomic<std::uint64_t> unchangedSteps{0};
+
+bool sameIslands(const IslandSet& x, const IslandSet& y) {
+    const auto sameRanges = [](const IslandSet::Range& a, const IslandSet::Range& b) {
+        return a.bodyBegin == b.bodyBegin && a.bodyEnd == b.bodyEnd &&
+               a.contactBegin == b.contactBegin && a.contactEnd == b.contactEnd &&
+               a.jointBegin == b.jointBegin && a.jointEnd == b.jointEnd &&
+               a.mouseBegin == b.mouseBegin && a.mouseEnd == b.mouseEnd;
+    };
+    return x.bodies == y.bodies && x.contacts == y.contacts && x.contactBodies == y.contactBodies &&
+           x.joints == y.joints && x.jointBodies == y.jointBodies &&
+           x.mouseJoints == y.mouseJoints && x.mouseBodies == y.mouseBodies &&
+           std::equal(x.ranges.begin(), x.ranges.end(), y.ranges.begin(), y.ranges.end(),
+                      sameRanges);
+}
 
 // Each count that grew past the last reservation is reserved for rounded up to a power of two.
 BufferBounds withRoom(const BufferBounds& reserved, const BufferBounds& needed) {
@@ -55,9 +74,35 @@ void Stepper::reserveWorkspaces() {
     }
 }
 
+void Stepper::setIslandReuse(IslandReuse reuse) {
+    islandReuse = reuse;
+}
+
+std::uint64_t Stepper::islandsMisKept() {
+    return misKept.load();
+}
+
+std::uint64_t Stepper::stepsWithIslandsUnchanged() {
+    return unchangedSteps.load();
+}
+
 StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
     reserveStepBuffers(storage);
-    builder_.build(storage, islands_);
+    // Nothing the search reads has changed since it found islands_: they are this step's too.
+    const IslandReuse reuse = islandReuse.load(std::memory_order_relaxed);
+    const std::uint64_t revision = storage.islandRevision.count();
+    const bool keep = searched_ && searchedAt_ == revision;
+    if (keep) unchangedSteps.fetch_add(1, std::memory_order_relaxed);
+    if (!keep || reuse != IslandReuse::Keep) {
+        if (keep && reuse == IslandReuse::Verify) verified_ = islands_;
+        builder_.build(storage, islands_);
+        if (keep && reuse == IslandReuse::Verify && !sameIslands(verified_, islands_)) ++misKept;
+        searched_ = true;
+        searchedAt_ = revision;
+    }
+    // Plans are kept with their islands, under Keep only (the others plan every step).
+    const std::uint64_t planRevision =
+        reuse == IslandReuse::Keep ? revision : IslandWorkspace::kNeverPlanned;
     reserveWorkspaces();
     const int islandCount = static_cast<int>(islands_.ranges.size());
     resizeBuffer(reports_, static_cast<std::size_t>(islandCount));
@@ -72,7 +117,7 @@ StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
             continue;
         }
         IslandWorkspace& workspace = workspaces_[0];
-        planIsland(islands_, i, workspace, storage, context, pool_.workerCount());
+        planIsland(islands_, i, workspace, storage, context, pool_.workerCount(), planRevision);
         pool_.region([&](int member) {
             IslandReport report =
                 solveIsland(Team(pool_, member), islands_, i, workspace, storage, context);
@@ -84,13 +129,16 @@ StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
     pool_.parallelFor(smallCount, islandsPerChunk, [&](int begin, int end, int worker) {
         for (int k = begin; k < end; ++k) {
             const int i = smallIslands_[k];
-            reports_[i] = solveIsland(islands_, i, workspaces_[worker], storage, context);
+            reports_[i] =
+                solveIsland(islands_, i, workspaces_[worker], storage, context, planRevision);
         }
     });
 
     StepTotals totals;
+    bool changed = false;  // an island fell asleep or let a joint go: the next step searches
     for (int i = 0; i < islandCount; ++i) {
         const IslandReport& report = reports_[i];
+        changed = changed || report.fellAsleep || report.letGoJoints > 0;
         const IslandSet::Range& r = islands_.ranges[i];
         ++totals.islands;
         totals.bodies += r.bodyEnd - r.bodyBegin;
@@ -102,6 +150,7 @@ StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
         totals.discardedBodies += report.discardedBodies;
         totals.positionIterations = std::max(totals.positionIterations, report.positionIterations);
     }
+    if (changed) storage.islandRevision.bump();
     return totals;
 }
 

@@ -1,7 +1,8 @@
-// Solving one step's islands: finds them, shares them out among the workers (a coloured island
-// to the whole team, the others whole to one worker each) and adds up what they report. Owns
-// the island buffers and the workspaces, reserved so that a warm step allocates nothing
-// (docs/architecture.md, "One step").
+// Solving one step's islands: finds them (or keeps the last step's, and their plans, when
+// nothing the search reads has changed: model/island_revision.h), shares them out among the
+// workers (a coloured island to the whole team, the others whole to one worker each) and adds
+// up what they report. Owns the island buffers and the workspaces, reserved so that a warm step
+// allocates nothing (docs/architecture.md, "One step").
 #pragma once
 
 #include <cstdint>
@@ -41,6 +42,16 @@ public:
     const IslandSet& islands() const { return islands_; }
     const IslandReport& report(int island) const { return reports_[island]; }
 
+    /// How a step comes by its islands, process-wide (for tests): Keep takes last step's when
+    /// nothing the search reads has changed since (IslandRevision), and their plans with them;
+    /// Search searches and plans every step; Verify searches every step and counts the steps
+    /// where keeping would have solved other islands than the search found (islandsMisKept).
+    enum class IslandReuse { Keep, Search, Verify };
+    static void setIslandReuse(IslandReuse reuse);
+    static std::uint64_t islandsMisKept();
+    /// Steps, process-wide, in which nothing the search reads had changed (whatever the mode).
+    static std::uint64_t stepsWithIslandsUnchanged();
+
 private:
     /// Sizes the island set for the world's pool capacities, when they grew.
     void reserveStepBuffers(const SolverStorage& storage);
@@ -55,6 +66,10 @@ private:
     std::vector<int> smallIslands_;            // islands solved whole by one worker
     BufferBounds reservedFor_;                 // the pool capacities the island set was sized for
     BufferBounds reservedWorkspaceFor_;        // the island totals the workspaces were sized for
+    // The IslandRevision count islands_ was searched at, if it was searched.
+    bool searched_ = false;
+    std::uint64_t searchedAt_ = 0;
+    IslandSet verified_;  // IslandReuse::Verify: the islands that would have been kept
 };
 
 }  // namespace pivot

@@ -32,9 +32,11 @@ void ContactManager::reportTouch(const Contact& contact, bool began) {
         (began ? sensorBeginEvents_ : sensorEndEvents_).push_back(event);
         return;
     }
-    // Whatever rested on the contact, or is pushed by it now, must notice.
-    wakeUp(bodies_[contact.bodyA()]);
-    wakeUp(bodies_[contact.bodyB()]);
+    // Whatever rested on the contact, or is pushed by it now, must notice; and the contact
+    // joins or leaves the islands.
+    islandRevision_.bump();
+    wakeUp(bodies_[contact.bodyA()], islandRevision_);
+    wakeUp(bodies_[contact.bodyB()], islandRevision_);
     (began ? beginEvents_ : endEvents_)
         .push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
 }
@@ -142,7 +144,8 @@ void ContactManager::updateContacts() {
         kEnded,
         kFate = 3,
         kAskFilter = 4,
-        kUpdated = 8
+        kUpdated = 8,
+        kWasDisabled = 16  // updated, and the last pre-solve answer had disabled it
     };
     resizeBuffer(contactOutcomes_, static_cast<std::size_t>(contacts_.capacity()));
     // A contact begins or ends once in the narrow phase and seldom more than once in continuous
@@ -181,13 +184,16 @@ void ContactManager::updateContacts() {
             }
             bool wasTouching = contact.touching;
             bool touching = updateContact(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
+            if (!contact.enabled) outcome |= kWasDisabled;
             contact.enabled = true;  // until the pre-solve callback says otherwise
             outcome |= kUpdated;
             if (touching != wasTouching) outcome |= touching ? kBegan : kEnded;
         }
     });
-    // Without a pre-solve callback only a fate or a filter question needs this loop.
-    const std::uint8_t interesting = preSolve_ ? 0xFF : std::uint8_t(kFate | kAskFilter);
+    // Without a pre-solve callback only a fate, a filter question or a contact enabled again
+    // (the callback was taken away) needs this loop.
+    const std::uint8_t interesting =
+        preSolve_ ? 0xFF : std::uint8_t(kFate | kAskFilter | kWasDisabled);
     for (std::int32_t index = 0; index < contacts_.capacity(); ++index) {
         const std::uint8_t outcome = contactOutcomes_[index];
         if ((outcome & interesting) == 0) continue;
@@ -208,6 +214,8 @@ void ContactManager::updateContacts() {
         if (fate == kBegan || fate == kEnded) reportTouch(contact, fate == kBegan);
         // Asked only about contacts this update recomputed (a sleeping pair keeps its answer).
         if ((outcome & kUpdated) && wantsPreSolve(contact)) contact.enabled = askPreSolve(contact);
+        const bool wasEnabled = (outcome & kWasDisabled) == 0;
+        if ((outcome & kUpdated) && contact.enabled != wasEnabled) islandRevision_.bump();
     }
 }
 
@@ -218,8 +226,10 @@ bool ContactManager::updateContactNow(std::int32_t index) {
         updateContact(contact, shapes_[contact.shapeA], bodies_[contact.bodyA()].xf,
                       shapes_[contact.shapeB], bodies_[contact.bodyB()].xf);
     if (touching != wasTouching) reportTouch(contact, touching);
+    const bool wasEnabled = contact.enabled;
     contact.enabled = true;
     if (wantsPreSolve(contact)) contact.enabled = askPreSolve(contact);
+    if (contact.enabled != wasEnabled) islandRevision_.bump();
     return touching && contact.enabled;
 }
 
@@ -350,13 +360,13 @@ void ContactManager::refilterBody(std::int32_t bodyIndex) {
         Contact& contact = contacts_[edgeOwner(key)];
         int side = edgeSide(key);
         contact.needsFiltering = true;
-        wakeUp(bodies_[contact.edges[1 - side].body]);
+        wakeUp(bodies_[contact.edges[1 - side].body], islandRevision_);
         key = contact.edges[side].nextKey;
     }
     for (std::int32_t key = body.jointList; key != -1;) {
         const Joint& joint = joints_[edgeOwner(key)];
         int side = edgeSide(key);
-        wakeUp(bodies_[joint.edges[1 - side].body]);
+        wakeUp(bodies_[joint.edges[1 - side].body], islandRevision_);
         key = joint.edges[side].nextKey;
     }
     for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {

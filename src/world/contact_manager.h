@@ -24,13 +24,18 @@ namespace pivot {
 class ContactManager {
 public:
     ContactManager(SlotPool<Body>& bodies, SlotPool<Shape>& shapes, SlotPool<Joint>& joints,
-                   SlotPool<Contact>& contacts, TaskPool& pool, std::uint32_t worldId)
+                   SlotPool<Contact>& contacts, IslandRevision& islandRevision, TaskPool& pool,
+                   std::uint32_t worldId)
         : bodies_(bodies),
           shapes_(shapes),
           joints_(joints),
           contacts_(contacts),
+          islandRevision_(islandRevision),
           pool_(pool),
           worldId_(worldId) {}
+
+    /// Counts the changes to the islands (touch events, pre-solve answers, wakings).
+    IslandRevision& islandRevision() { return islandRevision_; }
 
     BroadPhase& broadPhase() { return broadPhase_; }
     const BroadPhase& broadPhase() const { return broadPhase_; }
@@ -144,6 +149,7 @@ private:
     SlotPool<Shape>& shapes_;
     SlotPool<Joint>& joints_;
     SlotPool<Contact>& contacts_;
+    IslandRevision& islandRevision_;
     TaskPool& pool_;
     std::uint32_t worldId_;
 

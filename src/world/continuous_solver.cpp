@@ -231,7 +231,7 @@ void ContinuousSolver::buildIsland(std::int32_t contactIndex, float alpha, SlotP
             if (bodySlot_[otherIndex] >= 0) continue;
             bodySlot_[otherIndex] = static_cast<std::int32_t>(islandBodies_.size());
             islandBodies_.push_back(otherIndex);
-            wakeUp(other);
+            wakeUp(other, contactManager.islandRevision());
             tunnelFlags_[static_cast<std::size_t>(otherIndex)] = tunnelFlags(other);
         }
     }
@@ -422,8 +422,8 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
             beforeB.restore(b);
             continue;
         }
-        wakeUp(a);
-        wakeUp(b);
+        wakeUp(a, contactManager.islandRevision());
+        wakeUp(b, contactManager.islandRevision());
         tunnelFlags_[static_cast<std::size_t>(contacts[contactIndex].bodyA())] = tunnelFlags(a);
         tunnelFlags_[static_cast<std::size_t>(contacts[contactIndex].bodyB())] = tunnelFlags(b);
 

@@ -119,7 +119,7 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     moveEvents.clear();
     contactManager.update();
 
-    SolverStorage storage{bodies, shapes, joints, contacts, mouseJoints};
+    SolverStorage storage{bodies, shapes, joints, contacts, mouseJoints, islandRevision};
     const StepTotals totals = stepper.solve(storage, context);
     stats = StepStats{};
     stats.islandCount = totals.islands;

@@ -41,7 +41,7 @@ World::Impl::Impl(const WorldDef& def)
       substepCount(def.substepCount),
       hitEventThreshold(def.hitEventThreshold),
       pool(def.workerCount),
-      contactManager(bodies, shapes, joints, contacts, pool, id),
+      contactManager(bodies, shapes, joints, contacts, islandRevision, pool, id),
       stepper(pool) {
     contactManager.broadPhase().setBoxes(def.broadPhaseBoxes);
 }
@@ -60,7 +60,7 @@ std::int32_t World::Impl::mouseJointIndex(const char* call, MouseJointId id) con
 }
 
 void World::Impl::wakeAll() {
-    bodies.forEach([](std::int32_t, Body& b) { wakeUp(b); });
+    bodies.forEach([this](std::int32_t, Body& b) { wakeUp(b, islandRevision); });
 }
 
 World::World(const WorldDef& def) {

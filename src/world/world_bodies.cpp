@@ -46,6 +46,7 @@ BodyId World::createBody(const BodyDef& def) {
     body.continuous = def.continuous;
     std::int32_t index = impl_->bodies.insert(body);
     updateBodyMass(impl_->bodies[index], impl_->shapes);
+    impl_->islandRevision.bump();
     return impl_->bodyId(index);
 }
 
@@ -57,19 +58,20 @@ void World::destroyBody(BodyId id) {
     // Joints first (waking what they held), then contacts (waking what touched), then shapes.
     while (body.jointList != -1) {
         const Joint& joint = w.joints[edgeOwner(body.jointList)];
-        wakeUp(w.bodies[joint.bodyA()]);
-        wakeUp(w.bodies[joint.bodyB()]);
+        wakeUp(w.bodies[joint.bodyA()], w.islandRevision);
+        wakeUp(w.bodies[joint.bodyB()], w.islandRevision);
         w.removeJointAndItsGears(edgeOwner(body.jointList));
     }
     while (body.contactList != -1) {
         const Contact& contact = w.contacts[edgeOwner(body.contactList)];
-        wakeUp(w.bodies[contact.bodyA()]);
-        wakeUp(w.bodies[contact.bodyB()]);
+        wakeUp(w.bodies[contact.bodyA()], w.islandRevision);
+        wakeUp(w.bodies[contact.bodyB()], w.islandRevision);
         w.contactManager.destroyContact(edgeOwner(body.contactList));
     }
     while (body.shapeList != -1) w.removeShape(body.shapeList);
     while (body.mouseList != -1) w.removeMouseJoint(body.mouseList);
     w.bodies.erase(index);
+    w.islandRevision.bump();
 }
 
 bool World::isValid(BodyId id) const {
@@ -120,6 +122,7 @@ void World::setBodyType(BodyId id, BodyType type) {
     }
     body.sleepTime = 0.0f;
     body.awake = true;
+    w.islandRevision.bump();  // a static body joins islands, a dynamic one seeds them
     // Under BroadPhaseBoxes::Compact static bodies' proxies live in a tree of their own.
     for (std::int32_t s = body.shapeList; s != -1; s = w.shapes[s].next) {
         Shape& shape = w.shapes[s];
@@ -183,8 +186,9 @@ void World::setBodyAwake(BodyId id, bool awake) {
     Body& b = impl_->bodies[impl_->bodyIndex("World::setBodyAwake", id)];
     if (b.type == BodyType::Static) return;
     if (awake) {
-        wakeUp(b);
+        wakeUp(b, impl_->islandRevision);
     } else {
+        if (b.awake) impl_->islandRevision.bump();
         putToSleep(b);
     }
 }
@@ -203,7 +207,7 @@ void World::setBodyLinearDamping(BodyId id, float damping) {
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
     requireNonNegative(call, "damping", damping);
     b.linearDamping = damping;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 float World::bodyAngularDamping(BodyId id) const {
@@ -216,7 +220,7 @@ void World::setBodyAngularDamping(BodyId id, float damping) {
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
     requireNonNegative(call, "damping", damping);
     b.angularDamping = damping;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 float World::bodyGravityScale(BodyId id) const {
@@ -229,7 +233,7 @@ void World::setBodyGravityScale(BodyId id, float scale) {
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
     requireWithin(call, "scale", scale, kMaxGravityScale, "kMaxGravityScale");
     b.gravityScale = scale;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 void World::setBodyFixedRotation(BodyId id, bool fixedRotation) {
@@ -245,14 +249,14 @@ void World::setBodyFixedRotation(BodyId id, bool fixedRotation) {
     }
     // The inertia comes and goes with the flag; the centre of mass stays where it is.
     updateBodyMass(b, w.shapes);
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 void World::setBodySleepAllowed(BodyId id, bool allowed) {
     impl_->requireNotInCallback("World::setBodySleepAllowed");
     Body& b = impl_->bodies[impl_->bodyIndex("World::setBodySleepAllowed", id)];
     b.allowSleep = allowed;
-    if (!allowed) wakeUp(b);
+    if (!allowed) wakeUp(b, impl_->islandRevision);
 }
 
 bool World::isBodyContinuous(BodyId id) const {
@@ -296,7 +300,7 @@ void World::setBodyTransform(BodyId id, Vec2 position, float angle) {
     // A teleport is not a motion: the broad-phase boxes jump without a swept extent.
     w.contactManager.synchronizeShapes(index, false);
     w.contactManager.markNewShapes();
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 // What calls may do to a body's motion. One rule for the velocity setters and for forces,
@@ -368,7 +372,7 @@ void World::setBodyLinearVelocity(BodyId id, Vec2 velocity) {
     Body& b = bodyTakingVelocity(*impl_, call, id);
     requireWithin(call, "velocity", velocity, kMaxSpeed, "kMaxSpeed");
     b.linearVelocity = velocity;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 void World::setBodyAngularVelocity(BodyId id, float omega) {
@@ -381,7 +385,7 @@ void World::setBodyAngularVelocity(BodyId id, float omega) {
                        formatFloat(omega) + ")");
     }
     b.angularVelocity = omega;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
@@ -401,7 +405,7 @@ void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
                        b.invInertia * torque);
     b.force = total;
     b.torque = torque;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 void World::applyForceToCenter(BodyId id, Vec2 force) {
@@ -413,7 +417,7 @@ void World::applyForceToCenter(BodyId id, Vec2 force) {
     requireAccumulated(call, "pending force", total);
     requireAccumulated(call, "linear acceleration (pending force / mass)", b.invMass * total);
     b.force = total;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 void World::applyTorque(BodyId id, float torque) {
@@ -427,7 +431,7 @@ void World::applyTorque(BodyId id, float torque) {
     requireAccumulated(call, "angular acceleration (pending torque / inertia)",
                        b.invInertia * total);
     b.torque = total;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
@@ -442,7 +446,7 @@ void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
     requireAccumulated(call, "angular velocity", w, kMaxAngularSpeed, "kMaxAngularSpeed");
     b.linearVelocity = v;
     b.angularVelocity = w;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 void World::applyAngularImpulse(BodyId id, float impulse) {
@@ -454,7 +458,7 @@ void World::applyAngularImpulse(BodyId id, float impulse) {
     const float w = b.angularVelocity + b.invInertia * impulse;
     requireAccumulated(call, "angular velocity", w, kMaxAngularSpeed, "kMaxAngularSpeed");
     b.angularVelocity = w;
-    wakeUp(b);
+    wakeUp(b, impl_->islandRevision);
 }
 
 std::vector<BodyId> World::bodyIds() const {

@@ -19,6 +19,7 @@
 #include "joints/mouse_joint.h"
 #include "model/body.h"
 #include "model/contact.h"
+#include "model/island_revision.h"
 #include "model/shape.h"
 #include "pivot/world.h"
 #include "solver/stepper.h"
@@ -51,7 +52,8 @@ struct World::Impl {
     SlotPool<Joint> joints;
     SlotPool<Contact> contacts;
     SlotPool<MouseJoint> mouseJoints;
-    TaskPool pool;  // before the parts that share it
+    IslandRevision islandRevision;  // before the parts that count in it
+    TaskPool pool;                  // before the parts that share it
     ContactManager contactManager;
     Stepper stepper;
     ContinuousSolver continuous;

@@ -34,8 +34,8 @@ void World::setJointLimit(JointId id, const JointLimit& limit) {
     r.upperAngle = limit.upper;
     r.lowerImpulse = 0.0f;
     r.upperImpulse = 0.0f;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 JointMotor World::jointMotor(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndexOfTypes("World::jointMotor", id,
@@ -60,8 +60,8 @@ void World::setJointMotor(JointId id, const JointMotor& motor) {
         r.motorSpeed = motor.speed;
         r.maxMotorTorque = motor.maxTorque;
     }
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 float World::distanceJointRestLength(JointId id) const {
@@ -76,8 +76,8 @@ void World::setDistanceJointRestLength(JointId id, float length) {
     checkRestLength(call, "length", length);
     Joint& j = impl_->joints[index];
     std::get<DistanceJoint>(j.data).length = length;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 LengthLimit World::distanceJointLimit(JointId id) const {
     const DistanceJoint& d =
@@ -93,8 +93,8 @@ void World::setDistanceJointLimit(JointId id, const LengthLimit& limit) {
     DistanceJoint& d = std::get<DistanceJoint>(j.data);
     setLimit(d, limit);
     d.lowerImpulse = d.upperImpulse = 0.0f;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 JointSpring World::distanceJointSpring(JointId id) const {
     const DistanceJoint& d =
@@ -108,8 +108,8 @@ void World::setDistanceJointSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     setSpring(std::get<DistanceJoint>(j.data), spring);
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 Vec2 World::pulleyJointGroundAnchorA(JointId id) const {
@@ -169,8 +169,8 @@ void World::setJointMaxForce(JointId id, float force) {
     Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
     requireNonNegative(call, "force", force);
     *velocityJointLimits(j).force = force;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 float World::jointMaxTorque(JointId id) const {
     Joint& j = impl_->joints[impl_->velocityJointIndex("World::jointMaxTorque", id)];
@@ -182,8 +182,8 @@ void World::setJointMaxTorque(JointId id, float torque) {
     Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
     requireNonNegative(call, "torque", torque);
     *velocityJointLimits(j).torque = torque;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 Vec2 World::motorJointLinearOffset(JointId id) const {
@@ -197,8 +197,8 @@ void World::setMotorJointLinearOffset(JointId id, Vec2 offset) {
     requireCoordinate(call, "offset", offset);
     Joint& j = impl_->joints[index];
     std::get<MotorJoint>(j.data).linearOffset = offset;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 float World::motorJointAngularOffset(JointId id) const {
     return impl_->jointData<MotorJoint>("World::motorJointAngularOffset", id, JointType::Motor)
@@ -211,8 +211,8 @@ void World::setMotorJointAngularOffset(JointId id, float offset) {
     requireMagnitude(call, "offset", offset);
     Joint& j = impl_->joints[index];
     std::get<MotorJoint>(j.data).angularOffset = offset;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 float World::motorJointCorrectionFactor(JointId id) const {
     return impl_->jointData<MotorJoint>("World::motorJointCorrectionFactor", id, JointType::Motor)
@@ -225,8 +225,8 @@ void World::setMotorJointCorrectionFactor(JointId id, float factor) {
     requireInRange(call, "factor", factor, 0.0f, 1.0f);
     Joint& j = impl_->joints[index];
     std::get<MotorJoint>(j.data).correctionFactor = factor;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 // --- prismatic and wheel joints ----------------------------------------------------------------
@@ -304,8 +304,8 @@ void World::setPrismaticJointLimit(JointId id, const TranslationLimit& limit) {
     checkTranslationLimit(call, "limit", limit);
     Joint& j = impl_->joints[index];
     setLimit(std::get<PrismaticJoint>(j.data), limit);
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 LinearMotor World::prismaticJointMotor(JointId id) const {
     const PrismaticJoint& p =
@@ -319,8 +319,8 @@ void World::setPrismaticJointMotor(JointId id, const LinearMotor& motor) {
     checkLinearMotor(call, "motor", motor);
     Joint& j = impl_->joints[index];
     setMotor(std::get<PrismaticJoint>(j.data), motor);
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 JointSpring World::prismaticJointSpring(JointId id) const {
     const PrismaticJoint& p =
@@ -334,8 +334,8 @@ void World::setPrismaticJointSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     setSpring(std::get<PrismaticJoint>(j.data), spring);
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 float World::prismaticJointMotorForce(JointId id) const {
     const char* call = "World::prismaticJointMotorForce";
@@ -370,8 +370,8 @@ void World::setGearJointRatio(JointId id, float ratio) {
     const float error = g.error(a, b, c, d);
     g.ratio = ratio;
     g.constant = (g.side1.coordinate(c, a) + ratio * g.side2.coordinate(d, b)) - error;
-    wakeUp(w.bodies[joint.bodyA()]);
-    wakeUp(w.bodies[joint.bodyB()]);
+    wakeUp(w.bodies[joint.bodyA()], w.islandRevision);
+    wakeUp(w.bodies[joint.bodyB()], w.islandRevision);
 }
 
 // --- weld joints -----------------------------------------------------------------------------
@@ -391,8 +391,8 @@ void World::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     std::get<WeldJoint>(j.data).linearSpring = spring;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
     impl_->requireNotInCallback("World::setWeldJointAngularSpring");
@@ -401,8 +401,8 @@ void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     std::get<WeldJoint>(j.data).angularSpring = spring;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 // --- wheel joints ----------------------------------------------------------------------------
@@ -417,8 +417,8 @@ void World::setWheelJointSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     std::get<WheelJoint>(j.data).spring = spring;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 TranslationLimit World::wheelJointLimit(JointId id) const {
     const WheelJoint& w =
@@ -432,8 +432,8 @@ void World::setWheelJointLimit(JointId id, const TranslationLimit& limit) {
     checkTranslationLimit(call, "limit", limit);
     Joint& j = impl_->joints[index];
     setLimit(std::get<WheelJoint>(j.data), limit);
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 }  // namespace pivot

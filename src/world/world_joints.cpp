@@ -56,10 +56,11 @@ JointId World::Impl::addJoint(const Joint& joint) {
     const std::int32_t a = joint.bodyA(), b = joint.bodyB();
     const std::int32_t index = joints.insert(joint);
     linkEdges(joints, bodies, &Body::jointList, index);
+    islandRevision.bump();
     // A joint that forbids its bodies to collide ends any contact between them.
     if (!joint.collideConnected) contactManager.refilterBodyPair(a, b);
-    wakeUp(bodies[a]);
-    wakeUp(bodies[b]);
+    wakeUp(bodies[a], islandRevision);
+    wakeUp(bodies[b], islandRevision);
     return jointId(index);
 }
 
@@ -73,8 +74,9 @@ void World::Impl::removeJoint(std::int32_t index) {
     bool preventedCollision = !joint.collideConnected;
     unlinkEdges(joints, bodies, &Body::jointList, index);
     joints.erase(index);
-    wakeUp(bodies[a]);
-    wakeUp(bodies[b]);
+    islandRevision.bump();
+    wakeUp(bodies[a], islandRevision);
+    wakeUp(bodies[b], islandRevision);
     if (preventedCollision) contactManager.refilterBodyPair(a, b);
 }
 
@@ -83,8 +85,8 @@ void World::Impl::removeJointAndItsGears(std::int32_t index) {
         joints.forEach([&](std::int32_t gearIndex, const Joint& gear) {
             const auto* g = std::get_if<GearJoint>(&gear.data);
             if (g && (g->side1.joint == index || g->side2.joint == index)) {
-                wakeUp(bodies[gear.bodyA()]);
-                wakeUp(bodies[gear.bodyB()]);
+                wakeUp(bodies[gear.bodyA()], islandRevision);
+                wakeUp(bodies[gear.bodyB()], islandRevision);
                 removeJoint(gearIndex);
             }
         });
@@ -147,8 +149,9 @@ void World::rearmJoint(JointId id) {
     Joint& j = impl_->joints[impl_->jointIndex("World::rearmJoint", id)];
     if (!j.letGo) return;
     j.letGo = false;  // letGoFor cleared its impulses
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    impl_->islandRevision.bump();
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 float World::jointLetGoSeparation(JointId id) const {
@@ -189,8 +192,8 @@ void World::setJointCollideConnected(JointId id, bool collide) {
     if (j.collideConnected == collide) return;
     j.collideConnected = collide;
     w.contactManager.refilterBodyPair(j.bodyA(), j.bodyB());
-    wakeUp(w.bodies[j.bodyA()]);
-    wakeUp(w.bodies[j.bodyB()]);
+    wakeUp(w.bodies[j.bodyA()], w.islandRevision);
+    wakeUp(w.bodies[j.bodyB()], w.islandRevision);
 }
 
 float World::jointBreakForce(JointId id) const {
@@ -202,8 +205,9 @@ void World::setJointBreakForce(JointId id, float force) {
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requireNonNegative(call, "force", force);
     j.breakForce = force;
-    wakeUp(impl_->bodies[j.bodyA()]);  // a sleeping joint is not measured
-    wakeUp(impl_->bodies[j.bodyB()]);
+    impl_->islandRevision.bump();                             // the island plans read it
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);  // a sleeping joint is not measured
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 float World::jointBreakTorque(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointBreakTorque", id)].breakTorque;
@@ -214,8 +218,9 @@ void World::setJointBreakTorque(JointId id, float torque) {
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requireNonNegative(call, "torque", torque);
     j.breakTorque = torque;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    impl_->islandRevision.bump();  // the island plans read it
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 Vec2 World::jointReactionForce(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointReactionForce", id)].reactionForce();
@@ -244,8 +249,9 @@ void World::setJointPositionSolver(JointId id, PositionSolver solver) {
     requirePositionError(call, id.index, j);
     checkSolver(call, "solver", solver);
     j.solver = solver;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    impl_->islandRevision.bump();  // the island plans read it
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 float World::jointBiasFactor(JointId id) const {
@@ -260,8 +266,8 @@ void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     if (biasFactor) checkBiasFactor(call, "biasFactor", *biasFactor);
     j.hasBiasOverride = biasFactor.has_value();
     j.biasOverride = biasFactor.value_or(0.0f);
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 JointSoftness World::jointSoftness(JointId id) const {
@@ -275,8 +281,8 @@ void World::setJointSoftness(JointId id, const JointSoftness& softness) {
     requirePositionError(call, id.index, j);
     checkSoftness(call, "softness", softness);
     j.softness = softness;
-    wakeUp(impl_->bodies[j.bodyA()]);
-    wakeUp(impl_->bodies[j.bodyB()]);
+    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
+    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
 }
 
 std::uint64_t World::jointUserData(JointId id) const {

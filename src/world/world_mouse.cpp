@@ -11,7 +11,8 @@ void World::Impl::removeMouseJoint(std::int32_t index) {
     while (*link != index) link = &mouseJoints[*link].next;
     *link = mouseJoints[index].next;
     mouseJoints.erase(index);
-    wakeUp(body);
+    islandRevision.bump();
+    wakeUp(body, islandRevision);
 }
 
 MouseJointId World::createMouseJoint(const MouseJointDef& def) {
@@ -36,7 +37,8 @@ MouseJointId World::createMouseJoint(const MouseJointDef& def) {
     joint.next = body.mouseList;
     std::int32_t index = w.mouseJoints.insert(joint);
     w.bodies[bodyIndex].mouseList = index;
-    wakeUp(w.bodies[bodyIndex]);
+    w.islandRevision.bump();
+    wakeUp(w.bodies[bodyIndex], w.islandRevision);
     return w.mouseJointId(index);
 }
 
@@ -56,7 +58,7 @@ void World::setMouseTarget(MouseJointId id, Vec2 target) {
     MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
     requireCoordinate(call, "target", target);
     joint.target = target;
-    wakeUp(impl_->bodies[joint.body]);
+    wakeUp(impl_->bodies[joint.body], impl_->islandRevision);
 }
 
 Vec2 World::mouseTarget(MouseJointId id) const {
@@ -76,7 +78,7 @@ void World::setMouseJointMaxForce(MouseJointId id, float force) {
     MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
     requirePositive(call, "force", force);
     joint.maxForce = force;
-    wakeUp(impl_->bodies[joint.body]);
+    wakeUp(impl_->bodies[joint.body], impl_->islandRevision);
 }
 float World::mouseJointHertz(MouseJointId id) const {
     return impl_->mouseJoints[impl_->mouseJointIndex("World::mouseJointHertz", id)].hertz;
@@ -93,7 +95,7 @@ void World::setMouseJointSpring(MouseJointId id, float hertz, float dampingRatio
     requireNonNegative(call, "dampingRatio", dampingRatio);
     joint.hertz = hertz;
     joint.dampingRatio = dampingRatio;
-    wakeUp(impl_->bodies[joint.body]);
+    wakeUp(impl_->bodies[joint.body], impl_->islandRevision);
 }
 
 }  // namespace pivot

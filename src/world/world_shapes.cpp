@@ -46,7 +46,7 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
     w.contactManager.markNewShapes();
     // A sleeping body stays asleep, as Box2D's do: a body made asleep (BodyDef::isAwake false)
     // is given its shapes and sleeps on until something wakes it.
-    if (body.awake) wakeUp(body);
+    if (body.awake) wakeUp(body, w.islandRevision);
     return w.shapeId(index);
 }
 
@@ -222,7 +222,7 @@ void World::destroyShape(ShapeId id) {
                                  w.bodies[bodyIndex]);
     w.removeShape(index);
     updateBodyMass(w.bodies[bodyIndex], w.shapes);
-    wakeUp(w.bodies[bodyIndex]);
+    wakeUp(w.bodies[bodyIndex], w.islandRevision);
 }
 
 bool World::isValid(ShapeId id) const {
@@ -345,12 +345,13 @@ void World::setShapePreSolveEnabled(ShapeId id, bool enabled) {
     // A sleeping pair is not asked: wake what the shape touches (a static platform does not
     // sleep, the bodies on it do).
     Body& body = w.bodies[w.shapes[index].body];
-    wakeUp(body);
+    wakeUp(body, w.islandRevision);
     for (std::int32_t key = body.contactList; key != -1;) {
         const Contact& c = w.contacts[edgeOwner(key)];
         const int side = edgeSide(key);
         key = c.edges[side].nextKey;
-        if (c.shapeA == index || c.shapeB == index) wakeUp(w.bodies[c.edges[1 - side].body]);
+        if (c.shapeA == index || c.shapeB == index)
+            wakeUp(w.bodies[c.edges[1 - side].body], w.islandRevision);
     }
 }
 
@@ -379,7 +380,7 @@ void World::setShapeSensor(ShapeId id, bool sensor) {
     shape.sensor = sensor;
     w.contactManager.broadPhase().touchProxy(shape.proxyId);
     w.contactManager.markNewShapes();
-    wakeUp(body);
+    wakeUp(body, w.islandRevision);
 }
 
 void World::setShapeFriction(ShapeId id, float friction) {
@@ -391,7 +392,7 @@ void World::setShapeFriction(ShapeId id, float friction) {
     requireNonNegative(call, "friction", friction);
     w.shapes[index].friction = friction;
     remixContacts(w, index);
-    wakeUp(w.bodies[w.shapes[index].body]);
+    wakeUp(w.bodies[w.shapes[index].body], w.islandRevision);
 }
 
 void World::setShapeRestitution(ShapeId id, float restitution) {
@@ -402,7 +403,7 @@ void World::setShapeRestitution(ShapeId id, float restitution) {
     requireInRange(call, "restitution", restitution, 0.0f, 1.0f);
     w.shapes[index].restitution = restitution;
     remixContacts(w, index);
-    wakeUp(w.bodies[w.shapes[index].body]);
+    wakeUp(w.bodies[w.shapes[index].body], w.islandRevision);
 }
 
 float World::shapeDensity(ShapeId id) const {
@@ -426,7 +427,7 @@ void World::setShapeDensity(ShapeId id, float density) {
     requireMotionAfterMassChange(call, bodyAfterMassChange(body, w.shapes, change), body);
     shape.density = density;
     updateBodyMass(body, w.shapes);
-    wakeUp(body);
+    wakeUp(body, w.islandRevision);
 }
 
 Filter World::shapeFilter(ShapeId id) const {
@@ -458,7 +459,7 @@ void World::setShapeFilter(ShapeId id, const Filter& filter) {
     }
     w.contactManager.broadPhase().touchProxy(shape.proxyId);
     w.contactManager.markNewShapes();
-    wakeUp(w.bodies[shape.body]);
+    wakeUp(w.bodies[shape.body], w.islandRevision);
 }
 
 }  // namespace pivot

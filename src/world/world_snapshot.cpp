@@ -666,6 +666,7 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     w.hitEventShapeCount = 0;
     w.shapes.forEach([&](std::int32_t, const Shape& s) { w.hitEventShapeCount += s.hitEvents; });
     w.contactManager.adoptState(std::move(contactState));
+    w.islandRevision.bump();
 }
 
 }  // namespace pivot

@@ -4,6 +4,7 @@
 #include "islands/island_builder.h"
 #include "pivot/pivot.h"
 #include "scenes/scene.h"
+#include "solver/stepper.h"
 
 using namespace pivot;
 
@@ -101,4 +102,87 @@ TEST(Islands, TheContactTableFindsWhatTheListsFind) {
             }
         }
     }
+}
+
+namespace {
+
+struct IslandReuse {
+    explicit IslandReuse(Stepper::IslandReuse reuse) { Stepper::setIslandReuse(reuse); }
+    ~IslandReuse() { Stepper::setIslandReuse(Stepper::IslandReuse::Keep); }
+};
+
+}  // namespace
+
+TEST(Islands, KeptIslandsAreTheOnesTheSearchFinds) {
+    // A step keeps the last step's islands, and their plans, when nothing the search reads has
+    // changed since (IslandRevision). Every scene (scripted events, sleep, contacts made and
+    // ended, joints let go) on one and two workers: searched every step, no step that would
+    // have kept its islands finds others; and a world that keeps them steps to the same bits
+    // as one that searches and plans every step. (pivot-fuzz --verify-islands drives the
+    // world's calls between steps the same way.)
+    using scenes::SceneOptions;
+    for (const scenes::SceneInfo& info : scenes::allScenes()) {
+        for (int workers = 1; workers <= 2; ++workers) {
+            SceneOptions options;
+            options.workerCount = workers;
+            scenes::Scene kept = scenes::buildScene(info, options);
+            scenes::Scene searched = scenes::buildScene(info, options);
+            const std::uint64_t misKeptBefore = Stepper::islandsMisKept();
+            for (int i = 0; i < 200; ++i) {
+                if (kept.beforeStep) kept.beforeStep(kept, i);
+                if (searched.beforeStep) searched.beforeStep(searched, i);
+                {
+                    IslandReuse reuse(Stepper::IslandReuse::Keep);
+                    kept.world->step(1.0f / options.hz);
+                }
+                {
+                    IslandReuse reuse(Stepper::IslandReuse::Verify);
+                    searched.world->step(1.0f / options.hz);
+                }
+                ASSERT_EQ(kept.world->stateHash(), searched.world->stateHash())
+                    << info.name << ", workers " << workers << ", step " << i;
+            }
+            EXPECT_EQ(Stepper::islandsMisKept(), misKeptBefore)
+                << info.name << ", workers " << workers;
+        }
+    }
+}
+
+TEST(Islands, AreKeptWhileNothingChangesAndSearchedAgainWhenSomethingDoes) {
+    // The verification above would pass if islands were never kept: a swinging chain keeps
+    // them, and a body made, a joint made, a body put to sleep makes the next step search.
+    const std::uint64_t misKeptBefore = Stepper::islandsMisKept();
+    IslandReuse reuse(Stepper::IslandReuse::Verify);
+    WorldDef def;
+    def.enableSleep = false;
+    World world(def);
+    BodyId ground = world.createBody(BodyDef{});
+    BodyId a = link(world, {0.5f, 0});
+    BodyId b = link(world, {1.5f, 0});
+    world.createJoint(RevoluteJointDef::atWorldAnchor(ground, a, {0, 0}));
+    world.createJoint(RevoluteJointDef::atWorldAnchor(a, b, {1, 0}));
+    const auto unchangedAfterStep = [&world] {
+        const std::uint64_t before = Stepper::stepsWithIslandsUnchanged();
+        world.step(1.0f / 60.0f);
+        return Stepper::stepsWithIslandsUnchanged() > before;
+    };
+    EXPECT_FALSE(unchangedAfterStep());  // the first step searches
+    for (int i = 0; i < 30; ++i) EXPECT_TRUE(unchangedAfterStep()) << "step " << i;
+    EXPECT_EQ(world.lastStepStats().islandCount, 1);
+
+    BodyDef loose;
+    loose.type = BodyType::Dynamic;
+    loose.position = {10, 10};
+    BodyId c = world.createBody(loose);
+    EXPECT_FALSE(unchangedAfterStep());
+    EXPECT_EQ(world.lastStepStats().islandCount, 2);
+    EXPECT_TRUE(unchangedAfterStep());
+    world.createJoint(RevoluteJointDef::atWorldAnchor(b, c, {2, 0}));
+    EXPECT_FALSE(unchangedAfterStep());
+    EXPECT_EQ(world.lastStepStats().islandCount, 1);
+    world.setBodyAwake(c, false);
+    EXPECT_FALSE(unchangedAfterStep());  // searched, and c woken by its joint
+    EXPECT_FALSE(unchangedAfterStep());  // c is a seed now: searched again
+    EXPECT_TRUE(unchangedAfterStep());
+    EXPECT_EQ(Stepper::islandsMisKept(), misKeptBefore);
 }

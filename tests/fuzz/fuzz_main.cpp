@@ -1,9 +1,12 @@
 // pivot-fuzz: runs the random-operation driver (fuzz_driver.h) and prints what it did.
 //   pivot-fuzz [--seed N] [--operations N] [--trace] [--keep-going] [--check-every-operation]
 //              [--dump-before N] [--no-extremes] [--require-finite] [--journal PREFIX]
+//              [--verify-islands]
 //   pivot-fuzz --replay FILE
 // Exit status 0 when every check held, 1 on a failure, 2 on bad arguments. --replay replays a
 // journal written with --journal and exits with 3 if a body or joint turns non-finite.
+// --verify-islands searches every step's islands and fails if a step whose islands would have
+// been kept from the step before (nothing counted in IslandRevision changed) found others.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +16,7 @@
 
 #include "fuzz_driver.h"
 #include "journal.h"
+#include "solver/stepper.h"
 
 namespace {
 
@@ -51,6 +55,7 @@ int usage() {
                  "usage: pivot-fuzz [--seed N] [--operations N] [--trace] [--keep-going]\n"
                  "                  [--check-every-operation] [--dump-before N]\n"
                  "                  [--no-extremes] [--require-finite] [--journal PREFIX]\n"
+                 "                  [--verify-islands]\n"
                  "       pivot-fuzz --replay FILE\n");
     return 2;
 }
@@ -87,6 +92,8 @@ int main(int argc, char** argv) {
             options.checkEveryOperation = true;
         } else if (std::strcmp(argv[i], "--keep-going") == 0) {
             options.stopAtFirstFailure = false;
+        } else if (std::strcmp(argv[i], "--verify-islands") == 0) {
+            pivot::Stepper::setIslandReuse(pivot::Stepper::IslandReuse::Verify);
         } else {
             return usage();
         }
@@ -120,6 +127,10 @@ int main(int argc, char** argv) {
         std::printf("  %-32s %9ld accepted %9ld rejected\n", name.c_str(), count.accepted,
                     count.rejected);
     }
+    const std::uint64_t misKept = pivot::Stepper::islandsMisKept();
+    std::printf("steps whose kept islands would have differed from the search's: %llu\n",
+                static_cast<unsigned long long>(misKept));
+    if (misKept > 0) report.failures.push_back("islands kept although the search found others");
     if (report.failures.empty()) {
         for (const std::string& j : report.journals)
             std::printf("journal written: %s\n", j.c_str());
