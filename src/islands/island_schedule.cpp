@@ -22,8 +22,13 @@ void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodie
 
 void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Joint>& joints,
                                  IslandSchedule& schedule) {
-    std::array<std::int32_t, kJointGroupCount> sizes{};
     schedule.jointsMayBreak = false;
+    if (island.jointCount == 0 && schedule.jointIds.empty()) {
+        // As planned before, every group empty and every batch list cleared: nothing to undo
+        // (most islands of a contact scene, and there are many groups).
+        return;
+    }
+    std::array<std::int32_t, kJointGroupCount> sizes{};
     // One pass over the joints, which lie all over the pool: the groups are read from here on.
     static_assert(kJointGroupCount <= 256, "a joint's group is kept in a byte");
     resizeBuffer(jointGroups_, static_cast<std::size_t>(island.jointCount));

@@ -43,6 +43,7 @@ public:
     /// fixed cost from growing with the number of strategies and joint types.)
     template <typename F>
     void forEachGroup(F&& f) {
+        if (jointCount_ == 0) return;  // most islands of a contact scene: no group to look at
         PositionStrategies::forEach([&](auto strategy) {
             using S = decltype(strategy);
             forEachType<S>([&](auto& array, int group) {
@@ -62,6 +63,9 @@ public:
 
     /// Sizes each array for its group, [groupStart[g], groupStart[g + 1]) of the schedule.
     void resize(const std::array<std::int32_t, kJointGroupCount + 1>& groupStart) {
+        const std::int32_t jointCount = groupStart[kJointGroupCount];
+        if (jointCount == 0 && jointCount_ == 0) return;  // every array empty already
+        jointCount_ = jointCount;
         forEachGroupIncludingEmpty([&](auto, auto& array, int g) {
             resizeBuffer(array, static_cast<std::size_t>(groupStart[g + 1] - groupStart[g]));
         });
@@ -69,6 +73,7 @@ public:
 
 private:
     JointArrays<JointConstraintTypes>::type arrays_;
+    std::int32_t jointCount_ = 0;  // over every array, as last sized by resize
 };
 
 }  // namespace pivot
