@@ -35,6 +35,7 @@ void ContactManager::reportTouch(const Contact& contact, bool began) {
     // Whatever rested on the contact, or is pushed by it now, must notice; and the contact
     // joins or leaves the islands.
     islandRevision_.bump();
+    touchingCount_ += began ? 1 : -1;
     wakeUp(bodies_[contact.bodyA()], islandRevision_);
     wakeUp(bodies_[contact.bodyB()], islandRevision_);
     (began ? beginEvents_ : endEvents_)
@@ -422,8 +423,10 @@ void ContactManager::adoptState(State&& state) {
     sensorBeginEvents_ = std::move(state.sensorBeginEvents);
     sensorEndEvents_ = std::move(state.sensorEndEvents);
     pairs_ = PairMap{};
+    touchingCount_ = 0;
     contacts_.forEach([&](std::int32_t index, const Contact& c) {
         pairs_.insert(PairMap::key(c.shapeA, c.shapeB), index);
+        if (c.touching && !c.sensor) ++touchingCount_;
     });
     categoryCounts_ = {};
     shapes_.forEach([&](std::int32_t, const Shape& s) { countCategories(s.filter, +1); });

@@ -80,6 +80,9 @@ public:
     void refilterBody(std::int32_t body);
 
     /// Touching began and ended since the last step began (shape destruction included).
+    /// Contacts touching, sensors left out (StepStats::touchingCount): counted as they begin
+    /// and end, so that no step has to pass over every contact for it.
+    int touchingCount() const { return touchingCount_; }
     const std::vector<ContactEvent>& beginEvents() const { return beginEvents_; }
     const std::vector<ContactEvent>& endEvents() const { return endEvents_; }
     const std::vector<SensorEvent>& sensorBeginEvents() const { return sensorBeginEvents_; }
@@ -158,6 +161,7 @@ private:
     std::array<std::int32_t, 16> categoryCounts_{};
     bool newShapes_ = false;
     std::uint64_t contactsMade_ = 0;  // Contact::serial of the last contact made
+    int touchingCount_ = 0;           // touching non-sensor contacts (touchingCount)
     std::vector<ContactEvent> beginEvents_;
     std::vector<ContactEvent> endEvents_;
     std::vector<SensorEvent> sensorBeginEvents_;

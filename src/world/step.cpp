@@ -164,10 +164,8 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
         b.torque = 0.0f;
         if (b.type != BodyType::Static && !b.awake) ++stats.sleepingBodyCount;
     });
-    contacts.forEach([this](std::int32_t, const Contact& c) {
-        ++stats.contactCount;
-        if (c.touching && !c.sensor) ++stats.touchingCount;
-    });
+    stats.contactCount = contacts.size();
+    stats.touchingCount = contactManager.touchingCount();
     previousInvDt = context.invDt;
 }
 

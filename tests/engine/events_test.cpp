@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "scenes/scene.h"
 
 using namespace pivot;
 
@@ -369,4 +370,23 @@ TEST(Events, ComeInTheSameOrderOnAnyWorkerCount) {
     const std::vector<float> one = run(1);
     EXPECT_GT(one.size(), 1000u);
     EXPECT_EQ(one, run(2));
+}
+
+TEST(StepStats, TouchingCountIsEveryTouchingContact) {
+    // StepStats::touchingCount is counted as contacts begin and end, not by a pass over the
+    // contacts; it must agree with one in every scene (contacts made, destroyed, filtered,
+    // sensors, sleep, continuous collision, bodies destroyed by the scenes' scripts), and after
+    // a snapshot is restored.
+    for (const scenes::SceneInfo& info : scenes::allScenes()) {
+        scenes::SceneOptions options;
+        scenes::Scene scene = scenes::buildScene(info, options);
+        for (int i = 0; i < 240; ++i) {
+            if (scene.beforeStep) scene.beforeStep(scene, i);
+            scene.world->step(1.0f / options.hz);
+            ASSERT_EQ(scene.world->lastStepStats().touchingCount,
+                      static_cast<int>(scene.world->contacts().size()))
+                << info.name << ", step " << i;
+            if (i == 120) scene.world->restore(scene.world->snapshot());
+        }
+    }
 }
