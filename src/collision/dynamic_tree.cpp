@@ -15,7 +15,7 @@ std::int32_t DynamicTree::createProxy(const AABB& tightBox, std::int32_t userDat
     const std::int32_t proxyId = allocateNode();
     Node& leaf = nodes_[proxyId];
     leaf.box = fatten(tightBox);
-    leaf.userData = userData;
+    leaf.child2 = userData;  // Node::userData
     leaf.height = 0;
     insertLeaf(proxyId);
     ++proxyCount_;
@@ -99,7 +99,7 @@ const AABB& DynamicTree::fatBox(std::int32_t proxyId) const {
 
 std::int32_t DynamicTree::userData(std::int32_t proxyId) const {
     assert(isProxy(proxyId));
-    return nodes_[proxyId].userData;
+    return nodes_[proxyId].userData();
 }
 
 int DynamicTree::proxyCount() const {
@@ -122,7 +122,7 @@ std::int32_t DynamicTree::allocateNode() {
     std::int32_t nodeId;
     if (freeList_ != kNullNode) {
         nodeId = freeList_;
-        freeList_ = nodes_[nodeId].next;
+        freeList_ = nodes_[nodeId].nextFree();
         nodes_[nodeId] = Node{};
     } else {
         nodeId = static_cast<std::int32_t>(nodes_.size());
@@ -136,7 +136,7 @@ std::int32_t DynamicTree::allocateNode() {
 void DynamicTree::freeNode(std::int32_t nodeId) {
     nodes_[nodeId] = Node{};
     changed_[nodeId] = 0;
-    nodes_[nodeId].next = freeList_;
+    nodes_[nodeId].parent = freeList_;  // Node::nextFree
     freeList_ = nodeId;
 }
 
@@ -458,12 +458,31 @@ void DynamicTree::describe(Io& io, Tree& tree) {
         io.anyFloat(node.box.lower.y);
         io.anyFloat(node.box.upper.x);
         io.anyFloat(node.box.upper.y);
-        io.value(node.parent);
+        // The six links of the format, each in its own field: a leaf's second child and a free
+        // node's parent are written as none, an internal node's user data as 0.
+        const bool leaf = node.height == 0;
+        const bool free = node.height == -1;
+        std::int32_t parent = free ? kNullNode : node.parent;
+        std::int32_t child2 = leaf ? kNullNode : node.child2;
+        std::int32_t next = free ? node.parent : kNullNode;
+        std::int32_t userData = leaf ? node.child2 : 0;
+        io.value(parent);
         io.value(node.child1);
-        io.value(node.child2);
-        io.value(node.next);
+        io.value(child2);
+        io.value(next);
         io.value(node.height);
-        io.value(node.userData);
+        io.value(userData);
+        if constexpr (Io::kReading) {
+            // What the packed node cannot hold is what isValid would refuse anyway.
+            if (node.height == 0 && child2 != kNullNode) {
+                io.corrupt("a broad-phase leaf has a second child");
+            }
+            if (node.height == -1 && parent != kNullNode) {
+                io.corrupt("a free broad-phase node has a parent");
+            }
+            node.parent = node.height == -1 ? next : parent;
+            node.child2 = node.height == 0 ? userData : child2;
+        }
     }
     for (std::size_t i = 0; i < tree.nodes_.size(); ++i) {
         bool changed = tree.changed_[i] != 0;
@@ -497,7 +516,7 @@ bool DynamicTree::isValid() const {
     // Free list: in range, marked free, no cycles (it cannot be longer than the pool).
     std::vector<bool> seen(nodes_.size(), false);
     std::int32_t freeCount = 0;
-    for (std::int32_t id = freeList_; id != kNullNode; id = nodes_[id].next) {
+    for (std::int32_t id = freeList_; id != kNullNode; id = nodes_[id].nextFree()) {
         if (!inPool(id) || seen[id] || nodes_[id].height != -1 || changed_[id]) return false;
         seen[id] = true;
         ++freeCount;
@@ -520,7 +539,7 @@ bool DynamicTree::isValid() const {
             // would never be cleared.
             if (changed_[id] && node.parent != kNullNode && !changed_[node.parent]) return false;
             if (node.isLeaf()) {
-                if (node.child2 != kNullNode || node.height != 0 || changed_[id]) return false;
+                if (node.height != 0 || changed_[id]) return false;
                 ++leafCount;
                 continue;
             }

@@ -172,17 +172,21 @@ private:
     // A leaf (child1 == kNullNode) is a proxy: its id is its index, which never changes while
     // it lives, because re-insertion after a move keeps the node and only relinks it. Free
     // nodes have height -1 and chain through `next`, last freed first reused.
-    struct Node {
+    // 32 bytes, two to a cache line and none across two (a query reads one line per node it
+    // looks at): a leaf keeps its user data where an internal node keeps its second child, and a
+    // free node the next free one where a node in the tree keeps its parent.
+    struct alignas(32) Node {
         AABB box;
-        std::int32_t parent = kNullNode;
+        std::int32_t parent = kNullNode;  // free nodes: the next free node
         std::int32_t child1 = kNullNode;
-        std::int32_t child2 = kNullNode;
-        std::int32_t next = kNullNode;
-        std::int32_t height = -1;
-        std::int32_t userData = 0;
+        std::int32_t child2 = kNullNode;  // leaves: the proxy's user data
+        std::int32_t height = -1;         // -1: free; 0: a leaf
 
         bool isLeaf() const { return child1 == kNullNode; }
+        std::int32_t userData() const { return child2; }
+        std::int32_t nextFree() const { return parent; }
     };
+    static_assert(sizeof(Node) == 32, "two nodes to a cache line");
 
     template <typename Io, typename Tree>
     static void describe(Io& io, Tree& tree);
