@@ -58,8 +58,7 @@ void World::destroyBody(BodyId id) {
     // Joints first (waking what they held), then contacts (waking what touched), then shapes.
     while (body.jointList != -1) {
         const Joint& joint = w.joints[edgeOwner(body.jointList)];
-        wakeUp(w.bodies[joint.bodyA()], w.islandRevision);
-        wakeUp(w.bodies[joint.bodyB()], w.islandRevision);
+        w.wakeJointBodies(joint);
         w.removeJointAndItsGears(edgeOwner(body.jointList));
     }
     while (body.contactList != -1) {

@@ -119,6 +119,11 @@ struct World::Impl {
     void removeShape(std::int32_t shapeIndex);
     void removeMouseJoint(std::int32_t mouseIndex);
     void wakeAll();
+    /// Wakes a joint's two bodies (a joint changed by the API acts at once).
+    void wakeJointBodies(const Joint& joint) {
+        wakeUp(bodies[joint.bodyA()], islandRevision);
+        wakeUp(bodies[joint.bodyB()], islandRevision);
+    }
 };
 
 /// Checks a handle against a pool; returns the slot index or throws pivot::Error.

@@ -34,8 +34,7 @@ void World::setJointLimit(JointId id, const JointLimit& limit) {
     r.upperAngle = limit.upper;
     r.lowerImpulse = 0.0f;
     r.upperImpulse = 0.0f;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 JointMotor World::jointMotor(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndexOfTypes("World::jointMotor", id,
@@ -60,8 +59,7 @@ void World::setJointMotor(JointId id, const JointMotor& motor) {
         r.motorSpeed = motor.speed;
         r.maxMotorTorque = motor.maxTorque;
     }
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 float World::distanceJointRestLength(JointId id) const {
@@ -76,8 +74,7 @@ void World::setDistanceJointRestLength(JointId id, float length) {
     checkRestLength(call, "length", length);
     Joint& j = impl_->joints[index];
     std::get<DistanceJoint>(j.data).length = length;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 LengthLimit World::distanceJointLimit(JointId id) const {
     const DistanceJoint& d =
@@ -93,8 +90,7 @@ void World::setDistanceJointLimit(JointId id, const LengthLimit& limit) {
     DistanceJoint& d = std::get<DistanceJoint>(j.data);
     setLimit(d, limit);
     d.lowerImpulse = d.upperImpulse = 0.0f;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 JointSpring World::distanceJointSpring(JointId id) const {
     const DistanceJoint& d =
@@ -108,8 +104,7 @@ void World::setDistanceJointSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     setSpring(std::get<DistanceJoint>(j.data), spring);
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 Vec2 World::pulleyJointGroundAnchorA(JointId id) const {
@@ -169,8 +164,7 @@ void World::setJointMaxForce(JointId id, float force) {
     Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
     requireNonNegative(call, "force", force);
     *velocityJointLimits(j).force = force;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 float World::jointMaxTorque(JointId id) const {
     Joint& j = impl_->joints[impl_->velocityJointIndex("World::jointMaxTorque", id)];
@@ -182,8 +176,7 @@ void World::setJointMaxTorque(JointId id, float torque) {
     Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
     requireNonNegative(call, "torque", torque);
     *velocityJointLimits(j).torque = torque;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 Vec2 World::motorJointLinearOffset(JointId id) const {
@@ -197,8 +190,7 @@ void World::setMotorJointLinearOffset(JointId id, Vec2 offset) {
     requireCoordinate(call, "offset", offset);
     Joint& j = impl_->joints[index];
     std::get<MotorJoint>(j.data).linearOffset = offset;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 float World::motorJointAngularOffset(JointId id) const {
     return impl_->jointData<MotorJoint>("World::motorJointAngularOffset", id, JointType::Motor)
@@ -211,8 +203,7 @@ void World::setMotorJointAngularOffset(JointId id, float offset) {
     requireMagnitude(call, "offset", offset);
     Joint& j = impl_->joints[index];
     std::get<MotorJoint>(j.data).angularOffset = offset;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 float World::motorJointCorrectionFactor(JointId id) const {
     return impl_->jointData<MotorJoint>("World::motorJointCorrectionFactor", id, JointType::Motor)
@@ -225,8 +216,7 @@ void World::setMotorJointCorrectionFactor(JointId id, float factor) {
     requireInRange(call, "factor", factor, 0.0f, 1.0f);
     Joint& j = impl_->joints[index];
     std::get<MotorJoint>(j.data).correctionFactor = factor;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 // --- prismatic and wheel joints ----------------------------------------------------------------
@@ -304,8 +294,7 @@ void World::setPrismaticJointLimit(JointId id, const TranslationLimit& limit) {
     checkTranslationLimit(call, "limit", limit);
     Joint& j = impl_->joints[index];
     setLimit(std::get<PrismaticJoint>(j.data), limit);
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 LinearMotor World::prismaticJointMotor(JointId id) const {
     const PrismaticJoint& p =
@@ -319,8 +308,7 @@ void World::setPrismaticJointMotor(JointId id, const LinearMotor& motor) {
     checkLinearMotor(call, "motor", motor);
     Joint& j = impl_->joints[index];
     setMotor(std::get<PrismaticJoint>(j.data), motor);
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 JointSpring World::prismaticJointSpring(JointId id) const {
     const PrismaticJoint& p =
@@ -334,8 +322,7 @@ void World::setPrismaticJointSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     setSpring(std::get<PrismaticJoint>(j.data), spring);
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 float World::prismaticJointMotorForce(JointId id) const {
     const char* call = "World::prismaticJointMotorForce";
@@ -370,8 +357,7 @@ void World::setGearJointRatio(JointId id, float ratio) {
     const float error = g.error(a, b, c, d);
     g.ratio = ratio;
     g.constant = (g.side1.coordinate(c, a) + ratio * g.side2.coordinate(d, b)) - error;
-    wakeUp(w.bodies[joint.bodyA()], w.islandRevision);
-    wakeUp(w.bodies[joint.bodyB()], w.islandRevision);
+    w.wakeJointBodies(joint);
 }
 
 // --- weld joints -----------------------------------------------------------------------------
@@ -391,8 +377,7 @@ void World::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     std::get<WeldJoint>(j.data).linearSpring = spring;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
     impl_->requireNotInCallback("World::setWeldJointAngularSpring");
@@ -401,8 +386,7 @@ void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     std::get<WeldJoint>(j.data).angularSpring = spring;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 // --- wheel joints ----------------------------------------------------------------------------
@@ -417,8 +401,7 @@ void World::setWheelJointSpring(JointId id, const JointSpring& spring) {
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
     std::get<WheelJoint>(j.data).spring = spring;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 TranslationLimit World::wheelJointLimit(JointId id) const {
     const WheelJoint& w =
@@ -432,8 +415,7 @@ void World::setWheelJointLimit(JointId id, const TranslationLimit& limit) {
     checkTranslationLimit(call, "limit", limit);
     Joint& j = impl_->joints[index];
     setLimit(std::get<WheelJoint>(j.data), limit);
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 }  // namespace pivot

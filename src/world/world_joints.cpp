@@ -85,8 +85,7 @@ void World::Impl::removeJointAndItsGears(std::int32_t index) {
         joints.forEach([&](std::int32_t gearIndex, const Joint& gear) {
             const auto* g = std::get_if<GearJoint>(&gear.data);
             if (g && (g->side1.joint == index || g->side2.joint == index)) {
-                wakeUp(bodies[gear.bodyA()], islandRevision);
-                wakeUp(bodies[gear.bodyB()], islandRevision);
+                wakeJointBodies(gear);
                 removeJoint(gearIndex);
             }
         });
@@ -150,8 +149,7 @@ void World::rearmJoint(JointId id) {
     if (!j.letGo) return;
     j.letGo = false;  // letGoFor cleared its impulses
     impl_->islandRevision.bump();
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 float World::jointLetGoSeparation(JointId id) const {
@@ -192,8 +190,7 @@ void World::setJointCollideConnected(JointId id, bool collide) {
     if (j.collideConnected == collide) return;
     j.collideConnected = collide;
     w.contactManager.refilterBodyPair(j.bodyA(), j.bodyB());
-    wakeUp(w.bodies[j.bodyA()], w.islandRevision);
-    wakeUp(w.bodies[j.bodyB()], w.islandRevision);
+    w.wakeJointBodies(j);
 }
 
 float World::jointBreakForce(JointId id) const {
@@ -205,9 +202,8 @@ void World::setJointBreakForce(JointId id, float force) {
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requireNonNegative(call, "force", force);
     j.breakForce = force;
-    impl_->islandRevision.bump();                             // the island plans read it
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);  // a sleeping joint is not measured
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->islandRevision.bump();  // the island plans read it
+    impl_->wakeJointBodies(j);     // a sleeping joint is not measured
 }
 float World::jointBreakTorque(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointBreakTorque", id)].breakTorque;
@@ -219,8 +215,7 @@ void World::setJointBreakTorque(JointId id, float torque) {
     requireNonNegative(call, "torque", torque);
     j.breakTorque = torque;
     impl_->islandRevision.bump();  // the island plans read it
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 Vec2 World::jointReactionForce(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointReactionForce", id)].reactionForce();
@@ -250,8 +245,7 @@ void World::setJointPositionSolver(JointId id, PositionSolver solver) {
     checkSolver(call, "solver", solver);
     j.solver = solver;
     impl_->islandRevision.bump();  // the island plans read it
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 float World::jointBiasFactor(JointId id) const {
@@ -266,8 +260,7 @@ void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     if (biasFactor) checkBiasFactor(call, "biasFactor", *biasFactor);
     j.hasBiasOverride = biasFactor.has_value();
     j.biasOverride = biasFactor.value_or(0.0f);
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 JointSoftness World::jointSoftness(JointId id) const {
@@ -281,8 +274,7 @@ void World::setJointSoftness(JointId id, const JointSoftness& softness) {
     requirePositionError(call, id.index, j);
     checkSoftness(call, "softness", softness);
     j.softness = softness;
-    wakeUp(impl_->bodies[j.bodyA()], impl_->islandRevision);
-    wakeUp(impl_->bodies[j.bodyB()], impl_->islandRevision);
+    impl_->wakeJointBodies(j);
 }
 
 std::uint64_t World::jointUserData(JointId id) const {
