@@ -171,7 +171,7 @@ private:
 
     // A leaf (child1 == kNullNode) is a proxy: its id is its index, which never changes while
     // it lives, because re-insertion after a move keeps the node and only relinks it. Free
-    // nodes have height -1 and chain through `next`, last freed first reused.
+    // nodes have height -1 and chain through nextFree, last freed first reused.
     // 32 bytes, two to a cache line and none across two (a query reads one line per node it
     // looks at): a leaf keeps its user data where an internal node keeps its second child, and a
     // free node the next free one where a node in the tree keeps its parent.

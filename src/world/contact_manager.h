@@ -79,10 +79,10 @@ public:
     /// to, and makes the broad phase report its shapes again (after its type changed).
     void refilterBody(std::int32_t body);
 
-    /// Touching began and ended since the last step began (shape destruction included).
     /// Contacts touching, sensors left out (StepStats::touchingCount): counted as they begin
     /// and end, so that no step has to pass over every contact for it.
     int touchingCount() const { return touchingCount_; }
+    /// Touching began and ended since the last step began (shape destruction included).
     const std::vector<ContactEvent>& beginEvents() const { return beginEvents_; }
     const std::vector<ContactEvent>& endEvents() const { return endEvents_; }
     const std::vector<SensorEvent>& sensorBeginEvents() const { return sensorBeginEvents_; }
