@@ -74,32 +74,47 @@ struct ContactReading {
 
 }  // namespace
 
+namespace {
+
+// Builds `info` twice on `workers` workers and steps the two side by side, each step of the
+// first made by stepFirst(world, dt) and of the second by stepSecond(world, dt) (under whatever
+// switch each sets), failing at the first step where their states differ.
+template <typename StepFirst, typename StepSecond>
+void expectLockstep(const scenes::SceneInfo& info, int workers, int steps, StepFirst stepFirst,
+                    StepSecond stepSecond) {
+    scenes::SceneOptions options;
+    options.workerCount = workers;
+    scenes::Scene first = scenes::buildScene(info, options);
+    scenes::Scene second = scenes::buildScene(info, options);
+    const float dt = 1.0f / options.hz;
+    for (int i = 0; i < steps; ++i) {
+        if (first.beforeStep) first.beforeStep(first, i);
+        if (second.beforeStep) second.beforeStep(second, i);
+        stepFirst(*first.world, dt);
+        stepSecond(*second.world, dt);
+        ASSERT_EQ(first.world->stateHash(), second.world->stateHash())
+            << info.name << ", workers " << workers << ", step " << i;
+    }
+}
+
+}  // namespace
+
 TEST(Islands, TheContactTableFindsWhatTheListsFind) {
     // The search reads contacts from the bodies' lists or from a table it builds from the
     // contact pool; both must give the same islands in the same order, hence the same bits.
     // Scenes with contacts made and destroyed, sensors, sleep and waking, continuous collision.
-    using scenes::SceneOptions;
+    const auto stepReading = [](IslandBuilder::ContactReading how) {
+        return [how](World& world, float dt) {
+            ContactReading reading(how);
+            world.step(dt);
+        };
+    };
     for (const char* name : {"pyramid", "ramps", "bullets", "platformer", "heavy_stack",
                              "overlap_recovery", "top_down", "car"}) {
         for (int workers = 1; workers <= 2; ++workers) {
-            SceneOptions options;
-            options.workerCount = workers;
-            scenes::Scene lists = scenes::buildScene(*scenes::findScene(name), options);
-            scenes::Scene table = scenes::buildScene(*scenes::findScene(name), options);
-            for (int i = 0; i < 300; ++i) {
-                if (lists.beforeStep) lists.beforeStep(lists, i);
-                if (table.beforeStep) table.beforeStep(table, i);
-                {
-                    ContactReading reading(IslandBuilder::ContactReading::Lists);
-                    lists.world->step(1.0f / options.hz);
-                }
-                {
-                    ContactReading reading(IslandBuilder::ContactReading::Table);
-                    table.world->step(1.0f / options.hz);
-                }
-                ASSERT_EQ(lists.world->stateHash(), table.world->stateHash())
-                    << name << ", workers " << workers << ", step " << i;
-            }
+            expectLockstep(*scenes::findScene(name), workers, 300,
+                           stepReading(IslandBuilder::ContactReading::Lists),
+                           stepReading(IslandBuilder::ContactReading::Table));
         }
     }
 }
@@ -120,28 +135,17 @@ TEST(Islands, KeptIslandsAreTheOnesTheSearchFinds) {
     // have kept its islands finds others; and a world that keeps them steps to the same bits
     // as one that searches and plans every step. (pivot-fuzz --verify-islands drives the
     // world's calls between steps the same way.)
-    using scenes::SceneOptions;
+    const auto stepReusing = [](Stepper::IslandReuse how) {
+        return [how](World& world, float dt) {
+            IslandReuse reuse(how);
+            world.step(dt);
+        };
+    };
     for (const scenes::SceneInfo& info : scenes::allScenes()) {
         for (int workers = 1; workers <= 2; ++workers) {
-            SceneOptions options;
-            options.workerCount = workers;
-            scenes::Scene kept = scenes::buildScene(info, options);
-            scenes::Scene searched = scenes::buildScene(info, options);
             const std::uint64_t misKeptBefore = Stepper::islandsMisKept();
-            for (int i = 0; i < 200; ++i) {
-                if (kept.beforeStep) kept.beforeStep(kept, i);
-                if (searched.beforeStep) searched.beforeStep(searched, i);
-                {
-                    IslandReuse reuse(Stepper::IslandReuse::Keep);
-                    kept.world->step(1.0f / options.hz);
-                }
-                {
-                    IslandReuse reuse(Stepper::IslandReuse::Verify);
-                    searched.world->step(1.0f / options.hz);
-                }
-                ASSERT_EQ(kept.world->stateHash(), searched.world->stateHash())
-                    << info.name << ", workers " << workers << ", step " << i;
-            }
+            expectLockstep(info, workers, 200, stepReusing(Stepper::IslandReuse::Keep),
+                           stepReusing(Stepper::IslandReuse::Verify));
             EXPECT_EQ(Stepper::islandsMisKept(), misKeptBefore)
                 << info.name << ", workers " << workers;
         }
