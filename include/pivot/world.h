@@ -62,6 +62,12 @@ struct WorldDef {
     /// contact updates and broad-phase queries are shared among them; results are bit-for-bit
     /// the same for every count.
     int workerCount = 1;
+    /// With workerCount > 1: each step runs on all the workers or on the caller alone,
+    /// whichever was faster when the world last timed a few steps on each (it does every 64
+    /// to 1,024 steps). On an idle machine that is usually all of them; while another process
+    /// keeps a core busy it can be the caller alone, which is then not held up by a worker that
+    /// has lost its core. The results are the same bits either way. false: always all of them.
+    bool adaptWorkerCount = true;
     /// m, in [0, kMaxMagnitude]. Opt-in breaking: a joint whose anchors are further apart than
     /// this when a step reaches it is let go (World::jointLetGoEvents, JointLetGoReason). 0, the
     /// default: joints are never let go for their separation, however far they are pulled
@@ -177,6 +183,9 @@ struct StepStats {
     /// Impacts continuous collision solved this step: bodies taken back to the moment they
     /// touched something they would otherwise have passed into or through.
     int impactCount = 0;
+    /// Workers the step ran on, the caller included: WorldDef::workerCount, or 1 while the
+    /// caller alone was found faster (WorldDef::adaptWorkerCount).
+    int workersUsed = 1;
 };
 
 class World {

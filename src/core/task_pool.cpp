@@ -6,8 +6,13 @@
 
 namespace pivot {
 
-TaskPool::TaskPool(int workers) {
+TaskPool::TaskPool(int workers) : active_(std::max(workers, 1)) {
     for (int i = 1; i < workers; ++i) threads_.emplace_back([this, i] { workerLoop(i); });
+}
+
+void TaskPool::setActiveWorkers(int count) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    active_ = std::clamp(count, 1, workerCount());
 }
 
 TaskPool::~TaskPool() {
@@ -38,7 +43,7 @@ void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline
         trampoline_ = trampoline;
         count_ = count;
         // A few chunks per worker balance uneven work without much hand-off cost.
-        const int target = std::max(1, count / (4 * workerCount()));
+        const int target = std::max(1, count / (4 * active_));
         chunk_ = std::max(minChunk, target);
         next_.store(0, std::memory_order_relaxed);
         if (count < 0) stages_.reset();
@@ -71,8 +76,9 @@ void TaskPool::workerLoop(int worker) {
             });
             if (stopping_) return;
             seen = generation_.load(std::memory_order_relaxed);
-            // Joins only a job still open: one whose caller is not yet past its own part.
-            if (!open_) continue;
+            // Joins only a job still open (one whose caller is not yet past its own part) and
+            // open to it.
+            if (!open_ || worker >= active_) continue;
             busy_.fetch_add(1, std::memory_order_relaxed);
         }
         takeChunks(worker);

@@ -27,12 +27,17 @@ public:
 
     int workerCount() const { return static_cast<int>(threads_.size()) + 1; }
 
+    /// Workers the next jobs may use, the caller included, in [1, workerCount()]: the others stay
+    /// out of them (and sleep once their spin runs out). Set between jobs, by the caller.
+    void setActiveWorkers(int count);
+    int activeWorkers() const { return active_; }
+
     /// Calls body(begin, end, worker) over [0, count) in chunks of at least minChunk indices;
     /// `worker` is in [0, workerCount()) and identifies per-worker scratch. Allocates nothing.
     template <typename Body>
     void parallelFor(int count, int minChunk, Body&& body) {
         if (count <= 0) return;
-        if (threads_.empty() || count <= minChunk) {
+        if (active_ == 1 || count <= minChunk) {
             body(0, count, 0);
             return;
         }
@@ -47,7 +52,7 @@ public:
     /// one graph colour at a time that way, with whoever is there.
     template <typename Body>
     void region(Body&& body) {
-        if (threads_.empty()) {
+        if (active_ == 1) {
             body(0);
             return;
         }
@@ -78,6 +83,7 @@ private:
     std::atomic<int> busy_{0};
     bool open_ = false;
     bool stopping_ = false;
+    int active_ = 1;  // workers with an index below it join jobs (written under the lock)
     void* context_ = nullptr;
     Trampoline trampoline_ = nullptr;
     int count_ = 0;

@@ -29,7 +29,7 @@ public:
     /// A team of one, on the calling thread.
     Team() = default;
     Team(TaskPool& pool, int member)
-        : board_(&pool.stages()), member_(member), size_(pool.workerCount()) {}
+        : board_(&pool.stages()), member_(member), size_(pool.activeWorkers()) {}
 
     int member() const { return member_; }
     int size() const { return size_; }

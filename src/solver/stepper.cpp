@@ -109,7 +109,7 @@ StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
     // A coloured island is solved by every worker together, one island at a time; the others
     // are shared out among the workers whole. Sharing out costs a hand-off per step: worth it
     // only with enough bodies to solve.
-    const bool teams = pool_.workerCount() > 1;
+    const bool teams = pool_.activeWorkers() > 1;
     smallIslands_.clear();
     for (int i = 0; i < islandCount; ++i) {
         if (!teams || !isColored(islands_.view(i))) {
@@ -117,7 +117,7 @@ StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
             continue;
         }
         IslandWorkspace& workspace = workspaces_[0];
-        planIsland(islands_, i, workspace, storage, context, pool_.workerCount(), planRevision);
+        planIsland(islands_, i, workspace, storage, context, pool_.activeWorkers(), planRevision);
         pool_.region([&](int member) {
             IslandReport report =
                 solveIsland(Team(pool_, member), islands_, i, workspace, storage, context);

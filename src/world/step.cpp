@@ -7,6 +7,7 @@
 //      what they should have stopped at are taken back to the impact and stepped on;
 //   5. events, statistics, forces cleared, dt remembered for the next warm start.
 #include <algorithm>
+#include <chrono>
 
 #include "constraints/step_context.h"
 #include "core/buffer.h"
@@ -91,6 +92,10 @@ void World::Impl::recordHitAndMoveEvents() {
 }
 
 void World::Impl::step(float dt, int velocityIterations, int positionIterations) {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
+    const bool adapt = adaptWorkerCount && pool.workerCount() > 1;
+    if (adapt) pool.setActiveWorkers(workerChooser.next());
     StepContext context;
     // With one substep, h is dt itself (dt / 1 is exact): the pipeline of Box2D 2.4.1.
     const float h = dt / static_cast<float>(substepCount);
@@ -166,7 +171,9 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     });
     stats.contactCount = contacts.size();
     stats.touchingCount = contactManager.touchingCount();
+    stats.workersUsed = pool.activeWorkers();
     previousInvDt = context.invDt;
+    if (adapt) workerChooser.record(std::chrono::duration<double>(Clock::now() - start).count());
 }
 
 }  // namespace pivot

@@ -41,6 +41,8 @@ World::Impl::Impl(const WorldDef& def)
       substepCount(def.substepCount),
       hitEventThreshold(def.hitEventThreshold),
       pool(def.workerCount),
+      adaptWorkerCount(def.adaptWorkerCount),
+      workerChooser(def.workerCount),
       contactManager(bodies, shapes, joints, contacts, islandRevision, pool, id),
       stepper(pool) {
     contactManager.broadPhase().setBoxes(def.broadPhaseBoxes);

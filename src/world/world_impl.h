@@ -15,6 +15,7 @@
 #include "core/slot_pool.h"
 #include "core/task_pool.h"
 #include "core/validation.h"
+#include "core/worker_count_chooser.h"
 #include "joints/joint.h"
 #include "joints/mouse_joint.h"
 #include "model/body.h"
@@ -54,6 +55,8 @@ struct World::Impl {
     SlotPool<MouseJoint> mouseJoints;
     IslandRevision islandRevision;  // before the parts that count in it
     TaskPool pool;                  // before the parts that share it
+    bool adaptWorkerCount;
+    WorkerCountChooser workerChooser;
     ContactManager contactManager;
     Stepper stepper;
     ContinuousSolver continuous;

@@ -1,0 +1,134 @@
+// Chooses, step by step, whether a world steps on all of its pool's workers or on the caller
+// alone. Both give the same bits (docs/architecture.md, "Threads"), so the choice is one of
+// speed only, and only timing can make it: on an idle machine the whole team is faster on every
+// big scene, but while another process keeps a core busy, a member that loses its core in the
+// middle of a block holds the others until it gets the core back, and the caller alone can be
+// faster (the waits themselves tell nothing: they are as frequent on an idle machine,
+// docs/performance.md).
+//
+// So the chooser asks the clock. Every so often it probes the other count: it times a run of
+// kRun steps on the current count, then alternates runs on the other count and on the current
+// one, and compares the two counts' mean run. Interleaving cancels a cost that rises or falls
+// steadily (a pile growing, bodies falling asleep). A clear difference decides after one probe
+// run; a close one takes up to kMaxProbeRuns, for a step's time varies by tens of percent
+// when a worker loses its core for a few milliseconds, and a close call costs little while it is
+// being made. A first probe step that alone costs kClearLoss times the current count's mean
+// ends the probe at once (one worker on a scene that two solve twice as fast).
+//
+// A probe that loses puts the next one twice as far away, up to kMaxInterval steps: a machine
+// whose best count does not change pays little for being asked, and one that changes (the other
+// process ends) is noticed within kMaxInterval steps. A switch brings the next probe back to
+// kMinInterval, so that a switch made on a noisy probe is soon undone.
+#pragma once
+
+#include <algorithm>
+
+namespace pivot {
+
+class WorkerCountChooser {
+public:
+    /// For a pool of `workers` (the caller included); with one there is nothing to choose.
+    explicit WorkerCountChooser(int workers) : all_(workers), current_(workers) {}
+
+    /// Workers the coming step should run on: all of them, or 1.
+    int next() const { return phase_ == Phase::Probe ? other() : current_; }
+
+    /// The duration of the step just taken on next()'s count, in any unit (the same each time).
+    void record(double duration) {
+        if (all_ == 1) return;
+        ++stepsInPhase_;
+        switch (phase_) {
+            case Phase::Settled:
+                if (stepsInPhase_ >= interval_) enter(Phase::Current);
+                break;
+            case Phase::Current:
+                currentTime_ += duration;
+                if (stepsInPhase_ < kRun) break;
+                ++currentRuns_;
+                if (probeRuns_ == 0) {
+                    enter(Phase::Probe);
+                } else {
+                    judge();
+                }
+                break;
+            case Phase::Probe:
+                probeTime_ += duration;
+                if (probeRuns_ == 0 && stepsInPhase_ == 1 &&
+                    duration > kClearLoss * currentTime_ / (currentRuns_ * kRun)) {
+                    settle(false);
+                    break;
+                }
+                if (stepsInPhase_ < kRun) break;
+                ++probeRuns_;
+                enter(Phase::Current);
+                break;
+        }
+    }
+
+    /// Probes so far, and the switches they led to (for tests and the bench's report).
+    int probes() const { return probes_; }
+    int switches() const { return switches_; }
+
+    /// Steps in a run: a probe's runs, and the current count's runs around them.
+    static constexpr int kRun = 3;
+    static constexpr int kMaxProbeRuns = 4;
+    static constexpr int kMinInterval = 64;
+    static constexpr int kMaxInterval = 1024;
+    /// After the last probe run, the probe must be faster by this fraction: two counts within it
+    /// are a tie, and a tie keeps the current one.
+    static constexpr double kMargin = 0.03;
+    static constexpr double kClearLoss = 1.5;
+
+private:
+    enum class Phase { Settled, Current, Probe };
+
+    int other() const { return current_ == all_ ? 1 : all_; }
+
+    void enter(Phase phase) {
+        phase_ = phase;
+        stepsInPhase_ = 0;
+    }
+
+    // After each run on the current count that follows a probe run: decide, or probe once more.
+    void judge() {
+        const double ratio = (probeTime_ / probeRuns_) / (currentTime_ / currentRuns_);
+        // How far from a tie the ratio must be to decide after this many probe runs.
+        static constexpr double kBand[kMaxProbeRuns] = {0.25, 0.12, 0.06, kMargin};
+        const double band = kBand[probeRuns_ - 1];
+        if (ratio < 1.0 - band) {
+            settle(true);
+        } else if (ratio > 1.0 + band || probeRuns_ == kMaxProbeRuns) {
+            settle(false);
+        } else {
+            enter(Phase::Probe);
+        }
+    }
+
+    void settle(bool probeWon) {
+        ++probes_;
+        if (probeWon) {
+            current_ = other();
+            ++switches_;
+            interval_ = kMinInterval;
+        } else {
+            interval_ = std::min(2 * interval_, kMaxInterval);
+        }
+        currentTime_ = probeTime_ = 0.0;
+        currentRuns_ = probeRuns_ = 0;
+        enter(Phase::Settled);
+    }
+
+    int all_;
+    int current_;
+    Phase phase_ = Phase::Settled;
+    int stepsInPhase_ = 0;
+    int interval_ = kMinInterval;
+    double currentTime_ = 0.0;  // the runs on the current count since the probe began
+    double probeTime_ = 0.0;
+    int currentRuns_ = 0;
+    int probeRuns_ = 0;
+    int probes_ = 0;
+    int switches_ = 0;
+};
+
+}  // namespace pivot

@@ -1,0 +1,159 @@
+// Choosing the worker count step by step (src/core/worker_count_chooser.h, WorldDef::
+// adaptWorkerCount): the chooser's decisions on made-up step times, and a world that changes its
+// count between steps stepping to the same bits as a world on one worker.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/worker_count_chooser.h"
+#include "pivot/pivot.h"
+#include "scenes/parts.h"
+
+using namespace pivot;
+
+namespace {
+
+// Steps the chooser `steps` times, each step taking cost(count) for the count it asked for;
+// returns the counts asked for, step by step.
+template <typename Cost>
+std::vector<int> drive(WorkerCountChooser& chooser, int steps, Cost&& cost) {
+    std::vector<int> counts;
+    for (int i = 0; i < steps; ++i) {
+        const int count = chooser.next();
+        counts.push_back(count);
+        chooser.record(cost(count, i));
+    }
+    return counts;
+}
+
+int stepsOn(const std::vector<int>& counts, int count) {
+    int n = 0;
+    for (int c : counts) n += c == count ? 1 : 0;
+    return n;
+}
+
+constexpr int kRun = WorkerCountChooser::kRun;
+constexpr int kMin = WorkerCountChooser::kMinInterval;
+
+}  // namespace
+
+TEST(WorkerCountChooser, KeepsEveryWorkerWhileTheyAreFasterAndAsksLessAndLessOften) {
+    WorkerCountChooser chooser(2);
+    const std::vector<int> counts =
+        drive(chooser, 4000, [](int count, int) { return count == 2 ? 1.0 : 1.8; });
+    EXPECT_EQ(chooser.switches(), 0);
+    // The first probe follows kMin settled steps and a run timed on two workers; its first step
+    // on one worker costs more than kClearLoss times theirs, and ends it.
+    for (int i = 0; i < kMin + kRun; ++i) ASSERT_EQ(counts[i], 2) << i;
+    EXPECT_EQ(counts[kMin + kRun], 1);
+    EXPECT_EQ(counts[kMin + kRun + 1], 2);
+    // Each lost probe doubles the interval: 64, 128, 256, 512, 1024, 1024 ... settled steps
+    // (plus the probe's 4) fit 6 probes in 4,000 steps; probing every 64 would be 58.
+    EXPECT_EQ(chooser.probes(), 6);
+    EXPECT_EQ(stepsOn(counts, 1), 6);
+}
+
+TEST(WorkerCountChooser, TakesMoreRunsToDecideACloserCall) {
+    // One worker 20% slower: not clear after one probe run (within 25%), clear after two.
+    WorkerCountChooser chooser(2);
+    const std::vector<int> counts =
+        drive(chooser, kMin + 5 * kRun, [](int count, int) { return count == 2 ? 1.0 : 1.2; });
+    EXPECT_EQ(chooser.probes(), 1);
+    EXPECT_EQ(chooser.switches(), 0);
+    EXPECT_EQ(stepsOn(counts, 1), 2 * kRun);
+}
+
+TEST(WorkerCountChooser, ChangesToTheCallerAloneWhenItIsFasterAndStaysThere) {
+    WorkerCountChooser chooser(2);
+    const std::vector<int> counts =
+        drive(chooser, 2000, [](int count, int) { return count == 2 ? 1.10 : 1.0; });
+    EXPECT_EQ(chooser.switches(), 1);
+    // 10% is decided after three probe runs, each followed by a run on two workers; then every
+    // step runs on one worker but the probes of two.
+    const int switched = kMin + 7 * kRun;
+    EXPECT_EQ(counts[switched - 1], 2);
+    for (int i = switched; i < switched + kMin; ++i) ASSERT_EQ(counts[i], 1) << i;
+    EXPECT_GT(stepsOn(counts, 1), 1850);
+}
+
+TEST(WorkerCountChooser, ChangesBackWhenTheWholeTeamIsFasterAgain) {
+    // A busy machine for 1,000 steps (two workers 10% slower), then an idle one (two workers
+    // twice as fast): the chooser is back on two within kMaxInterval steps and a probe.
+    WorkerCountChooser chooser(2);
+    const std::vector<int> counts = drive(chooser, 3000, [](int count, int step) {
+        if (step < 1000) return count == 2 ? 1.10 : 1.0;
+        return count == 2 ? 0.5 : 1.0;
+    });
+    // Between steps 500 and 1,000, one worker but for one probe of two: three runs, each 10%
+    // slower, so not decided before the third.
+    EXPECT_EQ(stepsOn(std::vector<int>(counts.begin() + 500, counts.begin() + 1000), 1),
+              500 - 3 * kRun);
+    EXPECT_EQ(chooser.switches(), 2);
+    const int limit = 1000 + WorkerCountChooser::kMaxInterval + 8 * kRun;
+    for (int i = limit; i < 3000; ++i) {
+        // only one-step probes of one worker from here on
+        if (counts[i] == 1) {
+            ASSERT_EQ(counts[i - 1], 2) << i;
+            ASSERT_EQ(counts[i + 1], 2) << i;
+        }
+    }
+}
+
+TEST(WorkerCountChooser, NeitherATieNorASteadilyRisingCostMakesItChange) {
+    WorkerCountChooser tie(2);
+    drive(tie, 3000, [](int count, int) { return count == 2 ? 1.0 : 0.99; });
+    EXPECT_EQ(tie.switches(), 0);
+    // Each step costs more than the last, whichever the count: the probe costs more than the
+    // steps before it and less than the steps after, and the two cancel.
+    WorkerCountChooser rising(2);
+    drive(rising, 3000, [](int, int step) { return 1.0 + 0.01 * step; });
+    EXPECT_EQ(rising.switches(), 0);
+}
+
+TEST(WorkerCountChooser, OneWorkerHasNothingToChoose) {
+    WorkerCountChooser chooser(1);
+    const std::vector<int> counts = drive(chooser, 500, [](int, int) { return 1.0; });
+    EXPECT_EQ(stepsOn(counts, 1), 500);
+    EXPECT_EQ(chooser.probes(), 0);
+}
+
+namespace {
+
+std::unique_ptr<World> pyramidWorld(int workers, bool adapt) {
+    WorldDef def;
+    def.workerCount = workers;
+    def.adaptWorkerCount = adapt;
+    auto world = std::make_unique<World>(def);
+    BodyDef groundDef;
+    const BodyId ground = world->createBody(groundDef);
+    world->createShape(ground, ShapeDef{}, Polygon::box(60.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    scenes::PyramidSpec spec;
+    spec.rows = 40;  // 820 boxes, 1,600 contacts: a coloured island, solved by a team
+    scenes::addPyramid(*world, spec);
+    return world;
+}
+
+}  // namespace
+
+TEST(WorkerCount, AWorldProbingOneWorkerStepsToTheSameBitsAsOneOnOneWorker) {
+    auto one = pyramidWorld(1, true);
+    auto two = pyramidWorld(2, true);
+    auto fixed = pyramidWorld(2, false);
+    std::vector<int> used;
+    for (int step = 0; step < 100; ++step) {
+        one->step(1.0f / 60.0f);
+        two->step(1.0f / 60.0f);
+        fixed->step(1.0f / 60.0f);
+        used.push_back(two->lastStepStats().workersUsed);
+        EXPECT_EQ(one->lastStepStats().workersUsed, 1);
+        EXPECT_EQ(fixed->lastStepStats().workersUsed, 2);
+        if (step % 10 == 9) {
+            ASSERT_EQ(one->stateHash(), two->stateHash()) << step;
+            ASSERT_EQ(one->stateHash(), fixed->stateHash()) << step;
+        }
+    }
+    // Whatever the clock says, the first probe's first step runs on one worker, and the steps
+    // before it on two.
+    for (int i = 0; i < kMin + kRun; ++i) ASSERT_EQ(used[i], 2) << i;
+    EXPECT_EQ(used[kMin + kRun], 1);
+}
