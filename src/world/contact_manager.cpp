@@ -97,7 +97,7 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     // Cheapest rejections first: most reported pairs that make no contact are filtered out.
     if (a.body == b.body || !filtersAllowContact(a.filter, b.filter)) return;
     std::uint64_t key = PairMap::key(shapeA, shapeB);
-    if (pairs_.find(key) != -1) return;
+    if (pairs_.contains(key)) return;
     if (!mayPair(a, b)) return;
     if (!askCustomFilter(shapeA, shapeB)) return;
 
@@ -277,7 +277,7 @@ void ContactManager::findNewContacts() {
         const Shape& shapeA = shapes_[a];
         const Shape& shapeB = shapes_[b];
         return shapeA.body != shapeB.body && filtersAllowContact(shapeA.filter, shapeB.filter) &&
-               pairs_.find(PairMap::key(a, b)) == -1 && mayPair(shapeA, shapeB);
+               !pairs_.contains(PairMap::key(a, b)) && mayPair(shapeA, shapeB);
     };
     const std::uint16_t present = presentCategories();
     auto mayMeetAnything = [this, present](std::int32_t s) {

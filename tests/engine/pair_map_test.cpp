@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -21,6 +22,7 @@ TEST(PairMap, AgreesWithAnOrderedMapThroughRandomChurn) {
         const std::uint64_t k = PairMap::key(a, b);
         ASSERT_EQ(k, PairMap::key(b, a));
         const auto found = truth.find(k);
+        ASSERT_EQ(map.contains(k), found != truth.end());
         if (found == truth.end()) {
             ASSERT_EQ(map.find(k), -1);
             if (random() % 3 != 0) {
@@ -40,6 +42,20 @@ TEST(PairMap, AgreesWithAnOrderedMapThroughRandomChurn) {
             for (const auto& [key, value] : truth) ASSERT_EQ(map.find(key), value);
         }
     }
+}
+
+TEST(PairMap, HoldsPairsOfTheLargestIndices) {
+    // The empty slot's key has both halves 2^32 - 1, beyond any index: no pair collides with it.
+    PairMap map;
+    const std::int32_t top = std::numeric_limits<std::int32_t>::max();
+    map.insert(PairMap::key(top, top - 1), 3);
+    map.insert(PairMap::key(0, top), 4);
+    EXPECT_EQ(map.find(PairMap::key(top - 1, top)), 3);
+    EXPECT_EQ(map.find(PairMap::key(top, 0)), 4);
+    EXPECT_FALSE(map.contains(PairMap::key(top, top - 2)));
+    map.erase(PairMap::key(top, top - 1));
+    EXPECT_FALSE(map.contains(PairMap::key(top, top - 1)));
+    EXPECT_EQ(map.size(), 1u);
 }
 
 TEST(PairMap, ErasingAnAbsentPairChangesNothing) {
