@@ -1,7 +1,7 @@
 // A hash map from an unordered pair of shape indices to a contact index, with open addressing
 // and linear probing in two flat arrays (keys, values). It answers "does this pair already have
-// a contact?" in O(1), and nothing ever iterates it, so its layout cannot leak into the order in which the
-// solver sees contacts.
+// a contact?" in O(1), and nothing ever iterates it, so its layout cannot leak into the order in
+// which the solver sees contacts.
 //
 // Erasing shifts the entries after the hole back towards their home slots instead of leaving
 // tombstones. With tombstones, contacts that come and go for ever fill the table with them and

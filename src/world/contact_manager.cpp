@@ -163,9 +163,9 @@ void ContactManager::updateContacts() {
             outcome = kKeep;
             if (!contacts_.isAlive(index)) continue;
             Contact& contact = contacts_[index];
-            const Shape& shapeA = shapes_[contact.shapeA];
-            const Shape& shapeB = shapes_[contact.shapeB];
             if (contact.needsFiltering) {
+                const Shape& shapeA = shapes_[contact.shapeA];
+                const Shape& shapeB = shapes_[contact.shapeB];
                 if (!mayPair(shapeA, shapeB) ||
                     !filtersAllowContact(shapeA.filter, shapeB.filter)) {
                     outcome = kDestroy;
@@ -179,6 +179,10 @@ void ContactManager::updateContacts() {
             bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
             bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
             if (!activeA && !activeB) continue;  // both asleep (or static): nothing changed
+            // The shapes only now: a shape spans several cache lines, and a contact whose bodies
+            // sleep needs neither.
+            const Shape& shapeA = shapes_[contact.shapeA];
+            const Shape& shapeB = shapes_[contact.shapeB];
             if (!broadPhase_.testOverlap(shapeA.proxyId, shapeB.proxyId)) {
                 outcome = kDestroy;
                 continue;
