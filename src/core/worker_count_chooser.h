@@ -65,7 +65,7 @@ public:
         }
     }
 
-    /// Probes so far, and the switches they led to (for tests and the bench's report).
+    /// Probes so far, and the switches they led to (for tests).
     int probes() const { return probes_; }
     int switches() const { return switches_; }
 
