@@ -90,7 +90,7 @@ TEST(WorkerCountChooser, ChangesBackWhenTheWholeTeamIsFasterAgain) {
               500 - 3 * kRun);
     EXPECT_EQ(chooser.switches(), 2);
     const int limit = 1000 + WorkerCountChooser::kMaxInterval + 8 * kRun;
-    for (int i = limit; i < 3000; ++i) {
+    for (int i = limit; i + 1 < 3000; ++i) {  // reads counts[i + 1]
         // only one-step probes of one worker from here on
         if (counts[i] == 1) {
             ASSERT_EQ(counts[i - 1], 2) << i;
