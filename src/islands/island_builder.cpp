@@ -22,18 +22,20 @@ void IslandBuilder::setContactReading(ContactReading reading) {
     contactReading = reading;
 }
 
-void IslandBuilder::tabulateContacts(const SlotPool<Contact>& contacts, std::int32_t bodyCapacity) {
+void IslandBuilder::tabulateContacts(const ContactCensus& census, std::int32_t contactCapacity,
+                                     std::int32_t bodyCapacity) {
     solid_.clear();
     const std::size_t bodySlots = static_cast<std::size_t>(bodyCapacity);
     resizeBuffer(tableStart_, bodySlots + 1);
     std::fill(tableStart_.begin(), tableStart_.end(), 0);
-    for (std::int32_t index = 0; index < contacts.capacity(); ++index) {
-        if (!contacts.isAlive(index)) continue;
-        const Contact& c = contacts[index];
-        if (!c.touching || c.sensor || !c.enabled) continue;
-        solid_.push_back({c.serial, index, {c.bodyA(), c.bodyB()}});
-        ++tableStart_[static_cast<std::size_t>(c.bodyA()) + 1];
-        ++tableStart_[static_cast<std::size_t>(c.bodyB()) + 1];
+    // The census, not the contacts: a dead slot and a contact that is not solid fail the
+    // same test.
+    for (std::int32_t index = 0; index < contactCapacity; ++index) {
+        const ContactSummary& c = census[index];
+        if (!c.solid()) continue;
+        solid_.push_back({c.serial, index, {c.bodies[0], c.bodies[1]}});
+        ++tableStart_[static_cast<std::size_t>(c.bodies[0]) + 1];
+        ++tableStart_[static_cast<std::size_t>(c.bodies[1]) + 1];
     }
     for (std::size_t b = 0; b < bodySlots; ++b) tableStart_[b + 1] += tableStart_[b];
     resizeBuffer(table_, static_cast<std::size_t>(tableStart_[bodySlots]));
@@ -68,7 +70,9 @@ void IslandBuilder::build(SolverStorage& storage, IslandSet& set) {
         reading == ContactReading::Table ||
         (reading == ContactReading::Auto && set.bodies.size() * kBodiesPerAwakeBodyForTable >=
                                                 static_cast<std::size_t>(bodies.size()));
-    if (useTable_) tabulateContacts(storage.contacts, bodies.capacity());
+    if (useTable_) {
+        tabulateContacts(storage.contactCensus, storage.contacts.capacity(), bodies.capacity());
+    }
 
     set.clear();
     // Cleared, and grown (at least twofold, buffer.h) when the pools have grown.

@@ -10,10 +10,11 @@
 //
 // A body's contacts are a list threaded through the contacts themselves, and following it is a
 // cache miss per contact, one after another. When many bodies are awake the search reads them
-// from a table instead: one pass over the contact pool in slot order (which the memory system
-// streams) lists each body's touching contacts, newest first by Contact::serial, which is the
-// lists' own order (a contact is linked at the front of its bodies' lists when made, and
-// snapshots are checked to keep that order). Both ways find the same islands in the same order.
+// from a table instead: one pass over the contact census (model/contact_census.h) in slot
+// order (which the memory system streams) lists each body's touching contacts, newest first
+// by Contact::serial, which is the lists' own order (a contact is linked at the front of its
+// bodies' lists when made, and snapshots are checked to keep that order). Both ways find the same
+// islands in the same order.
 #pragma once
 
 #include <cstdint>
@@ -63,7 +64,8 @@ private:
     std::vector<std::int32_t> stack_;
 
     /// Lists every body's touching contacts (solid: not sensors, enabled) in its list's order.
-    void tabulateContacts(const SlotPool<Contact>& contacts, std::int32_t bodyCapacity);
+    void tabulateContacts(const ContactCensus& census, std::int32_t contactCapacity,
+                          std::int32_t bodyCapacity);
     /// A touching contact as one of its bodies sees it: its edge key on that body's side and
     /// the body on the other side.
     struct ContactEntry {

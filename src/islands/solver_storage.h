@@ -6,6 +6,7 @@
 #include "joints/mouse_joint.h"
 #include "model/body.h"
 #include "model/contact.h"
+#include "model/contact_census.h"
 #include "model/island_revision.h"
 #include "model/shape.h"
 
@@ -17,6 +18,7 @@ struct SolverStorage {
     const SlotPool<Shape>& shapes;
     SlotPool<Joint>& joints;
     SlotPool<Contact>& contacts;
+    const ContactCensus& contactCensus;  // the contacts' summaries (ContactManager keeps it)
     SlotPool<MouseJoint>& mouseJoints;
     IslandRevision& islandRevision;
 };

@@ -33,13 +33,9 @@ struct Contact {
     // contact touches but is left out of islands, the solver and continuous collision.
     bool enabled = true;
 
-    // Continuous collision (world/continuous_solver.h): the order contacts were made in (the
-    // newest wins a tie between times of impact), and this step's time of impact, when known.
+    // The order contacts were made in: the island search's and continuous collision's
+    // (the newest wins a tie between times of impact).
     std::uint64_t serial = 0;
-    float toi = 1.0f;
-    std::uint8_t toiCount = 0;  // impacts solved this step
-    bool toiKnown = false;
-    bool toiDisabled = false;  // its impact did not touch: skipped for the rest of the step
 
     std::int32_t bodyA() const { return edges[0].body; }
     std::int32_t bodyB() const { return edges[1].body; }

@@ -1,5 +1,9 @@
 #include "world/contact_manager.h"
 
+#include <atomic>
+#include <stdexcept>
+#include <string>
+
 #include "core/buffer.h"
 #include "model/body_edge.h"
 
@@ -122,6 +126,8 @@ void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     std::int32_t index = contacts_.insert(contact);
     linkEdges(contacts_, bodies_, &Body::contactList, index);
     pairs_.insert(key, index);
+    census_.grow(contacts_.capacity());
+    census_.record(index, contacts_[index]);
 }
 
 void ContactManager::destroyContact(std::int32_t index) {
@@ -130,6 +136,7 @@ void ContactManager::destroyContact(std::int32_t index) {
     unlinkEdges(contacts_, bodies_, &Body::contactList, index);
     pairs_.erase(PairMap::key(contact.shapeA, contact.shapeB));
     contacts_.erase(index);
+    census_.forget(index);
 }
 
 // Two phases, so the narrow phase can run on every worker: first each contact decides its own
@@ -161,7 +168,15 @@ void ContactManager::updateContacts() {
         for (std::int32_t index = begin; index < end; ++index) {
             std::uint8_t& outcome = contactOutcomes_[index];
             outcome = kKeep;
-            if (!contacts_.isAlive(index)) continue;
+            // The census first: a contact whose bodies both sleep (or are static), with no
+            // filter to check, is not loaded at all.
+            const ContactSummary& summary = census_[index];
+            if (!summary.alive()) continue;
+            const Body& bodyA = bodies_[summary.bodies[0]];
+            const Body& bodyB = bodies_[summary.bodies[1]];
+            const bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
+            const bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
+            if (!activeA && !activeB && !summary.needsFiltering()) continue;
             Contact& contact = contacts_[index];
             if (contact.needsFiltering) {
                 const Shape& shapeA = shapes_[contact.shapeA];
@@ -172,12 +187,9 @@ void ContactManager::updateContacts() {
                     continue;
                 }
                 contact.needsFiltering = false;
+                census_.record(index, contact);
                 if (customFilter_) outcome = kAskFilter;
             }
-            const Body& bodyA = bodies_[contact.bodyA()];
-            const Body& bodyB = bodies_[contact.bodyB()];
-            bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
-            bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
             if (!activeA && !activeB) continue;  // both asleep (or static): nothing changed
             // The shapes only now: a shape spans several cache lines, and a contact whose bodies
             // sleep needs neither.
@@ -191,6 +203,7 @@ void ContactManager::updateContacts() {
             bool touching = updateContact(contact, shapeA, bodyA.xf, shapeB, bodyB.xf);
             if (!contact.enabled) outcome |= kWasDisabled;
             contact.enabled = true;  // until the pre-solve callback says otherwise
+            census_.record(index, contact);
             outcome |= kUpdated;
             if (touching != wasTouching) outcome |= touching ? kBegan : kEnded;
         }
@@ -218,7 +231,10 @@ void ContactManager::updateContacts() {
         }
         if (fate == kBegan || fate == kEnded) reportTouch(contact, fate == kBegan);
         // Asked only about contacts this update recomputed (a sleeping pair keeps its answer).
-        if ((outcome & kUpdated) && wantsPreSolve(contact)) contact.enabled = askPreSolve(contact);
+        if ((outcome & kUpdated) && wantsPreSolve(contact)) {
+            contact.enabled = askPreSolve(contact);
+            census_.record(index, contact);
+        }
         const bool wasEnabled = (outcome & kWasDisabled) == 0;
         if ((outcome & kUpdated) && contact.enabled != wasEnabled) islandRevision_.bump();
     }
@@ -234,11 +250,26 @@ bool ContactManager::updateContactNow(std::int32_t index) {
     const bool wasEnabled = contact.enabled;
     contact.enabled = true;
     if (wantsPreSolve(contact)) contact.enabled = askPreSolve(contact);
+    census_.record(index, contact);
     if (contact.enabled != wasEnabled) islandRevision_.bump();
     return touching && contact.enabled;
 }
 
+namespace {
+std::atomic<bool> censusChecks{false};
+}  // namespace
+
+void ContactManager::setCensusChecks(bool on) {
+    censusChecks = on;
+}
+
+void ContactManager::checkCensus(const char* when) const {
+    if (!censusChecks.load(std::memory_order_relaxed) || census_.matches(contacts_)) return;
+    throw std::logic_error(std::string("pivot2d: the contact census is out of date ") + when);
+}
+
 void ContactManager::update() {
+    checkCensus("before the contact update");
     beginEvents_.clear();
     endEvents_.clear();
     sensorBeginEvents_.clear();
@@ -251,6 +282,7 @@ void ContactManager::update() {
 }
 
 void ContactManager::afterSolve(const std::vector<std::int32_t>& solvedBodies) {
+    checkCensus("after the contact update");
     // Every non-static body solved this step moved: sweep its broad-phase boxes.
     synchronizeSolvedBodies(solvedBodies);
     findNewContacts();
@@ -346,9 +378,9 @@ void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& so
 
 void ContactManager::refilterBodyPair(std::int32_t a, std::int32_t b) {
     for (std::int32_t key = bodies_[b].contactList; key != -1;) {
-        Contact& contact = contacts_[edgeOwner(key)];
+        const Contact& contact = contacts_[edgeOwner(key)];
         int side = edgeSide(key);
-        if (contact.edges[1 - side].body == a) contact.needsFiltering = true;
+        if (contact.edges[1 - side].body == a) refilterContact(edgeOwner(key));
         key = contact.edges[side].nextKey;
     }
     for (std::int32_t body : {a, b}) {
@@ -359,12 +391,18 @@ void ContactManager::refilterBodyPair(std::int32_t a, std::int32_t b) {
     newShapes_ = true;
 }
 
+void ContactManager::refilterContact(std::int32_t contactIndex) {
+    Contact& contact = contacts_[contactIndex];
+    contact.needsFiltering = true;
+    census_.record(contactIndex, contact);
+}
+
 void ContactManager::refilterBody(std::int32_t bodyIndex) {
     Body& body = bodies_[bodyIndex];
     for (std::int32_t key = body.contactList; key != -1;) {
-        Contact& contact = contacts_[edgeOwner(key)];
+        const Contact& contact = contacts_[edgeOwner(key)];
         int side = edgeSide(key);
-        contact.needsFiltering = true;
+        refilterContact(edgeOwner(key));
         wakeUp(bodies_[contact.edges[1 - side].body], islandRevision_);
         key = contact.edges[side].nextKey;
     }
@@ -432,6 +470,7 @@ void ContactManager::adoptState(State&& state) {
         pairs_.insert(PairMap::key(c.shapeA, c.shapeB), index);
         if (c.touching && !c.sensor) ++touchingCount_;
     });
+    census_.rebuild(contacts_);
     categoryCounts_ = {};
     shapes_.forEach([&](std::int32_t, const Shape& s) { countCategories(s.filter, +1); });
 }

@@ -16,6 +16,7 @@
 #include "joints/joint.h"
 #include "model/body.h"
 #include "model/contact.h"
+#include "model/contact_census.h"
 #include "model/shape.h"
 #include "pivot/world.h"
 
@@ -78,6 +79,15 @@ public:
     /// Flags every contact of a body for re-filtering, wakes the bodies it touches or is jointed
     /// to, and makes the broad phase report its shapes again (after its type changed).
     void refilterBody(std::int32_t body);
+    /// Flags one contact for re-filtering before the next update (its shape's filter changed).
+    void refilterContact(std::int32_t contactIndex);
+
+    /// Every contact slot's summary (model/contact_census.h), kept true by this manager: a
+    /// contact's touching, sensor, enabled and filtering flags change only through it.
+    const ContactCensus& census() const { return census_; }
+    /// For tests: when on, every update() and afterSolve() first checks the census against the
+    /// contacts and throws std::logic_error if it is out of date. Process-wide; off by default.
+    static void setCensusChecks(bool on);
 
     /// Contacts touching, sensors left out (StepStats::touchingCount): counted as they begin
     /// and end, so that no step has to pass over every contact for it.
@@ -126,6 +136,7 @@ private:
     /// A broad-phase pair: makes a contact unless one exists or the pair may not collide.
     void addPair(std::int32_t shapeA, std::int32_t shapeB);
     void updateContacts();
+    void checkCensus(const char* when) const;
     /// synchronizeShapes for every body solved this step, with the boxes computed and the
     /// containment tests made on every worker; only the re-insertions are made in turn.
     void synchronizeSolvedBodies(const std::vector<std::int32_t>& solvedBodies);
@@ -158,6 +169,7 @@ private:
 
     BroadPhase broadPhase_;
     PairMap pairs_;  // shape pair -> contact index
+    ContactCensus census_;
     std::array<std::int32_t, 16> categoryCounts_{};
     bool newShapes_ = false;
     std::uint64_t contactsMade_ = 0;  // Contact::serial of the last contact made

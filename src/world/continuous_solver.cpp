@@ -85,17 +85,17 @@ std::uint8_t tunnelFlags(const Body& b) {
 // Whether the contact can be an impact: something moves, and one side is static, kinematic or
 // a bullet (two ordinary dynamic bodies are left to the discrete step). `flags`: tunnelFlags of
 // every body.
-bool mayImpact(const Contact& c, const std::vector<std::uint8_t>& flags) {
-    if (c.sensor || !c.enabled) return false;  // a sensor stops nothing, nor a disabled contact
-    const std::uint8_t a = flags[static_cast<std::size_t>(c.bodyA())];
-    const std::uint8_t b = flags[static_cast<std::size_t>(c.bodyB())];
+bool mayImpact(const ContactSummary& c, const std::vector<std::uint8_t>& flags) {
+    if (!c.blocking()) return false;  // a sensor stops nothing, nor a disabled contact
+    const std::uint8_t a = flags[static_cast<std::size_t>(c.bodies[0])];
+    const std::uint8_t b = flags[static_cast<std::size_t>(c.bodies[1])];
     if (((a | b) & kActive) == 0) return false;
     if ((a | b) & kOptedOut) return false;
     return ((a | b) & kStopsTunnelling) != 0;
 }
 
-bool inPlay(const Contact& c) {
-    return !c.toiDisabled && c.toiCount <= kMaxImpactsPerContact;
+bool inPlay(const ContinuousSolver::ImpactTime& t) {
+    return !t.disabled && t.count <= kMaxImpactsPerContact;
 }
 
 }  // namespace
@@ -116,8 +116,8 @@ void ContinuousSolver::keepPath(std::int32_t index, const Body& body) {
     if (body.type == BodyType::Kinematic) kinematicPaths_.push_back({index, Motion(body)});
 }
 
-void ContinuousSolver::computeImpact(Contact& contact, SlotPool<Body>& bodies,
-                                     const SlotPool<Shape>& shapes) {
+void ContinuousSolver::computeImpact(std::int32_t index, const Contact& contact,
+                                     SlotPool<Body>& bodies, const SlotPool<Shape>& shapes) {
     Body& a = bodies[contact.bodyA()];
     Body& b = bodies[contact.bodyB()];
     // Both sweeps must start at the same moment.
@@ -132,22 +132,24 @@ void ContinuousSolver::computeImpact(Contact& contact, SlotPool<Body>& bodies,
     const ImpactResult impact =
         timeOfImpact(contactProxy(shapes[contact.shapeA]), sweepOf(a),
                      contactProxy(shapes[contact.shapeB]), sweepOf(b), 1.0f);
-    contact.toi = impact.state == ImpactState::Touching
-                      ? std::min(alpha0 + (1.0f - alpha0) * impact.t, 1.0f)
-                      : 1.0f;
-    contact.toiKnown = true;
+    ImpactTime& time = impactTimes_[static_cast<std::size_t>(index)];
+    time.toi = impact.state == ImpactState::Touching
+                   ? std::min(alpha0 + (1.0f - alpha0) * impact.t, 1.0f)
+                   : 1.0f;
+    time.known = true;
 }
 
 std::int32_t ContinuousSolver::earliestImpact(SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
-                                              SlotPool<Contact>& contacts, float& alpha) {
+                                              SlotPool<Contact>& contacts,
+                                              const ContactCensus& census, float& alpha) {
     std::int32_t best = -1;
     float bestAlpha = 1.0f;
     auto consider = [&](std::int32_t index) {
-        const Contact& c = contacts[index];
-        if (c.toi < bestAlpha ||
-            (best != -1 && c.toi == bestAlpha && c.serial > contacts[best].serial)) {
+        const float toi = timeOf(index).toi;
+        if (toi < bestAlpha ||
+            (best != -1 && toi == bestAlpha && census[index].serial > census[best].serial)) {
             best = index;
-            bestAlpha = c.toi;
+            bestAlpha = toi;
         }
     };
     // The contacts whose impact is unknown (made or moved since the last pass), newest first:
@@ -155,18 +157,18 @@ std::int32_t ContinuousSolver::earliestImpact(SlotPool<Body>& bodies, const Slot
     // Box2D lists its contacts newest first.
     unknown_.clear();
     for (std::int32_t index : dirty_) {
-        if (!contacts.isAlive(index)) continue;
-        const Contact& c = contacts[index];
-        if (inPlay(c) && !c.toiKnown && mayImpact(c, tunnelFlags_)) unknown_.push_back(index);
+        const ContactSummary& c = census[index];
+        if (!c.alive()) continue;
+        const ImpactTime& t = timeOf(index);
+        if (inPlay(t) && !t.known && mayImpact(c, tunnelFlags_)) unknown_.push_back(index);
     }
     dirty_.clear();
-    std::sort(unknown_.begin(), unknown_.end(), [&](std::int32_t x, std::int32_t y) {
-        return contacts[x].serial > contacts[y].serial;
-    });
+    std::sort(unknown_.begin(), unknown_.end(),
+              [&](std::int32_t x, std::int32_t y) { return census[x].serial > census[y].serial; });
     unknown_.erase(std::unique(unknown_.begin(), unknown_.end()), unknown_.end());
     for (std::int32_t index : unknown_) {
-        computeImpact(contacts[index], bodies, shapes);
-        if (contacts[index].toi < 1.0f && !isCandidate_[static_cast<std::size_t>(index)]) {
+        computeImpact(index, contacts[index], bodies, shapes);
+        if (timeOf(index).toi < 1.0f && !isCandidate_[static_cast<std::size_t>(index)]) {
             isCandidate_[static_cast<std::size_t>(index)] = 1;
             candidates_.push_back(index);
         }
@@ -175,8 +177,8 @@ std::int32_t ContinuousSolver::earliestImpact(SlotPool<Body>& bodies, const Slot
     // rest as it goes.
     std::size_t kept = 0;
     for (std::int32_t index : candidates_) {
-        const Contact& c = contacts[index];
-        if (!contacts.isAlive(index) || !inPlay(c) || !c.toiKnown || !(c.toi < 1.0f)) {
+        const ImpactTime& t = timeOf(index);
+        if (!census[index].alive() || !inPlay(t) || !t.known || !(t.toi < 1.0f)) {
             isCandidate_[static_cast<std::size_t>(index)] = 0;
             continue;
         }
@@ -349,18 +351,18 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     // out only from 1,024 contacts: below that, handing a chunk to another worker cost more than
     // the pass (pyramid_10 and chains_10 ran twice as long on two workers as on one).
     earliestByWorker_.assign(static_cast<std::size_t>(pool.workerCount()), 1.0f);
+    // The census says which contacts may be impacts; only those are loaded. Every slot's time
+    // is reset, dead ones too: a contact made in a free slot in mid-step starts unknown.
+    const ContactCensus& census = contactManager.census();
+    resizeBuffer(impactTimes_, static_cast<std::size_t>(contacts.capacity()));
     pool.parallelFor(contacts.capacity(), 1024, [&](int begin, int end, int worker) {
         float& earliest = earliestByWorker_[static_cast<std::size_t>(worker)];
         for (std::int32_t index = begin; index < end; ++index) {
-            if (!contacts.isAlive(index)) continue;
-            Contact& c = contacts[index];
-            c.toi = 1.0f;
-            c.toiCount = 0;
-            c.toiKnown = false;
-            c.toiDisabled = false;
-            if (!mayImpact(c, tunnelFlags_)) continue;
-            computeImpact(c, bodies, shapes);
-            earliest = std::min(earliest, c.toi);
+            impactTimes_[static_cast<std::size_t>(index)] = ImpactTime{};
+            const ContactSummary& c = census[index];
+            if (!c.alive() || !mayImpact(c, tunnelFlags_)) continue;
+            computeImpact(index, contacts[index], bodies, shapes);
+            earliest = std::min(earliest, timeOf(index).toi);
         }
     });
     const float earliest = *std::min_element(earliestByWorker_.begin(), earliestByWorker_.end());
@@ -389,9 +391,8 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     candidates_.clear();
     dirty_.clear();
     for (std::int32_t index = 0; index < contacts.capacity(); ++index) {
-        if (!contacts.isAlive(index)) continue;
-        const Contact& c = contacts[index];
-        if (c.toiKnown && c.toi < 1.0f) {
+        const ImpactTime& t = timeOf(index);  // a dead slot's is unknown
+        if (t.known && t.toi < 1.0f) {
             isCandidate_[static_cast<std::size_t>(index)] = 1;
             candidates_.push_back(index);
         }
@@ -399,7 +400,7 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     int impacts = 0;
     for (;;) {
         float alpha = 1.0f;
-        const std::int32_t contactIndex = earliestImpact(bodies, shapes, contacts, alpha);
+        const std::int32_t contactIndex = earliestImpact(bodies, shapes, contacts, census, alpha);
         if (contactIndex < 0) break;
         resizeBuffer(inIsland_, static_cast<std::size_t>(contacts.capacity()), std::uint8_t{0});
 
@@ -412,12 +413,12 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
         advanceBody(a, alpha);
         advanceBody(b, alpha);
         const bool touching = contactManager.updateContactNow(contactIndex);
-        Contact& contact = contacts[contactIndex];
-        contact.toiKnown = false;
-        ++contact.toiCount;
+        ImpactTime& time = impactTimes_[static_cast<std::size_t>(contactIndex)];
+        time.known = false;
+        ++time.count;
         if (!touching) {
             // The sweep said touching, the manifold found no point: skip the contact this step.
-            contact.toiDisabled = true;
+            time.disabled = true;
             beforeA.restore(a);
             beforeB.restore(b);
             continue;
@@ -441,12 +442,13 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
             if (body.type != BodyType::Dynamic) continue;
             contactManager.synchronizeShapesFrom(bodyIndex, sweepStart(body));
             for (std::int32_t key = body.contactList; key != -1;) {
-                Contact& c = contacts[edgeOwner(key)];
-                c.toiKnown = false;
-                key = c.edges[edgeSide(key)].nextKey;
+                impactTimes_[static_cast<std::size_t>(edgeOwner(key))].known = false;
+                key = contacts[edgeOwner(key)].edges[edgeSide(key)].nextKey;
             }
         }
         contactManager.findNewContacts();
+        // New contacts in new slots start unknown (ImpactTime{}).
+        resizeBuffer(impactTimes_, static_cast<std::size_t>(contacts.capacity()));
         // What the next search must look at: every contact of a body the impact moved or woke
         // (their impacts were reset above, or may now be wanted), new contacts among them (each
         // has a moved body). A static body's contacts changed only on their other side.

@@ -70,14 +70,24 @@ public:
     };
     const std::vector<Impact>& impacts() const { return impacts_; }
 
+    /// A contact's time of impact this step, as far as known.
+    struct ImpactTime {
+        float toi = 1.0f;        // the fraction of the step; 1: none
+        std::uint8_t count = 0;  // impacts solved this step
+        bool known = false;
+        bool disabled = false;  // its impact did not touch: skipped for the rest of the step
+    };
+
 private:
     /// The contact's time of impact as a fraction of the step (1: none), moving the start of
     /// whichever sweep starts earlier to the other's.
-    void computeImpact(Contact& contact, SlotPool<Body>& bodies, const SlotPool<Shape>& shapes);
+    void computeImpact(std::int32_t index, const Contact& contact, SlotPool<Body>& bodies,
+                       const SlotPool<Shape>& shapes);
     /// The earliest known impact after computing the unknown ones, newest contact first; -1 if
     /// none is before the end of the step.
     std::int32_t earliestImpact(SlotPool<Body>& bodies, const SlotPool<Shape>& shapes,
-                                SlotPool<Contact>& contacts, float& alpha);
+                                SlotPool<Contact>& contacts, const ContactCensus& census,
+                                float& alpha);
     /// Steps 2 and 3 for the event of `contactIndex` at `alpha`, whose bodies are advanced.
     void buildIsland(std::int32_t contactIndex, float alpha, SlotPool<Body>& bodies,
                      SlotPool<Contact>& contacts, ContactManager& contactManager);
@@ -86,6 +96,12 @@ private:
     void solveIsland(SlotPool<Body>& bodies, const SlotPool<Contact>& contacts,
                      const StepContext& step, float alpha);
 
+    const ImpactTime& timeOf(std::int32_t index) const {
+        return impactTimes_[static_cast<std::size_t>(index)];
+    }
+    // Per contact slot, reset at the start of each solve: kept here, not in the contacts, so
+    // that the reset streams 8 bytes a slot rather than every contact.
+    std::vector<ImpactTime> impactTimes_;
     std::vector<std::int32_t> unknown_;     // contacts whose impact a pass must compute
     std::vector<std::int32_t> dirty_;       // contacts an impact touched: unknown_ comes from these
     std::vector<std::int32_t> candidates_;  // contacts with a known impact before the step's end

@@ -124,7 +124,8 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     moveEvents.clear();
     contactManager.update();
 
-    SolverStorage storage{bodies, shapes, joints, contacts, mouseJoints, islandRevision};
+    SolverStorage storage{bodies,      shapes,        joints, contacts, contactManager.census(),
+                          mouseJoints, islandRevision};
     const StepTotals totals = stepper.solve(storage, context);
     stats = StepStats{};
     stats.islandCount = totals.islands;

@@ -453,8 +453,10 @@ void World::setShapeFilter(ShapeId id, const Filter& filter) {
     w.contactManager.countCategories(shape.filter, +1);
     // Existing contacts may now be forbidden; pairs the old filter refused may now be allowed.
     for (std::int32_t key = w.bodies[shape.body].contactList; key != -1;) {
-        Contact& contact = w.contacts[edgeOwner(key)];
-        if (contact.shapeA == index || contact.shapeB == index) contact.needsFiltering = true;
+        const Contact& contact = w.contacts[edgeOwner(key)];
+        if (contact.shapeA == index || contact.shapeB == index) {
+            w.contactManager.refilterContact(edgeOwner(key));
+        }
         key = contact.edges[edgeSide(key)].nextKey;
     }
     w.contactManager.broadPhase().touchProxy(shape.proxyId);

@@ -151,10 +151,16 @@ void describeContact(Io& io, C& c) {
     io.value(c.sensor);
     io.value(c.enabled);
     io.value(c.serial);
-    io.value(c.toi);
-    io.value(c.toiCount);
-    io.value(c.toiKnown);
-    io.value(c.toiDisabled);
+    // Continuous collision's time of impact once lived here; it lasts only within a step, so
+    // "none known" is written in its place (the format stays) and what is read is dropped.
+    float toi = 1.0f;
+    std::uint8_t toiCount = 0;
+    bool toiKnown = false;
+    bool toiDisabled = false;
+    io.value(toi);
+    io.value(toiCount);
+    io.value(toiKnown);
+    io.value(toiDisabled);
 }
 
 template <typename Io, typename Spring>

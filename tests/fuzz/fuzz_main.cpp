@@ -1,12 +1,14 @@
 // pivot-fuzz: runs the random-operation driver (fuzz_driver.h) and prints what it did.
 //   pivot-fuzz [--seed N] [--operations N] [--trace] [--keep-going] [--check-every-operation]
 //              [--dump-before N] [--no-extremes] [--require-finite] [--journal PREFIX]
-//              [--verify-islands]
+//              [--verify-islands] [--verify-census]
 //   pivot-fuzz --replay FILE
 // Exit status 0 when every check held, 1 on a failure, 2 on bad arguments. --replay replays a
 // journal written with --journal and exits with 3 if a body or joint turns non-finite.
 // --verify-islands searches every step's islands and fails if a step whose islands would have
 // been kept from the step before (nothing counted in IslandRevision changed) found others.
+// --verify-census checks the contact census (model/contact_census.h) against the contacts at
+// every contact update: a stale entry fails the step that finds it.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +19,7 @@
 #include "fuzz_driver.h"
 #include "journal.h"
 #include "solver/stepper.h"
+#include "world/contact_manager.h"
 
 namespace {
 
@@ -55,7 +58,7 @@ int usage() {
                  "usage: pivot-fuzz [--seed N] [--operations N] [--trace] [--keep-going]\n"
                  "                  [--check-every-operation] [--dump-before N]\n"
                  "                  [--no-extremes] [--require-finite] [--journal PREFIX]\n"
-                 "                  [--verify-islands]\n"
+                 "                  [--verify-islands] [--verify-census]\n"
                  "       pivot-fuzz --replay FILE\n");
     return 2;
 }
@@ -94,6 +97,8 @@ int main(int argc, char** argv) {
             options.stopAtFirstFailure = false;
         } else if (std::strcmp(argv[i], "--verify-islands") == 0) {
             pivot::Stepper::setIslandReuse(pivot::Stepper::IslandReuse::Verify);
+        } else if (std::strcmp(argv[i], "--verify-census") == 0) {
+            pivot::ContactManager::setCensusChecks(true);
         } else {
             return usage();
         }
