@@ -1,14 +1,15 @@
 // What the passes over every contact slot ask first, kept beside the contact pool: is the slot
 // alive, whose bodies, touching, a sensor, enabled, due for re-filtering, and the contact's
-// serial. A contact is 152 bytes and its slot's alive flag sits at the far end; a census entry
-// is 24. The island search's table, continuous collision's first pass and the contact
-// update's skip of sleeping pairs read the census and load a contact only when it matters to
-// them: in a scene of 40,000 contacts of which 7,000 touch (smash), each pass streamed 6 MB of
-// contacts to find what 1 MB says.
+// serial. A contact's pool slot is 144 bytes, its alive flag at the far end; a census entry is
+// 24. The island search's table, continuous collision's first pass and the contact update's
+// skip of sleeping pairs read the census and load a contact only when it matters to them: in a
+// scene of 40,000 contacts of which 7,000 touch (smash), each pass streamed 6 MB of contacts
+// to find what 1 MB says.
 //
 // The contact manager keeps it true: every change to these fields of a contact goes through
-// ContactManager, which records the contact again (record), and matches() checks the whole
-// census against the pool (tests, and snapshots after loading).
+// ContactManager, which records the contact again (record); a loaded snapshot rebuilds it; and
+// matches() checks the whole census against the pool (ContactManager::setCensusChecks, for
+// tests and pivot-fuzz --verify-census).
 #pragma once
 
 #include <cstdint>

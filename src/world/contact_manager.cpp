@@ -282,7 +282,7 @@ void ContactManager::update() {
 }
 
 void ContactManager::afterSolve(const std::vector<std::int32_t>& solvedBodies) {
-    checkCensus("after the contact update");
+    checkCensus("after the solve");
     // Every non-static body solved this step moved: sweep its broad-phase boxes.
     synchronizeSolvedBodies(solvedBodies);
     findNewContacts();
