@@ -9,11 +9,16 @@
 // So the chooser asks the clock. Every so often it probes the other count: it times a run of
 // kRun steps on the current count, then alternates runs on the other count and on the current
 // one, and compares the two counts' mean run. Interleaving cancels a cost that rises or falls
-// steadily (a pile growing, bodies falling asleep). A clear difference decides after one probe
-// run; a close one takes up to kMaxProbeRuns, for a step's time varies by tens of percent
-// when a worker loses its core for a few milliseconds, and a close call costs little while it is
-// being made. A first probe step that alone costs kClearLoss times the current count's mean
-// ends the probe at once (one worker on a scene that two solve twice as fast).
+// steadily (a pile growing, bodies falling asleep), but not a jump: when a current run costs
+// kUnsteady times the one before the probe run between them (or a kUnsteady-th of it), the probe
+// decides nothing and the next one comes after the same interval. (`smash`: a heavy box hits a
+// wall of sleeping bricks and the step grows fivefold in six steps; a probe of the caller alone
+// made just then looked twice as fast as the team around it, and kept the caller alone
+// through the next 64 steps, which the team would have solved 20% faster.) A clear difference
+// decides after one probe run; a close one takes up to kMaxProbeRuns, for a step's time varies by
+// tens of percent when a worker loses its core for a few milliseconds, and a close call costs
+// little while it is being made. A first probe step that alone costs kClearLoss times the current
+// count's mean ends the probe at once (one worker on a scene that two solve twice as fast).
 //
 // A probe that loses puts the next one twice as far away, up to kMaxInterval steps: a machine
 // whose best count does not change pays little for being asked, and one that changes (the other
@@ -43,11 +48,17 @@ public:
                 break;
             case Phase::Current:
                 currentTime_ += duration;
+                runTime_ += duration;
                 if (stepsInPhase_ < kRun) break;
                 ++currentRuns_;
                 if (probeRuns_ == 0) {
+                    lastCurrentRun_ = runTime_;
                     enter(Phase::Probe);
+                } else if (runTime_ > kUnsteady * lastCurrentRun_ ||
+                           lastCurrentRun_ > kUnsteady * runTime_) {
+                    settleUndecided();
                 } else {
+                    lastCurrentRun_ = runTime_;
                     judge();
                 }
                 break;
@@ -65,9 +76,11 @@ public:
         }
     }
 
-    /// Probes so far, and the switches they led to (for tests).
+    /// Probes decided so far, the switches they led to, and probes left undecided because the
+    /// cost jumped (for tests).
     int probes() const { return probes_; }
     int switches() const { return switches_; }
+    int undecided() const { return undecided_; }
 
     /// Steps in a run: a probe's runs, and the current count's runs around them.
     static constexpr int kRun = 3;
@@ -78,6 +91,7 @@ public:
     /// are a tie, and a tie keeps the current one.
     static constexpr double kMargin = 0.03;
     static constexpr double kClearLoss = 1.5;
+    static constexpr double kUnsteady = 1.5;
 
 private:
     enum class Phase { Settled, Current, Probe };
@@ -87,6 +101,7 @@ private:
     void enter(Phase phase) {
         phase_ = phase;
         stepsInPhase_ = 0;
+        runTime_ = 0.0;
     }
 
     // After each run on the current count that follows a probe run: decide, or probe once more.
@@ -102,6 +117,14 @@ private:
         } else {
             enter(Phase::Probe);
         }
+    }
+
+    // The cost jumped during the probe: no verdict, and no longer wait for the next probe.
+    void settleUndecided() {
+        ++undecided_;
+        currentTime_ = probeTime_ = 0.0;
+        currentRuns_ = probeRuns_ = 0;
+        enter(Phase::Settled);
     }
 
     void settle(bool probeWon) {
@@ -127,8 +150,11 @@ private:
     double probeTime_ = 0.0;
     int currentRuns_ = 0;
     int probeRuns_ = 0;
+    double runTime_ = 0.0;         // the run under way
+    double lastCurrentRun_ = 0.0;  // the last whole run on the current count
     int probes_ = 0;
     int switches_ = 0;
+    int undecided_ = 0;
 };
 
 }  // namespace pivot

@@ -61,9 +61,14 @@ struct ContactSummary {
 class ContactCensus {
 public:
     /// The contact in `index` is new or changed. Thread-safe for distinct indices once the
-    /// census covers the slot (grow first, outside any parallel pass).
+    /// census covers the slot (grow first, outside any parallel pass). An entry that already
+    /// says the same is not written: the contact update records every contact it updates, and
+    /// most are as they were, so their cache lines stay clean (shared by two workers' blocks
+    /// at the edges, and not written back).
     void record(std::int32_t index, const Contact& c) {
-        entries_[slot(index)] = ContactSummary::of(c);
+        const ContactSummary summary = ContactSummary::of(c);
+        ContactSummary& entry = entries_[slot(index)];
+        if (!(entry == summary)) entry = summary;
     }
     void forget(std::int32_t index) { entries_[slot(index)] = ContactSummary{}; }
     /// Covers every slot of a pool of this capacity (new slots dead).

@@ -3,6 +3,8 @@
 // count between steps stepping to the same bits as a world on one worker.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "core/worker_count_chooser.h"
@@ -108,6 +110,22 @@ TEST(WorkerCountChooser, NeitherATieNorASteadilyRisingCostMakesItChange) {
     WorkerCountChooser rising(2);
     drive(rising, 3000, [](int, int step) { return 1.0 + 0.01 * step; });
     EXPECT_EQ(rising.switches(), 0);
+}
+
+TEST(WorkerCountChooser, AProbeDuringAJumpInCostDecidesNothing) {
+    // smash's impact: the step grows by 30% a step for 40 steps, then stays; the caller alone
+    // is 20% slower throughout. A probe run taken as the climb starts sits between a cheap run
+    // and a dear one and looks faster than their mean: it must not switch.
+    const auto impact = [](int count, int step) {
+        const int climbed = std::min(std::max(step - 67, 0), 40);
+        return (count == 1 ? 1.2 : 1.0) * std::pow(1.3, climbed);
+    };
+    WorkerCountChooser chooser(2);
+    const std::vector<int> counts = drive(chooser, 2000, impact);
+    EXPECT_EQ(chooser.switches(), 0);
+    EXPECT_GE(chooser.undecided(), 1);  // the probe in the climb
+    EXPECT_GE(chooser.probes(), 3);     // and those after it, decided
+    EXPECT_EQ(counts[70], 2);
 }
 
 TEST(WorkerCountChooser, OneWorkerHasNothingToChoose) {
