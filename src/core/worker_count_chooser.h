@@ -119,7 +119,7 @@ private:
         }
     }
 
-    // The cost jumped during the probe: no verdict, and no longer wait for the next probe.
+    // The cost jumped during the probe: no verdict, and the next probe after the same interval.
     void settleUndecided() {
         ++undecided_;
         currentTime_ = probeTime_ = 0.0;
