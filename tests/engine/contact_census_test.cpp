@@ -96,7 +96,7 @@ TEST(ContactCensus, StaysTrueThroughEverythingThatChangesAContact) {
     const BodyId bullet = world.createBody(bulletDef);
     world.createShape(bullet, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.1f});
 
-    // Every other asked contact is disabled on odd steps: the answers flip the enabled flag.
+    // The asked contacts are disabled on odd steps: the answers flip their enabled flag.
     int step = 0;
     world.setPreSolveCallback([&](const ContactData&) { return step % 2 == 0; });
     std::vector<std::uint8_t> saved;
