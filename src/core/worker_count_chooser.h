@@ -122,9 +122,7 @@ private:
     // The cost jumped during the probe: no verdict, and the next probe after the same interval.
     void settleUndecided() {
         ++undecided_;
-        currentTime_ = probeTime_ = 0.0;
-        currentRuns_ = probeRuns_ = 0;
-        enter(Phase::Settled);
+        endProbe();
     }
 
     void settle(bool probeWon) {
@@ -136,6 +134,10 @@ private:
         } else {
             interval_ = std::min(2 * interval_, kMaxInterval);
         }
+        endProbe();
+    }
+
+    void endProbe() {
         currentTime_ = probeTime_ = 0.0;
         currentRuns_ = probeRuns_ = 0;
         enter(Phase::Settled);
