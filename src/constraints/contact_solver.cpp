@@ -307,11 +307,15 @@ void ContactSolver::reset(int count, const StepContext& step, const std::vector<
         softness_ = SoftFactors::of(hertz, step.contactDampingRatio, step.dt);
         pushSpeed_ = step.contactPushSpeed;
     }
-    const bool ngs = step.contactCorrection == ContactCorrection::NGS;
-    resizeBuffer(records_, static_cast<std::size_t>(count));
-    resizeBuffer(velocity_, static_cast<std::size_t>(count));
+    ngs_ = step.contactCorrection == ContactCorrection::NGS;
+    count_ = count;
+    // prepare writes every entry it uses (records for every contact, velocity constraints for
+    // the untiled, position constraints under NGS): nothing is cleared.
+    const std::size_t size = static_cast<std::size_t>(count);
+    growBuffer(records_, size);
+    growBuffer(velocity_, size);
     tiles_.layOut(count, batches, wideSolving());
-    resizeBuffer(position_, ngs ? static_cast<std::size_t>(count) : 0);
+    if (ngs_) growBuffer(position_, size);
 }
 
 void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
@@ -348,8 +352,8 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
         ContactRecord& record = records_[k];
         record = ContactRecord{contactIndex, {0.0f, 0.0f}};
 
-        // Only NGS contacts keep one (the array is empty otherwise).
-        if (!position_.empty()) {
+        // Only NGS contacts keep one.
+        if (ngs_) {
             ContactPositionConstraint& pc = position_[k];
             pc.indexA = c.indexA;
             pc.indexB = c.indexB;
@@ -548,7 +552,7 @@ void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool,
 
 float ContactSolver::solvePositions(IndexRange range, SolverPose* positions,
                                     bool independent) const {
-    if (!independent || position_.empty()) {
+    if (!independent || !ngs_) {
         return positionSweep(range, positions, positionBias_, kNoSlot, kNoSlot);
     }
     // One fold of the separations, as the one-by-one sweep makes it: the wide part's, then on.
@@ -566,7 +570,7 @@ float ContactSolver::solveImpactPositions(IndexRange range, SolverPose* position
 float ContactSolver::positionSweep(IndexRange range, SolverPose* positions, float bias,
                                    std::int32_t movableA, std::int32_t movableB,
                                    float smallest) const {
-    if (position_.empty()) return smallest;
+    if (!ngs_) return smallest;
     auto moves = [&](std::int32_t slot) {
         return movableA == kNoSlot || slot == movableA || slot == movableB;
     };

@@ -155,9 +155,9 @@ public:
     /// the switch above is on).
     static bool wideSolving();
     /// Whether any contact takes part in the NGS position phase.
-    bool hasPositionConstraints() const { return !position_.empty(); }
+    bool hasPositionConstraints() const { return ngs_ && count_ > 0; }
     /// Soft contacts: whether they relax, and one relax sweep over [range) (rigid, no spring).
-    bool relaxes() const { return soft_ && !velocity_.empty(); }
+    bool relaxes() const { return soft_ && count_ > 0; }
     void relax(IndexRange range, SolverVelocity* velocities, bool independent = false);
 
     /// A sweep's contacts count as solved when no point is deeper than three slops.
@@ -201,10 +201,13 @@ private:
         return std::min(-softness_.biasRate * std::min(0.0f, separation + kLinearSlop), pushSpeed_);
     }
 
+    // Each array holds at least count_ entries (growBuffer: the rest are a bigger island's).
+    int count_ = 0;
     std::vector<ContactRecord> records_;
     std::vector<ContactVelocityConstraint> velocity_;  // untiled contacts' (see above)
     ContactTiles tiles_;  // the wide sweeps' constraints (a tiled contact's only copy)
-    std::vector<ContactPositionConstraint> position_;
+    std::vector<ContactPositionConstraint> position_;  // NGS contacts' only
+    bool ngs_ = false;
     float positionBias_ = 0.0f;
     bool baumgarte_ = false;
     bool soft_ = false;

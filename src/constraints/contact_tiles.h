@@ -95,15 +95,16 @@ public:
     /// Lays out `count` contacts: tiles for the independent batches (those not `serial`) of
     /// `batches` (none without batches, or when `enabled` is false). Reuses the buffers.
     void layOut(int count, const std::vector<Batch>* batches, bool enabled) {
-        resizeBuffer(slot_, static_cast<std::size_t>(count));
-        std::fill(slot_.begin(), slot_.end(), -1);
+        growBuffer(slot_, static_cast<std::size_t>(count));
+        std::fill(slot_.begin(), slot_.begin() + count, -1);
         std::size_t tiles = 0;
         if (enabled && batches != nullptr) {
             for (const Batch& batch : *batches) {
                 if (!batch.serial) tiles += static_cast<std::size_t>(tilesOf(batch));
             }
         }
-        resizeBuffer(tiles_, tiles);
+        // Every lane of a tile is written before it is read (by prepare, or cleared below).
+        growBuffer(tiles_, tiles);
         if (tiles == 0) return;
         int tile = 0;
         for (const Batch& batch : *batches) {

@@ -39,6 +39,15 @@ void resizeBuffer(std::vector<T>& buffer, std::size_t size) {
     if (size > buffer.capacity()) buffer.reserve(std::max(size, 2 * buffer.capacity()));
     buffer.resize(size);
 }
+/// Makes `buffer` hold at least `size` elements, never fewer than before: for an array reused
+/// by objects of varying sizes (one island after another) whose owner keeps its own count and
+/// writes every element it uses. resizeBuffer value-initialises every element it adds, so an
+/// array resized down for one island and up for the next zeroed the difference each time, for
+/// elements about to be overwritten (2% of `smash`'s step, 9,000 islands a step).
+template <typename T>
+void growBuffer(std::vector<T>& buffer, std::size_t size) {
+    if (size > buffer.size()) resizeBuffer(buffer, size);
+}
 template <typename T>
 void resizeBuffer(std::vector<T>& buffer, std::size_t size, const T& value) {
     if (size > buffer.capacity()) buffer.reserve(std::max(size, 2 * buffer.capacity()));
