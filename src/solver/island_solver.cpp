@@ -8,12 +8,14 @@
 #include "core/buffer.h"
 #include "islands/graph_coloring.h"
 #include "pivot/constants.h"
+#include "solver/body_motion.h"
 
 namespace pivot {
 
 namespace {
 
 std::atomic<bool> jointRemeasuring{true};
+std::atomic<bool> loneBodyShortcut{true};
 
 // Whether the substep after a first one re-measures the joints kept across substeps instead of
 // rebuilding them (without warm starting, each substep's impulses start at zero: rebuilt).
@@ -67,20 +69,10 @@ void measureRotations(const Team& team, IslandWorkspace& work) {
 // (semi-implicit Euler: velocities first, positions later from the new velocities).
 void integrateVelocities(const Team& team, const IslandView& island, IslandWorkspace& work,
                          const SlotPool<Body>& bodies, const StepContext& step) {
-    const float h = step.dt;
     team.forBlocks(island.bodyCount, [&](IndexRange mine) {
         for (int i = mine.begin; i < mine.end; ++i) {
             const Body& b = bodies[island.bodies[i]];
-            if (b.type != BodyType::Dynamic) continue;
-            Vec2 v = work.velocities[i].v;
-            float w = work.velocities[i].w;
-            v += h * b.invMass * (b.gravityScale * b.mass * step.gravity + b.force);
-            w += h * b.invInertia * b.torque;
-            // Damping, dv/dt = -c v, integrated with the Pade approximation
-            // exp(-c h) ~ 1 / (1 + c h): stable for any c h >= 0.
-            v *= 1.0f / (1.0f + h * b.linearDamping);
-            w *= 1.0f / (1.0f + h * b.angularDamping);
-            work.velocities[i] = {v, w};
+            if (b.type == BodyType::Dynamic) integrateVelocity(b, work.velocities[i], step);
         }
     });
 }
@@ -235,32 +227,13 @@ void prepareMouseJoints(const IslandView& island, IslandWorkspace& work,
     }
 }
 
-// Move every body by its velocity, limiting the move per step (kMaxTranslation,
-// kMaxRotation). The limit scales the velocity itself so the next step starts from it.
+// Move every body by its velocity, limiting the move per step (integratePosition).
 void integratePositions(const Team& team, IslandWorkspace& work, const StepContext& step,
                         IslandReport& report) {
-    const float h = step.dt;
-    // Each substep may move a body its share of the step's limit, so the fastest speed does not
-    // depend on the substep count (divided by 1, the limits are exactly the constants).
-    const float substeps = static_cast<float>(step.substepCount);
-    const float maxTranslation = kMaxTranslation / substeps;
-    const float maxRotation = kMaxRotation / substeps;
+    const MotionLimits limits(step);
     team.forBlocks(static_cast<int>(work.velocities.size()), [&](IndexRange mine) {
         for (int i = mine.begin; i < mine.end; ++i) {
-            SolverVelocity& vel = work.velocities[i];
-            SolverPose& pos = work.positions[i];
-            Vec2 translation = h * vel.v;
-            if (dot(translation, translation) > maxTranslation * maxTranslation) {
-                vel.v *= maxTranslation / length(translation);
-                ++report.translationClamps;
-            }
-            float rotation = h * vel.w;
-            if (rotation * rotation > maxRotation * maxRotation) {
-                vel.w *= maxRotation / std::fabs(rotation);
-                ++report.rotationClamps;
-            }
-            pos.c += h * vel.v;
-            pos.a += h * vel.w;
+            integratePosition(work.velocities[i], work.positions[i], step.dt, limits, report);
         }
     });
 }
@@ -295,45 +268,15 @@ bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepCon
     return true;
 }
 
-// A body whose solved state is not finite keeps the pose it started the step with (a dynamic
-// one at rest): NaN never reaches the bodies, the broad phase or the next step. Denormals are
-// flushed to zero, angles past kMaxMagnitude reduced by whole turns, and a body that left the
-// world's coordinate limits is held at the edge, so that every state written back is one the
-// API would accept (angleWithinLimits, holdAtWorldEdge).
+// Every body's solved state back into the body (writeBackBody).
 void writeBack(const Team& team, const IslandView& island, const IslandWorkspace& work,
                SlotPool<Body>& bodies, IslandReport& report) {
     team.forBlocks(island.bodyCount, [&](IndexRange mine) {
         for (int i = mine.begin; i < mine.end; ++i) {
             Body& b = bodies[island.bodies[i]];
-            if (b.type == BodyType::Static) continue;
-            restartSweep(b);  // the step's motion starts where the body was (continuous collision)
-            const SolverPose& p = work.positions[i];
-            const SolverVelocity& v = work.velocities[i];
-            if (!isFinite(p.c) || !std::isfinite(p.a) || !isFinite(v.v) || !std::isfinite(v.w)) {
-                // A kinematic body keeps the velocity its owner set; a dynamic one stops.
-                if (b.type == BodyType::Dynamic) {
-                    b.linearVelocity = Vec2{};
-                    b.angularVelocity = 0.0f;
-                }
-                b.discarded = true;
-                ++report.discardedBodies;
-                continue;
+            if (b.type != BodyType::Static) {
+                writeBackBody(b, work.positions[i], work.velocities[i], report);
             }
-            b.center = flushDenormal(p.c);
-            b.angle = flushDenormal(angleWithinLimits(p.a));
-            // Relax sweeps (soft step) act after integration's limit: what they leave is held
-            // within the speeds the API takes, and counted with the clamps.
-            Vec2 linear = v.v;
-            float angular = v.w;
-            if (holdLinearSpeed(linear)) ++report.translationClamps;
-            if (holdAngularSpeed(angular)) ++report.rotationClamps;
-            b.linearVelocity = flushDenormal(linear);
-            b.angularVelocity = flushDenormal(angular);
-            synchronizeTransform(b);
-            b.xf.p = flushDenormal(b.xf.p);
-            const bool inside =
-                std::fabs(b.xf.p.x) <= kMaxCoordinate && std::fabs(b.xf.p.y) <= kMaxCoordinate;
-            if (!inside && holdAtWorldEdge(b)) ++report.edgeBodies;
         }
     });
 }
@@ -443,6 +386,14 @@ void setJointRemeasuring(bool enabled) {
     jointRemeasuring = enabled;
 }
 
+void setLoneBodyShortcut(bool enabled) {
+    loneBodyShortcut = enabled;
+}
+
+bool loneBodyShortcutOn() {
+    return loneBodyShortcut.load(std::memory_order_relaxed);
+}
+
 void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
     work.scheduler.reserve(bound);
     work.schedule.reserve(bound);
@@ -522,6 +473,24 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index, Isla
     }
     report.positionIterations = positionSweeps;
     report.fellAsleep = updateSleep(island, bodies, step, phase.solved);
+    return report;
+}
+
+IslandReport solveLoneBody(const IslandSet& set, int index, SlotPool<Body>& bodies,
+                           const StepContext& step) {
+    const IslandView island = set.view(index);
+    Body& b = bodies[island.bodies[0]];
+    SolverPose pose{b.center, b.angle};
+    SolverVelocity velocity{b.linearVelocity, b.angularVelocity};
+    const MotionLimits limits(step);
+    IslandReport report;
+    for (int substep = 0; substep < step.substepCount; ++substep) {
+        if (b.type == BodyType::Dynamic) integrateVelocity(b, velocity, step);
+        integratePosition(velocity, pose, step.dt, limits, report);
+    }
+    if (b.type != BodyType::Static) writeBackBody(b, pose, velocity, report);
+    // With no constraint, the position phase is solved at once, without a sweep.
+    report.fellAsleep = updateSleep(island, bodies, step, true);
     return report;
 }
 

@@ -21,21 +21,12 @@
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"
+#include "solver/island_report.h"
 #include "strategies/joint_groups.h"
 #include "strategies/position_phase.h"
 #include "strategies/velocity_phase.h"
 
 namespace pivot {
-
-struct IslandReport {
-    int translationClamps = 0;
-    int rotationClamps = 0;
-    int positionIterations = 0;
-    int letGoJoints = 0;      // joints let go this step
-    int edgeBodies = 0;       // bodies held at the world's edge (holdAtWorldEdge)
-    int discardedBodies = 0;  // bodies whose solved state was non-finite, kept where they were
-    bool fellAsleep = false;
-};
 
 /// The solver's arrays for one island at a time. One per worker, reused for every island of
 /// every step, so after the first steps solving allocates nothing.
@@ -87,6 +78,25 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
 /// For tests, process-wide: off, later substeps rebuild every joint constraint from its joint,
 /// the reference that re-measuring the kept ones (kKeptAcrossSubsteps) must match bit for bit.
 void setJointRemeasuring(bool enabled);
+
+/// For tests, process-wide: off, lone bodies are solved as islands like any other (solveIsland),
+/// the reference solveLoneBody must match bit for bit.
+void setLoneBodyShortcut(bool enabled);
+bool loneBodyShortcutOn();
+
+/// Whether `island` is one body alone, no contact, joint or mouse joint acting on it, and is to
+/// be solved by solveLoneBody.
+inline bool isLoneBody(const IslandView& island) {
+    return island.bodyCount == 1 && island.contactCount == 0 && island.jointCount == 0 &&
+           island.mouseCount == 0 && loneBodyShortcutOn();
+}
+
+/// Advances a lone body's island (isLoneBody) by one step, to the bits solveIsland gives it,
+/// without a workspace: forces, moves within the limits, write back and the sleep test. In a
+/// scene of scattered debris (`smash`, `spinner`) most islands are one body, and planning and
+/// sizing a workspace for each cost more than solving it.
+IslandReport solveLoneBody(const IslandSet& set, int index, SlotPool<Body>& bodies,
+                           const StepContext& step);
 
 /// Plans and solves island `index` on the calling thread.
 inline IslandReport solveIsland(const IslandSet& set, int index, IslandWorkspace& workspace,

@@ -130,7 +130,9 @@ StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
         for (int k = begin; k < end; ++k) {
             const int i = smallIslands_[k];
             reports_[i] =
-                solveIsland(islands_, i, workspaces_[worker], storage, context, planRevision);
+                isLoneBody(islands_.view(i))
+                    ? solveLoneBody(islands_, i, storage.bodies, context)
+                    : solveIsland(islands_, i, workspaces_[worker], storage, context, planRevision);
         }
     });
 

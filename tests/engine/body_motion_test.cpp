@@ -1,8 +1,11 @@
 // Integration of single bodies: semi-implicit Euler, damping, gravity scale, body types,
-// forces and impulses, and the per-step motion clamps.
+// forces and impulses, and the per-step motion clamps; a lone body's shortcut through the step.
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include "pivot/pivot.h"
+#include "solver/island_solver.h"
 
 using namespace pivot;
 
@@ -134,4 +137,98 @@ TEST(BodyMotion, SetTransformTeleportsTheOriginAndKeepsTheCentreOffset) {
     Vec2 local = world.bodyLocalPoint(b, world.bodyWorldPoint(b, {0.25f, -2}));
     EXPECT_NEAR(local.x, 0.25f, 1e-5f);
     EXPECT_NEAR(local.y, -2.0f, 1e-5f);
+}
+
+namespace {
+
+struct LoneBodyShortcut {
+    explicit LoneBodyShortcut(bool on) { setLoneBodyShortcut(on); }
+    ~LoneBodyShortcut() { setLoneBodyShortcut(true); }
+};
+
+// Bodies that each stay alone in their island (far apart, no joint) and between them take every
+// branch of a lone body's step: forces, torque and damping; both clamps; a kinematic body; the
+// world's edge; falling asleep.
+std::unique_ptr<World> loneBodies(int substeps, int workers) {
+    WorldDef def;
+    def.substepCount = substeps;
+    def.workerCount = workers;
+    auto world = std::make_unique<World>(def);
+    BodyDef damped;
+    damped.type = BodyType::Dynamic;
+    damped.position = {0, 0};
+    damped.angularVelocity = 3.0f;
+    damped.linearDamping = 0.3f;
+    damped.angularDamping = 0.7f;
+    damped.gravityScale = 0.5f;
+    ball(*world, damped);
+    BodyDef fast = damped;
+    fast.position = {100, 0};
+    fast.linearVelocity = {400, -300};
+    fast.angularVelocity = 500.0f;
+    fast.linearDamping = fast.angularDamping = 0.0f;
+    ball(*world, fast);
+    BodyDef kinematic;
+    kinematic.type = BodyType::Kinematic;
+    kinematic.position = {-100, 0};
+    kinematic.linearVelocity = {1, 2};
+    kinematic.angularVelocity = -2.0f;
+    ball(*world, kinematic);
+    BodyDef edge;
+    edge.type = BodyType::Dynamic;
+    edge.position = {kMaxCoordinate - 3.0f, 0};
+    edge.linearVelocity = {90, 0};
+    edge.gravityScale = 0.0f;
+    ball(*world, edge);
+    BodyDef resting;
+    resting.type = BodyType::Dynamic;
+    resting.position = {0, 200};
+    resting.gravityScale = 0.0f;
+    resting.linearVelocity = {0.001f, 0};
+    resting.fixedRotation = true;
+    ball(*world, resting);
+    return world;
+}
+
+}  // namespace
+
+TEST(LoneBody, TheShortcutStepsToTheSameBitsAsAnIsland) {
+    for (int substeps : {1, 4}) {
+        for (int workers : {1, 2}) {
+            auto shortcut = loneBodies(substeps, workers);
+            auto island = loneBodies(substeps, workers);
+            int clamps = 0, edges = 0;
+            for (int i = 0; i < 120; ++i) {
+                const BodyId damped = shortcut->bodyIds()[0];
+                shortcut->applyForceToCenter(damped, {3.0f, 1.0f});
+                shortcut->applyTorque(damped, 0.25f);
+                island->applyForceToCenter(island->bodyIds()[0], {3.0f, 1.0f});
+                island->applyTorque(island->bodyIds()[0], 0.25f);
+                {
+                    LoneBodyShortcut on(true);
+                    shortcut->step(kDt);
+                }
+                {
+                    LoneBodyShortcut off(false);
+                    island->step(kDt);
+                }
+                ASSERT_EQ(shortcut->stateHash(), island->stateHash())
+                    << substeps << " substeps, " << workers << " workers, step " << i;
+                const StepStats& a = shortcut->lastStepStats();
+                const StepStats& b = island->lastStepStats();
+                ASSERT_EQ(a.islandCount, b.islandCount);
+                ASSERT_EQ(a.translationClamps, b.translationClamps);
+                ASSERT_EQ(a.rotationClamps, b.rotationClamps);
+                ASSERT_EQ(a.edgeBodyCount, b.edgeBodyCount);
+                ASSERT_EQ(a.sleepingBodyCount, b.sleepingBodyCount);
+                ASSERT_EQ(a.positionIterations, b.positionIterations);
+                clamps += a.translationClamps + a.rotationClamps;
+                edges += a.edgeBodyCount;
+            }
+            // Every branch was taken: clamps, the edge, and sleep (the resting body).
+            EXPECT_GT(clamps, 0);
+            EXPECT_GT(edges, 0);
+            EXPECT_GE(shortcut->lastStepStats().sleepingBodyCount, 1);
+        }
+    }
 }
