@@ -50,24 +50,20 @@ struct Velocities {
 
 template <typename F>
 Velocities<F> loadVelocities(const SolverVelocity* velocities, const std::int32_t* index) {
-    return {F::gather([&](int i) { return velocities[index[i]].v.x; }),
-            F::gather([&](int i) { return velocities[index[i]].v.y; }),
-            F::gather([&](int i) { return velocities[index[i]].w; })};
+    const float* rows[F::kWidth];
+    for (int lane = 0; lane < F::kWidth; ++lane) rows[lane] = &velocities[index[lane]].v.x;
+    Velocities<F> out;
+    loadColumns(rows, out.vx, out.vy, out.w);
+    return out;
 }
 
 // Lanes [0, count) only: an empty lane's copy of lane 0's body must not overwrite lane 0's.
 template <typename F>
 void storeVelocities(const Velocities<F>& in, SolverVelocity* velocities, const std::int32_t* index,
                      int count) {
-    float vx[F::kWidth], vy[F::kWidth], w[F::kWidth];
-    store(vx, in.vx);
-    store(vy, in.vy);
-    store(w, in.w);
-    for (int lane = 0; lane < count; ++lane) {
-        SolverVelocity& v = velocities[index[lane]];
-        v.v = {vx[lane], vy[lane]};
-        v.w = w[lane];
-    }
+    float* rows[F::kWidth];
+    for (int lane = 0; lane < F::kWidth; ++lane) rows[lane] = &velocities[index[lane]].v.x;
+    storeColumns(rows, in.vx, in.vy, in.w, count);
 }
 
 // A point's lanes: its anchors, masses, impulses and targets.
@@ -292,18 +288,16 @@ void warmStartTile(const ContactTile& tile, SolverVelocity* velocities) {
 template <typename F>
 void updateTile(ContactTile& t, const SolverMotion* motion, float biasRate, float pushSpeed) {
     using T = ContactTile;
-    const auto lane = [&](const std::int32_t* index, auto get) {
-        return F::gather([&](int i) { return get(motion[index[i]]); });
-    };
-    using M = const SolverMotion&;
-    const F dpAx = lane(t.indexA, [](M m) { return m.dp.x; });
-    const F dpAy = lane(t.indexA, [](M m) { return m.dp.y; });
-    const F sA = lane(t.indexA, [](M m) { return m.dq.s; });
-    const F cA = lane(t.indexA, [](M m) { return m.dq.c; });
-    const F dpBx = lane(t.indexB, [](M m) { return m.dp.x; });
-    const F dpBy = lane(t.indexB, [](M m) { return m.dp.y; });
-    const F sB = lane(t.indexB, [](M m) { return m.dq.s; });
-    const F cB = lane(t.indexB, [](M m) { return m.dq.c; });
+    // Each lane's motion of A and of B: dp.x, dp.y, dq.s, dq.c.
+    const float* rowsA[F::kWidth];
+    const float* rowsB[F::kWidth];
+    for (int i = 0; i < F::kWidth; ++i) {
+        rowsA[i] = &motion[t.indexA[i]].dp.x;
+        rowsB[i] = &motion[t.indexB[i]].dp.x;
+    }
+    F dpAx, dpAy, sA, cA, dpBx, dpBy, sB, cB;
+    loadColumns(rowsA, dpAx, dpAy, sA, cA);
+    loadColumns(rowsB, dpBx, dpBy, sB, cB);
     const F nx = F::load(t.lanes(T::kNormalX)), ny = F::load(t.lanes(T::kNormalY));
     const F zero(0.0f), slop(kLinearSlop), rate(-biasRate), push(pushSpeed);
     for (int j = 0; j < 2; ++j) {
@@ -370,19 +364,18 @@ VecLanes<F> transformLanes(const RotLanes<F>& q, const VecLanes<F>& p, const Vec
 
 template <typename F>
 PoseLanes<F> loadPoses(SolverPose* const pose[]) {
-    return {F::gather([&](int i) { return pose[i]->c.x; }),
-            F::gather([&](int i) { return pose[i]->c.y; }),
-            F::gather([&](int i) { return pose[i]->a; })};
+    const float* rows[F::kWidth];
+    for (int lane = 0; lane < F::kWidth; ++lane) rows[lane] = &pose[lane]->c.x;
+    PoseLanes<F> out;
+    loadColumns(rows, out.cx, out.cy, out.a);
+    return out;
 }
 
 template <typename F>
 void storePoses(const PoseLanes<F>& in, SolverPose* const pose[]) {
-    constexpr int W = F::kWidth;
-    float x[W], y[W], a[W];
-    store(x, in.cx);
-    store(y, in.cy);
-    store(a, in.a);
-    for (int lane = 0; lane < W; ++lane) *pose[lane] = {{x[lane], y[lane]}, a[lane]};
+    float* rows[F::kWidth];
+    for (int lane = 0; lane < F::kWidth; ++lane) rows[lane] = &pose[lane]->c.x;
+    storeColumns(rows, in.cx, in.cy, in.a, F::kWidth);
 }
 
 // One NGS sweep over contacts c[0 .. F::kWidth) whose bodies all move

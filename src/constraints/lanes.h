@@ -94,6 +94,31 @@ inline bool any(F4 mask) {
     return _mm_movemask_ps(mask.v) != 0;
 }
 
+/// Lane i of x, y, z, w: the four floats at rows[i] (a transpose: one vector load per row
+/// instead of four scalar ones). Any of the rows may be the same.
+inline void loadColumns(const float* const rows[4], F4& x, F4& y, F4& z, F4& w) {
+    __m128 r0 = _mm_loadu_ps(rows[0]), r1 = _mm_loadu_ps(rows[1]);
+    __m128 r2 = _mm_loadu_ps(rows[2]), r3 = _mm_loadu_ps(rows[3]);
+    _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+    x = F4(r0);
+    y = F4(r1);
+    z = F4(r2);
+    w = F4(r3);
+}
+/// The first three columns only (rows of four floats whose last is a spare).
+inline void loadColumns(const float* const rows[4], F4& x, F4& y, F4& z) {
+    F4 spare;
+    loadColumns(rows, x, y, z, spare);
+}
+/// The reverse, for lanes [0, count): writes lane i of x, y, z and a zero over the four floats
+/// at rows[i] (the rows of lanes below count must be distinct).
+inline void storeColumns(float* const rows[4], F4 x, F4 y, F4 z, int count) {
+    __m128 r0 = x.v, r1 = y.v, r2 = z.v, r3 = _mm_setzero_ps();
+    _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+    const __m128 r[4] = {r0, r1, r2, r3};
+    for (int lane = 0; lane < count; ++lane) _mm_storeu_ps(rows[lane], r[lane]);
+}
+
 #endif  // PIVOT_LANES_4
 
 #if PIVOT_LANES_8
@@ -161,6 +186,43 @@ inline F8 select(F8 mask, F8 a, F8 b) {
 }
 inline bool any(F8 mask) {
     return _mm256_movemask_ps(mask.v) != 0;
+}
+
+/// As for F4, eight rows.
+inline void loadColumns(const float* const rows[8], F8& x, F8& y, F8& z, F8& w) {
+    // Rows i and i + 4 side by side, then a 4x4 transpose within each half.
+    const __m256 r0 = _mm256_set_m128(_mm_loadu_ps(rows[4]), _mm_loadu_ps(rows[0]));
+    const __m256 r1 = _mm256_set_m128(_mm_loadu_ps(rows[5]), _mm_loadu_ps(rows[1]));
+    const __m256 r2 = _mm256_set_m128(_mm_loadu_ps(rows[6]), _mm_loadu_ps(rows[2]));
+    const __m256 r3 = _mm256_set_m128(_mm_loadu_ps(rows[7]), _mm_loadu_ps(rows[3]));
+    const __m256 xy01 = _mm256_unpacklo_ps(r0, r1);  // x0 x1 y0 y1 | x4 x5 y4 y5
+    const __m256 xy23 = _mm256_unpacklo_ps(r2, r3);
+    const __m256 zw01 = _mm256_unpackhi_ps(r0, r1);  // z0 z1 w0 w1 | z4 z5 w4 w5
+    const __m256 zw23 = _mm256_unpackhi_ps(r2, r3);
+    x = F8(_mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0)));
+    y = F8(_mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2)));
+    z = F8(_mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0)));
+    w = F8(_mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(3, 2, 3, 2)));
+}
+inline void loadColumns(const float* const rows[8], F8& x, F8& y, F8& z) {
+    F8 spare;
+    loadColumns(rows, x, y, z, spare);
+}
+inline void storeColumns(float* const rows[8], F8 x, F8 y, F8 z, int count) {
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 xy01 = _mm256_unpacklo_ps(x.v, y.v);  // x0 y0 x1 y1 | x4 y4 x5 y5
+    const __m256 xy23 = _mm256_unpackhi_ps(x.v, y.v);  // x2 y2 x3 y3 | x6 y6 x7 y7
+    const __m256 z01 = _mm256_unpacklo_ps(z.v, zero);  // z0 0 z1 0 | z4 0 z5 0
+    const __m256 z23 = _mm256_unpackhi_ps(z.v, zero);
+    const __m256 r04 = _mm256_shuffle_ps(xy01, z01, _MM_SHUFFLE(1, 0, 1, 0));  // x0 y0 z0 0 | 4
+    const __m256 r15 = _mm256_shuffle_ps(xy01, z01, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m256 r26 = _mm256_shuffle_ps(xy23, z23, _MM_SHUFFLE(1, 0, 1, 0));
+    const __m256 r37 = _mm256_shuffle_ps(xy23, z23, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m128 r[8] = {_mm256_castps256_ps128(r04),   _mm256_castps256_ps128(r15),
+                         _mm256_castps256_ps128(r26),   _mm256_castps256_ps128(r37),
+                         _mm256_extractf128_ps(r04, 1), _mm256_extractf128_ps(r15, 1),
+                         _mm256_extractf128_ps(r26, 1), _mm256_extractf128_ps(r37, 1)};
+    for (int lane = 0; lane < count; ++lane) _mm_storeu_ps(rows[lane], r[lane]);
 }
 
 #endif  // PIVOT_LANES_8

@@ -11,15 +11,22 @@
 
 namespace pivot {
 
+// 16 bytes, so that the wide contact sweeps load and store a body's velocity whole, one vector
+// per body, transposed into lanes (lanes.h, loadColumns), rather than float by float.
 struct SolverVelocity {
     Vec2 v;
     float w = 0.0f;
+    float spare = 0.0f;  // never read; a wide store may write anything here
 };
+static_assert(sizeof(SolverVelocity) == 4 * sizeof(float), "four floats, no more");
 
+// 16 bytes, as SolverVelocity (the wide NGS sweeps load and store poses whole).
 struct SolverPose {
     Vec2 c;  // centre of mass (a pose, not to be confused with PositionSolver, the strategy)
     float a = 0.0f;
+    float spare = 0.0f;  // never read; a wide store may write anything here
 };
+static_assert(sizeof(SolverPose) == 4 * sizeof(float), "four floats, no more");
 
 /// How far a solver slot has moved since the start of the step: its centre's displacement and
 /// the rotation by its angle's change. Soft contacts, built once a step, measure their
@@ -28,6 +35,7 @@ struct SolverMotion {
     Vec2 dp;
     Rot dq;
 };
+static_assert(sizeof(SolverMotion) == 4 * sizeof(float), "loaded whole by the wide sweeps");
 
 /// The solver slots of a constraint's two bodies within its island.
 using BodyPair = std::array<std::int32_t, 2>;
