@@ -66,7 +66,9 @@ struct WorldDef {
     /// whichever was faster when the world last timed a few steps on each (it does every 64
     /// to 1,024 steps). On an idle machine that is usually all of them; while another process
     /// keeps a core busy it can be the caller alone, which is then not held up by a worker that
-    /// has lost its core. The results are the same bits either way. false: always all of them.
+    /// has lost its core. Where all of them are not at least 3% faster, the caller alone (the
+    /// other cores are left to the rest of the program). The results are the same bits either
+    /// way. false: always all of them.
     bool adaptWorkerCount = true;
     /// m, in [0, kMaxMagnitude]. Opt-in breaking: a joint whose anchors are further apart than
     /// this when a step reaches it is let go (World::jointLetGoEvents, JointLetGoReason). 0, the
@@ -184,7 +186,7 @@ struct StepStats {
     /// touched something they would otherwise have passed into or through.
     int impactCount = 0;
     /// Workers the step ran on, the caller included: WorldDef::workerCount, or 1 while the
-    /// caller alone was found faster (WorldDef::adaptWorkerCount).
+    /// caller alone was found faster, or no slower (WorldDef::adaptWorkerCount).
     int workersUsed = 1;
 };
 

@@ -18,7 +18,10 @@
 // decides after one probe run; a close one takes up to kMaxProbeRuns, for a step's time varies by
 // tens of percent when a worker loses its core for a few milliseconds, and a close call costs
 // little while it is being made. A first probe step that alone costs kClearLoss times the current
-// count's mean ends the probe at once (one worker on a scene that two solve twice as fast).
+// count's mean ends the probe at once (one worker on a scene that two solve twice as fast). A
+// close call that stays close is a tie, and a tie goes to the caller alone: a team that buys
+// less than kMargin is not worth the core it takes from the rest of the program (beside a busy
+// core, `smash` and `large_pyramid` were such ties, and kept the team).
 //
 // A probe that loses puts the next one twice as far away, up to kMaxInterval steps: a machine
 // whose best count does not change pays little for being asked, and one that changes (the other
@@ -87,8 +90,8 @@ public:
     static constexpr int kMaxProbeRuns = 4;
     static constexpr int kMinInterval = 64;
     static constexpr int kMaxInterval = 1024;
-    /// After the last probe run, the probe must be faster by this fraction: two counts within it
-    /// are a tie, and a tie keeps the current one.
+    /// After the last probe run, two counts within this fraction of each other are a tie, and a
+    /// tie goes to the caller alone: the whole team must earn the cores it takes.
     static constexpr double kMargin = 0.03;
     static constexpr double kClearLoss = 1.5;
     static constexpr double kUnsteady = 1.5;
@@ -112,8 +115,11 @@ private:
         const double band = kBand[probeRuns_ - 1];
         if (ratio < 1.0 - band) {
             settle(true);
-        } else if (ratio > 1.0 + band || probeRuns_ == kMaxProbeRuns) {
+        } else if (ratio > 1.0 + band) {
             settle(false);
+        } else if (probeRuns_ == kMaxProbeRuns) {
+            // A tie: the caller alone, whichever count is current.
+            settle(other() == 1);
         } else {
             enter(Phase::Probe);
         }

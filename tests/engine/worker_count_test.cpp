@@ -101,15 +101,29 @@ TEST(WorkerCountChooser, ChangesBackWhenTheWholeTeamIsFasterAgain) {
     }
 }
 
-TEST(WorkerCountChooser, NeitherATieNorASteadilyRisingCostMakesItChange) {
+TEST(WorkerCountChooser, ATieGoesToTheCallerAlone) {
+    // Two workers no faster than one (within kMargin): the caller alone, which leaves the other
+    // core to the rest of the program, and stays there.
     WorkerCountChooser tie(2);
-    drive(tie, 3000, [](int count, int) { return count == 2 ? 1.0 : 0.99; });
-    EXPECT_EQ(tie.switches(), 0);
+    const std::vector<int> counts =
+        drive(tie, 3000, [](int count, int) { return count == 2 ? 1.0 : 1.01; });
+    EXPECT_EQ(tie.switches(), 1);
+    EXPECT_GT(stepsOn(counts, 1), 2800);
+}
+
+TEST(WorkerCountChooser, ASteadilyRisingCostNeitherHidesNorMakesADifference) {
     // Each step costs more than the last, whichever the count: the probe costs more than the
-    // steps before it and less than the steps after, and the two cancel.
-    WorkerCountChooser rising(2);
-    drive(rising, 3000, [](int, int step) { return 1.0 + 0.01 * step; });
-    EXPECT_EQ(rising.switches(), 0);
+    // steps before it and less than the steps after, and the two cancel. So a team 10% faster
+    // stays, and a tie is still a tie.
+    WorkerCountChooser faster(2);
+    drive(faster, 3000,
+          [](int count, int step) { return (count == 2 ? 1.0 : 1.1) * (1.0 + 0.01 * step); });
+    EXPECT_EQ(faster.switches(), 0);
+    WorkerCountChooser tie(2);
+    const std::vector<int> counts =
+        drive(tie, 3000, [](int, int step) { return 1.0 + 0.01 * step; });
+    EXPECT_EQ(tie.switches(), 1);
+    EXPECT_GT(stepsOn(counts, 1), 2800);
 }
 
 TEST(WorkerCountChooser, AProbeDuringAJumpInCostDecidesNothing) {
