@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "pivot/pivot.h"
+#include "scoped_switch.h"
 #include "solver/island_solver.h"
 
 using namespace pivot;
@@ -141,10 +142,7 @@ TEST(BodyMotion, SetTransformTeleportsTheOriginAndKeepsTheCentreOffset) {
 
 namespace {
 
-struct LoneBodyShortcut {
-    explicit LoneBodyShortcut(bool on) { setLoneBodyShortcut(on); }
-    ~LoneBodyShortcut() { setLoneBodyShortcut(true); }
-};
+using LoneBodyShortcut = ScopedSwitch<&setLoneBodyShortcut>;
 
 // Bodies that each stay alone in their island (far apart, no joint) and between them take every
 // branch of a lone body's step: forces, torque and damping; both clamps; a kinematic body; the

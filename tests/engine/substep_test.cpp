@@ -4,6 +4,7 @@
 #include "pivot/pivot.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
+#include "scoped_switch.h"
 #include "solver/island_solver.h"
 
 using namespace pivot;
@@ -117,10 +118,7 @@ TEST(Substeps, ChangingTheCountBetweenStepsKeepsTheSceneTogether) {
 
 namespace {
 
-struct JointRemeasuring {
-    explicit JointRemeasuring(bool on) { setJointRemeasuring(on); }
-    ~JointRemeasuring() { setJointRemeasuring(true); }
-};
+using JointRemeasuring = ScopedSwitch<&setJointRemeasuring>;
 
 }  // namespace
 

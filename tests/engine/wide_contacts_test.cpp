@@ -11,6 +11,7 @@
 #include "constraints/contact_solver.h"
 #include "islands/island_schedule.h"
 #include "pivot/pivot.h"
+#include "scoped_switch.h"
 
 using namespace pivot;
 
@@ -87,10 +88,7 @@ std::unique_ptr<World> smallPiles(ContactCorrection correction, int substeps, in
     return world;
 }
 
-struct WideSolving {
-    explicit WideSolving(bool on) { ContactSolver::setWideSolving(on); }
-    ~WideSolving() { ContactSolver::setWideSolving(true); }
-};
+using WideSolving = ScopedSwitch<&ContactSolver::setWideSolving>;
 
 using Build = std::unique_ptr<World> (*)(ContactCorrection, int, int);
 
