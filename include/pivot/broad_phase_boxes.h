@@ -13,13 +13,13 @@ enum class BroadPhaseBoxes : std::uint8_t {
     Predictive,
     /// The default.
     /// Box2D v3's: the box fattened by v3's margins only (kCompactAabbMargin, and
-    /// kCompactStaticAabbMargin for static shapes), around where the shape ended the step or,
-    /// if it moved further than the margin, around its sweep. Fast shapes pair with far fewer
-    /// shapes they never touch (Box2D v3's spinner, tumbler and smash scenes keep 36%, 49% and
-    /// 47% of the contacts Predictive makes), and moving many shapes costs one partial rebuild
-    /// of the tree instead of a re-insertion each. Static bodies' shapes are kept in a tree of
-    /// their own, which moving shapes query beside theirs. Continuous collision is unchanged:
-    /// the box still covers the whole step's sweep.
+    /// kCompactStaticAabbMargin for static shapes), around where the shape ended the step. Fast
+    /// shapes pair with far fewer shapes they never touch (Box2D v3's spinner, tumbler and
+    /// smash scenes keep 27%, 47% and 38% of the contacts Predictive makes), and moving many
+    /// shapes costs one partial rebuild of the tree instead of a re-insertion each. Static
+    /// bodies' shapes are kept in a tree of their own, which moving shapes query beside theirs.
+    /// Continuous collision finds what it did: a shape that moved further than the margin has
+    /// its sweep paired once with the shapes it passed that could stop it (docs/contacts.md).
     Compact,
 };
 

@@ -9,6 +9,11 @@ namespace pivot {
 
 namespace {
 constexpr int kBroadPhaseBoxesCount = 2;
+
+// Predictive stretches a box ahead by how far the shape's box moved.
+Vec2 centreShift(const AABB& from, const AABB& to) {
+    return 0.5f * (to.lower + to.upper) - 0.5f * (from.lower + from.upper);
+}
 }  // namespace
 
 std::int32_t BroadPhase::createProxy(const AABB& tightBox, std::int32_t userData,
@@ -44,34 +49,40 @@ void BroadPhase::destroyProxy(std::int32_t proxyId) {
     for (std::int32_t& buffered : moveBuffer_) {
         if (buffered == proxyId) buffered = kNullProxy;
     }
+    for (Sweep& sweep : sweeps_) {
+        if (sweep.proxy == proxyId) sweep.proxy = kNullProxy;
+    }
     treeOf(proxyId).destroyProxy(nodeOf(proxyId));
 }
 
-BroadPhase::Motion BroadPhase::motionOf(const DynamicTree& tree, const AABB& from,
-                                        const AABB& to) const {
-    if (boxes_ == BroadPhaseBoxes::Compact) {
-        // A fattened end box that holds the start box covers the sweep as well as the swept
-        // box would, and is smaller.
-        const Vec2 margin{tree.margin(), tree.margin()};
-        const bool slow = contains({to.lower - margin, to.upper + margin}, from);
-        return {slow ? to : combine(from, to), Vec2{0.0f, 0.0f}};
-    }
-    return {combine(from, to), 0.5f * (to.lower + to.upper) - 0.5f * (from.lower + from.upper)};
+bool BroadPhase::movedPastMargin(const DynamicTree& tree, const AABB& from, const AABB& to) {
+    // Within the margin, the end box fattened covers the sweep as well as the swept box would.
+    return !contains(fattened(tree, to), from);
 }
 
-bool BroadPhase::needsMove(std::int32_t proxyId, const AABB& from, const AABB& to) const {
+bool BroadPhase::needsMove(std::int32_t proxyId, const AABB& from, const AABB& to,
+                           SweepReach reach) const {
     const DynamicTree& tree = treeOf(proxyId);
-    const Motion motion = motionOf(tree, from, to);
-    return tree.needsMove(nodeOf(proxyId), motion.box, motion.displacement);
+    if (boxes_ == BroadPhaseBoxes::Compact) {
+        return tree.needsMove(nodeOf(proxyId), to, Vec2{0.0f, 0.0f}) ||
+               (reach != SweepReach::None && movedPastMargin(tree, from, to));
+    }
+    return tree.needsMove(nodeOf(proxyId), combine(from, to), centreShift(from, to));
 }
 
-void BroadPhase::moveProxy(std::int32_t proxyId, const AABB& from, const AABB& to) {
+void BroadPhase::moveProxy(std::int32_t proxyId, const AABB& from, const AABB& to,
+                           SweepReach reach) {
     DynamicTree& tree = treeOf(proxyId);
-    const Motion motion = motionOf(tree, from, to);
-    const bool moved = boxes_ == BroadPhaseBoxes::Compact
-                           ? tree.refitProxy(nodeOf(proxyId), motion.box)
-                           : tree.moveProxy(nodeOf(proxyId), motion.box, motion.displacement);
-    if (moved) moveBuffer_.push_back(proxyId);
+    if (boxes_ == BroadPhaseBoxes::Compact) {
+        if (tree.refitProxy(nodeOf(proxyId), to)) moveBuffer_.push_back(proxyId);
+        if (reach != SweepReach::None && movedPastMargin(tree, from, to)) {
+            sweeps_.push_back({proxyId, reach, fattened(tree, combine(from, to))});
+        }
+        return;
+    }
+    if (tree.moveProxy(nodeOf(proxyId), combine(from, to), centreShift(from, to))) {
+        moveBuffer_.push_back(proxyId);
+    }
 }
 
 void BroadPhase::touchProxy(std::int32_t proxyId) {
@@ -111,6 +122,7 @@ void BroadPhase::markBuffered(std::uint8_t value) {
 // The static tree is written only under Compact, so Predictive's snapshots hold what they did
 // when there was one tree.
 void BroadPhase::save(SnapshotWriter& out) const {
+    assert(sweeps_.empty());
     out.enumValue(boxes_, kBroadPhaseBoxesCount);
     moving_.save(out);
     if (boxes_ == BroadPhaseBoxes::Compact) static_.save(out);
@@ -124,6 +136,7 @@ void BroadPhase::load(SnapshotReader& in) {
     static_ = DynamicTree{kCompactStaticAabbMargin};
     if (boxes_ == BroadPhaseBoxes::Compact) static_.load(in);
     in.sequence(moveBuffer_, [&](std::int32_t& proxy) { in.value(proxy); });
+    sweeps_.clear();
     for (const std::int32_t proxy : moveBuffer_) {
         if (proxy != kNullProxy && !isProxy(proxy)) {
             in.corrupt("the broad phase's buffer names proxy " + std::to_string(proxy));

@@ -6,16 +6,17 @@
 // leaves its box gets one stretched ahead by its displacement and is re-inserted where the
 // tree's heuristic says. Compact, Box2D v3's: the box is only fattened by the margin, and a
 // proxy that leaves it is refitted where it sits; the part of the tree that grew is rebuilt
-// just before the next updatePairs queries it. Its box covers only where the shape ended the
-// step when that box, fattened, still holds where it started (the shape moved less than the
-// margin); otherwise the whole sweep, so continuous collision has the pairs a fast shape
-// passed through. Fast shapes pair with far less than they will ever touch under Compact,
-// and moving many proxies costs one partial rebuild instead of as many re-insertions (or
-// none, while nothing that moved looks for pairs). Compact also keeps static bodies' proxies
-// in a tree of their own, which moving proxies query beside theirs: the moving tree stays
-// small and is rebuilt without them, and two static proxies are never paired (static bodies
-// never touch). Predictive keeps one tree so that proxy ids, and with them the order pairs are
-// reported in, stay Box2D 2.4.1's.
+// just before the next updatePairs queries it. The box covers only where the shape ended the
+// step. A shape that moved further than the margin also leaves its sweep (the step's start
+// and end boxes together, fattened) for the next updatePairs, which pairs it once with the
+// boxes it overlaps that a second test (maySweepPair) accepts: continuous collision gets the
+// pairs a fast shape passed through, and the shapes it merely flew past are not paired with
+// it at every query of theirs until it next moves. Moving many proxies costs one partial
+// rebuild instead of as many re-insertions (or none, while nothing that moved looks for
+// pairs). Compact also keeps static bodies' proxies in a tree of their own, which moving
+// proxies query beside theirs: the moving tree stays small and is rebuilt without them, and
+// two static proxies are never paired (static bodies never touch). Predictive keeps one tree
+// so that proxy ids, and with them the order pairs are reported in, stay Box2D 2.4.1's.
 #pragma once
 
 #include <algorithm>
@@ -27,6 +28,14 @@
 #include "pivot/broad_phase_boxes.h"
 
 namespace pivot {
+
+/// Under Compact, where a shape that moved further than the margin in a step looks for what its
+/// sweep passed through (BroadPhase::moveProxy).
+enum class SweepReach : std::uint8_t {
+    None,        ///< nowhere: no sweep is kept
+    StaticTree,  ///< among static bodies' proxies only
+    EveryTree,
+};
 
 class BroadPhase {
 public:
@@ -46,13 +55,16 @@ public:
 
     /// For a shape whose box was `from` at the start of its motion and is `to` now:
     /// DynamicTree::moveProxy with the swept box and the displacement of its centre
-    /// (Predictive), or refitProxy with `to` alone if the tree's margin around it still holds
-    /// `from`, else with the swept box (Compact). A proxy given a new box is buffered for
-    /// updatePairs.
-    void moveProxy(std::int32_t proxyId, const AABB& from, const AABB& to);
-    /// Whether moveProxy would give the proxy a new box (and so buffer it). Read-only:
-    /// thread-safe.
-    bool needsMove(std::int32_t proxyId, const AABB& from, const AABB& to) const;
+    /// (Predictive), or refitProxy with `to` (Compact). A proxy given a new box is buffered for
+    /// updatePairs. Under Compact, if the tree's margin around `to` does not hold `from`, the
+    /// swept box, fattened, is kept for the next updatePairs too, which pairs it where `reach`
+    /// says.
+    void moveProxy(std::int32_t proxyId, const AABB& from, const AABB& to,
+                   SweepReach reach = SweepReach::EveryTree);
+    /// Whether moveProxy would do anything: give the proxy a new box (and so buffer it) or
+    /// keep its sweep. Read-only: thread-safe.
+    bool needsMove(std::int32_t proxyId, const AABB& from, const AABB& to,
+                   SweepReach reach = SweepReach::EveryTree) const;
     /// Buffers a proxy so its pairs are reported again at the next updatePairs (for example
     /// after its filter changed).
     void touchProxy(std::int32_t proxyId);
@@ -98,10 +110,11 @@ public:
     void load(SnapshotReader& in);
 
     /// Calls addPair(userDataA, userDataB) once for every pair of distinct proxies whose fat
-    /// boxes overlap and at least one of which was buffered since the last call, then clears
-    /// the buffer. Pairs are reported in a deterministic order (sorted by proxy ids), each
-    /// with the smaller proxy id's user data first. It does not know which pairs already have
-    /// contacts: the caller ignores pairs it already has.
+    /// boxes overlap and at least one of which was buffered since the last call, and for every
+    /// pair of a kept sweep with a box it overlaps, then clears the buffer and the sweeps. Pairs
+    /// are reported in a deterministic order (sorted by proxy ids), each with the smaller proxy
+    /// id's user data first. It does not know which pairs already have contacts: the caller ignores
+    /// pairs it already has.
     ///
     /// The buffer is emptied before the first addPair call, so proxies that addPair buffers
     /// (by touchProxy, say) wait for the next update; addPair must not destroy proxies.
@@ -110,11 +123,13 @@ public:
     /// The same, with the tree queries shared among the pool's workers (the pairs are merged
     /// and sorted, so the result is the same for any number of workers), and with two
     /// read-only, thread-safe tests that skip work which could never make a contact:
-    /// mayQuery(userData) false skips a buffered proxy's query, and mayPair(userDataA,
-    /// userDataB) false drops a pair before it is collected. A skipped proxy can still be found
-    /// by the query of another buffered proxy, where mayPair decides.
-    template <typename MayQuery, typename MayPair, typename AddPair>
-    void updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayPair, AddPair&& addPair);
+    /// mayQuery(userData) false skips a buffered proxy's queries (its sweep's too), and
+    /// mayPair(userDataA, userDataB) false drops a pair before it is collected. A skipped proxy
+    /// can still be found by the query of another buffered proxy, where mayPair decides. A
+    /// pair found by a sweep alone must pass maySweepPair(userDataA, userDataB) as well.
+    template <typename MayQuery, typename MayPair, typename MaySweepPair, typename AddPair>
+    void updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayPair,
+                     MaySweepPair&& maySweepPair, AddPair&& addPair);
 
 private:
     static constexpr std::int32_t kNullProxy = -1;
@@ -133,6 +148,15 @@ private:
     // Marks of the buffered moving proxies (by node) during updatePairs: a pair of two of them
     // is taken only from the query of the larger id, so it is collected once instead of twice.
     std::vector<std::uint8_t> buffered_;
+    // Sweeps kept by moveProxy for the next updatePairs (Compact), in the order they were kept;
+    // destroyProxy marks a destroyed proxy's with kNullProxy. Only a step makes them, and it
+    // updates the pairs before it ends, so there are none between steps (nor in snapshots).
+    struct Sweep {
+        std::int32_t proxy;
+        SweepReach reach;
+        AABB box;
+    };
+    std::vector<Sweep> sweeps_;
     // Kept between calls for its capacity: updatePairs allocates nothing once it has grown.
     std::vector<ProxyPair> pairBuffer_;
     std::vector<std::vector<ProxyPair>> workerPairs_;  // one per worker of the pool
@@ -140,12 +164,13 @@ private:
     static float movingMargin(BroadPhaseBoxes boxes) {
         return boxes == BroadPhaseBoxes::Compact ? kCompactAabbMargin : kAabbMargin;
     }
-    /// What moveProxy gives the tree: the box to cover, and the displacement to stretch it by.
-    struct Motion {
-        AABB box;
-        Vec2 displacement;
-    };
-    Motion motionOf(const DynamicTree& tree, const AABB& from, const AABB& to) const;
+    /// Compact: whether a shape moved from `from` to `to` left the tree's margin around its end
+    /// box (a sweep to keep).
+    static bool movedPastMargin(const DynamicTree& tree, const AABB& from, const AABB& to);
+    static AABB fattened(const DynamicTree& tree, const AABB& box) {
+        const Vec2 margin{tree.margin(), tree.margin()};
+        return {box.lower - margin, box.upper + margin};
+    }
 
     const DynamicTree& treeOf(std::int32_t proxyId) const {
         return (proxyId & kStaticTag) ? static_ : moving_;
@@ -155,6 +180,8 @@ private:
 
     template <typename Emit>
     void queryMoved(std::int32_t queryProxy, Emit&& emit) const;
+    template <typename Emit>
+    void querySweep(const Sweep& sweep, Emit&& emit) const;
     void rebuildChanged();
     template <typename AddPair>
     void reportSortedPairs(AddPair&& addPair);
@@ -214,6 +241,24 @@ void BroadPhase::queryMoved(std::int32_t queryProxy, Emit&& emit) const {
     });
 }
 
+template <typename Emit>
+void BroadPhase::querySweep(const Sweep& sweep, Emit&& emit) const {
+    const std::int32_t sweeper = sweep.proxy;
+    if (sweep.reach == SweepReach::EveryTree) {
+        moving_.query(sweep.box, [&](std::int32_t other) {
+            if (other != sweeper) {
+                emit(ProxyPair{std::min(sweeper, other), std::max(sweeper, other)});
+            }
+            return true;
+        });
+    }
+    if (sweeper & kStaticTag) return;  // static proxies are never paired
+    static_.query(sweep.box, [&](std::int32_t other) {
+        emit(ProxyPair{sweeper, other | kStaticTag});
+        return true;
+    });
+}
+
 template <typename AddPair>
 void BroadPhase::reportSortedPairs(AddPair&& addPair) {
     // A pair found from both of its proxies' queries (or from one buffered twice) appears more
@@ -241,21 +286,29 @@ void BroadPhase::updatePairs(AddPair&& addPair) {
         if (queryProxy == kNullProxy) continue;
         queryMoved(queryProxy, [&](ProxyPair pair) { pairBuffer_.push_back(pair); });
     }
+    for (const Sweep& sweep : sweeps_) {
+        if (sweep.proxy == kNullProxy) continue;
+        querySweep(sweep, [&](ProxyPair pair) { pairBuffer_.push_back(pair); });
+    }
     markBuffered(0);
     moveBuffer_.clear();
+    sweeps_.clear();
     reportSortedPairs(addPair);
 }
 
-template <typename MayQuery, typename MayPair, typename AddPair>
+template <typename MayQuery, typename MayPair, typename MaySweepPair, typename AddPair>
 void BroadPhase::updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayPair,
-                             AddPair&& addPair) {
+                             MaySweepPair&& maySweepPair, AddPair&& addPair) {
     workerPairs_.resize(static_cast<std::size_t>(pool.workerCount()));
     for (std::vector<ProxyPair>& pairs : workerPairs_) pairs.clear();
     // A tree refitted around moved proxies answers right but slowly: it is rebuilt when it is
     // about to be searched (a grid of shapes that never look for pairs never pays for it).
-    const bool anyQuery = std::any_of(moveBuffer_.begin(), moveBuffer_.end(), [&](std::int32_t p) {
-        return p != kNullProxy && mayQuery(userData(p));
-    });
+    const bool anyQuery =
+        std::any_of(moveBuffer_.begin(), moveBuffer_.end(),
+                    [&](std::int32_t p) { return p != kNullProxy && mayQuery(userData(p)); }) ||
+        std::any_of(sweeps_.begin(), sweeps_.end(), [&](const Sweep& sweep) {
+            return sweep.proxy != kNullProxy && mayQuery(userData(sweep.proxy));
+        });
     if (anyQuery) rebuildChanged();
     markBuffered(1);
     pool.parallelFor(static_cast<int>(moveBuffer_.size()), 256,
@@ -271,8 +324,22 @@ void BroadPhase::updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayP
                              });
                          }
                      });
+    // Few shapes outrun the margin in a step: their queries are shared out in small chunks.
+    pool.parallelFor(static_cast<int>(sweeps_.size()), 16, [&](int begin, int end, int worker) {
+        std::vector<ProxyPair>& pairs = workerPairs_[worker];
+        for (int i = begin; i < end; ++i) {
+            const std::int32_t sweeper = sweeps_[i].proxy;
+            if (sweeper == kNullProxy || !mayQuery(userData(sweeper))) continue;
+            querySweep(sweeps_[i], [&](ProxyPair pair) {
+                const std::int32_t a = userData(pair.lower);
+                const std::int32_t b = userData(pair.upper);
+                if (mayPair(a, b) && maySweepPair(a, b)) pairs.push_back(pair);
+            });
+        }
+    });
     markBuffered(0);
     moveBuffer_.clear();
+    sweeps_.clear();
     pairBuffer_.clear();
     for (const std::vector<ProxyPair>& pairs : workerPairs_) {
         pairBuffer_.insert(pairBuffer_.end(), pairs.begin(), pairs.end());

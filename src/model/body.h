@@ -80,6 +80,20 @@ inline void restartSweep(Body& body) {
     body.angle0 = body.angle;
 }
 
+/// Continuous collision's roles (world/continuous_solver.h). A body that can stop another in
+/// mid-step: any but a dynamic non-bullet.
+inline bool stopsTunnelling(const Body& body) {
+    return body.bullet || body.type != BodyType::Dynamic;
+}
+/// One that moves, too: a kinematic body or a bullet.
+inline bool movesAndStopsTunnelling(const Body& body) {
+    return body.type != BodyType::Static && stopsTunnelling(body);
+}
+/// A dynamic body left out of continuous collision (BodyDef::continuous false).
+inline bool optedOutOfContinuous(const Body& body) {
+    return body.type == BodyType::Dynamic && !body.continuous;
+}
+
 /// Flushes a denormal to zero: the API refuses denormals, so the engine must not produce any in
 /// a state the caller can read back and set again.
 inline float flushDenormal(float value) {

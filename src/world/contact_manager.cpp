@@ -264,8 +264,19 @@ void ContactManager::setCensusChecks(bool on) {
 }
 
 void ContactManager::checkCensus(const char* when) const {
-    if (!censusChecks.load(std::memory_order_relaxed) || census_.matches(contacts_)) return;
-    throw std::logic_error(std::string("pivot2d: the contact census is out of date ") + when);
+    if (!censusChecks.load(std::memory_order_relaxed)) return;
+    if (!census_.matches(contacts_)) {
+        throw std::logic_error(std::string("pivot2d: the contact census is out of date ") + when);
+    }
+    int movingStoppers = 0;
+    shapes_.forEach([&](std::int32_t, const Shape& s) {
+        if (movesAndStopsTunnelling(bodies_[s.body])) ++movingStoppers;
+    });
+    if (movingStoppers != movingStopperShapes_) {
+        throw std::logic_error(
+            std::string("pivot2d: the count of kinematic and bullet shapes is ") + "out of date " +
+            when);
+    }
 }
 
 void ContactManager::update() {
@@ -281,10 +292,10 @@ void ContactManager::update() {
     updateContacts();
 }
 
-void ContactManager::afterSolve(const std::vector<std::int32_t>& solvedBodies) {
+void ContactManager::afterSolve(const std::vector<std::int32_t>& solvedBodies, bool continuous) {
     checkCensus("after the solve");
     // Every non-static body solved this step moved: sweep its broad-phase boxes.
-    synchronizeSolvedBodies(solvedBodies);
+    synchronizeSolvedBodies(solvedBodies, continuous);
     findNewContacts();
 }
 
@@ -315,12 +326,20 @@ void ContactManager::findNewContacts() {
         return shapeA.body != shapeB.body && filtersAllowContact(shapeA.filter, shapeB.filter) &&
                !pairs_.contains(PairMap::key(a, b)) && mayPair(shapeA, shapeB);
     };
+    // A sweep is kept for continuous collision, which takes back a body that passed through
+    // static, kinematic or bullet bodies (a bullet through any).
+    auto mayImpact = [this](std::int32_t a, std::int32_t b) {
+        const Body& bodyA = bodies_[shapes_[a].body];
+        const Body& bodyB = bodies_[shapes_[b].body];
+        return (stopsTunnelling(bodyA) || stopsTunnelling(bodyB)) && !optedOutOfContinuous(bodyA) &&
+               !optedOutOfContinuous(bodyB);
+    };
     const std::uint16_t present = presentCategories();
     auto mayMeetAnything = [this, present](std::int32_t s) {
         const Filter& filter = shapes_[s].filter;
         return filter.groupIndex > 0 || (filter.maskBits & present) != 0;
     };
-    broadPhase_.updatePairs(pool_, mayMeetAnything, worthPairing,
+    broadPhase_.updatePairs(pool_, mayMeetAnything, worthPairing, mayImpact,
                             [this](std::int32_t a, std::int32_t b) { addPair(a, b); });
 }
 
@@ -338,15 +357,25 @@ void ContactManager::synchronizeShapes(std::int32_t bodyIndex, bool swept) {
 
 void ContactManager::synchronizeShapesFrom(std::int32_t bodyIndex, const Transform& from) {
     const Body& body = bodies_[bodyIndex];
+    const SweepReach reach = sweepReach(body, true);
     for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
         Shape& shape = shapes_[s];
         const AABB before = computeShapeBox(shape, from);
         shape.box = computeShapeBox(shape, body.xf);
-        broadPhase_.moveProxy(shape.proxyId, before, shape.box);
+        broadPhase_.moveProxy(shape.proxyId, before, shape.box, reach);
     }
 }
 
-void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& solvedBodies) {
+SweepReach ContactManager::sweepReach(const Body& body, bool continuous) const {
+    if (!continuous || optedOutOfContinuous(body)) return SweepReach::None;
+    // An ordinary dynamic body is stopped by static, kinematic and bullet bodies, the last two
+    // in the moving tree, where its sweep would meet mostly bodies it could never be stopped by.
+    if (!stopsTunnelling(body) && movingStopperShapes_ == 0) return SweepReach::StaticTree;
+    return SweepReach::EveryTree;
+}
+
+void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& solvedBodies,
+                                             bool continuous) {
     resizeBuffer(shapeMoves_, static_cast<std::size_t>(shapes_.capacity()));
     const int count = static_cast<int>(solvedBodies.size());
     // A box costs about a tenth of a microsecond, a hand-off to the workers tens: share out
@@ -355,12 +384,13 @@ void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& so
         for (int i = begin; i < end; ++i) {
             const Body& body = bodies_[solvedBodies[i]];
             if (body.type == BodyType::Static) continue;
+            const SweepReach reach = sweepReach(body, continuous);
             for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
                 Shape& shape = shapes_[s];
                 const AABB after = computeShapeBox(shape, body.xf);
                 ShapeMove& move = shapeMoves_[s];
                 move.from = shape.box;
-                move.needed = broadPhase_.needsMove(shape.proxyId, shape.box, after);
+                move.needed = broadPhase_.needsMove(shape.proxyId, shape.box, after, reach);
                 shape.box = after;
             }
         }
@@ -369,9 +399,12 @@ void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& so
     for (std::int32_t b : solvedBodies) {
         const Body& body = bodies_[b];
         if (body.type == BodyType::Static) continue;
+        const SweepReach reach = sweepReach(body, continuous);
         for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
             const ShapeMove& move = shapeMoves_[s];
-            if (move.needed) broadPhase_.moveProxy(shapes_[s].proxyId, move.from, shapes_[s].box);
+            if (move.needed) {
+                broadPhase_.moveProxy(shapes_[s].proxyId, move.from, shapes_[s].box, reach);
+            }
         }
     }
 }
@@ -472,7 +505,11 @@ void ContactManager::adoptState(State&& state) {
     });
     census_.rebuild(contacts_);
     categoryCounts_ = {};
-    shapes_.forEach([&](std::int32_t, const Shape& s) { countCategories(s.filter, +1); });
+    movingStopperShapes_ = 0;
+    shapes_.forEach([&](std::int32_t, const Shape& s) {
+        countCategories(s.filter, +1);
+        if (movesAndStopsTunnelling(bodies_[s.body])) ++movingStopperShapes_;
+    });
 }
 
 }  // namespace pivot

@@ -51,13 +51,21 @@ public:
     /// group can override, has nothing to meet and is not queried.
     void countCategories(const Filter& filter, int delta);
 
+    /// Keeps count of the shapes on bodies that move and can stop another in mid-step
+    /// (movesAndStopsTunnelling: kinematic bodies and bullets): delta +-1 as such a body gains or
+    /// loses a shape, +-its shape count as a body takes up or drops the role. While there are
+    /// none, an ordinary dynamic body's sweep is paired with static shapes only.
+    void countMovingStoppers(int delta) { movingStopperShapes_ += delta; }
+
     /// The start of a step: forgets the last step's events, finds the pairs of new shapes,
     /// re-filters flagged contacts, drops those whose boxes parted and recomputes the manifolds
     /// of contacts with an awake body.
     void update();
     /// The end of a step: sweeps the boxes of the bodies solved (`solvedBodies`, static ones
-    /// skipped) and makes contacts of the new overlapping pairs.
-    void afterSolve(const std::vector<std::int32_t>& solvedBodies);
+    /// skipped) and makes contacts of the new overlapping pairs, and (if `continuous`, the
+    /// world's continuous collision) of those a fast body's sweep passed through that
+    /// continuous collision could stop it at.
+    void afterSolve(const std::vector<std::int32_t>& solvedBodies, bool continuous);
 
     void destroyContact(std::int32_t contactIndex);
     /// Makes contacts of the new overlapping pairs the broad phase has found.
@@ -86,7 +94,8 @@ public:
     /// contact's touching, sensor, enabled and filtering flags change only through it.
     const ContactCensus& census() const { return census_; }
     /// For tests: when on, every update() and afterSolve() first checks the census against the
-    /// contacts and throws std::logic_error if it is out of date. Process-wide; off by default.
+    /// contacts, and the count of countMovingStoppers against the shapes, and throws
+    /// std::logic_error if either is out of date. Process-wide; off by default.
     static void setCensusChecks(bool on);
 
     /// Contacts touching, sensors left out (StepStats::touchingCount): counted as they begin
@@ -138,8 +147,12 @@ private:
     void updateContacts();
     void checkCensus(const char* when) const;
     /// synchronizeShapes for every body solved this step, with the boxes computed and the
-    /// containment tests made on every worker; only the re-insertions are made in turn.
-    void synchronizeSolvedBodies(const std::vector<std::int32_t>& solvedBodies);
+    /// containment tests made on every worker; only the re-insertions are made in turn. A
+    /// body's sweeps are kept when `continuous` and the body takes part in it.
+    void synchronizeSolvedBodies(const std::vector<std::int32_t>& solvedBodies, bool continuous);
+    /// Where a body's fast shapes' sweeps are paired: with whatever continuous collision could
+    /// stop the body at (nowhere if it takes no part, or `continuous` is off).
+    SweepReach sweepReach(const Body& body, bool continuous) const;
     /// Whether two bodies may collide at all: one must be dynamic, and no joint between them
     /// may forbid it.
     bool bodiesMayCollide(std::int32_t bodyA, std::int32_t bodyB) const;
@@ -184,6 +197,7 @@ private:
         bool needed = false;
     };
     std::vector<ShapeMove> shapeMoves_;  // per shape slot, for synchronizeSolvedBodies
+    int movingStopperShapes_ = 0;        // countMovingStoppers
 
     PreSolveCallback preSolve_;
     CustomFilterCallback customFilter_;

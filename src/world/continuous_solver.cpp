@@ -63,22 +63,14 @@ bool isActive(const Body& b) {
     return b.awake && b.type != BodyType::Static;
 }
 
-// A body that can stop another in mid-step: any but a dynamic non-bullet.
-bool stopsTunnelling(const Body& b) {
-    return b.bullet || b.type != BodyType::Dynamic;
-}
-
-bool optedOut(const Body& b) {
-    return b.type == BodyType::Dynamic && !b.continuous;
-}
-
 // What mayImpact asks of a body, in a byte per body: every contact is asked each pass, and
 // reading two whole bodies per contact from all over memory cost more than the rest of the
 // continuous solve in a resting pile.
 constexpr std::uint8_t kActive = 1, kOptedOut = 2, kStopsTunnelling = 4;
 
 std::uint8_t tunnelFlags(const Body& b) {
-    return static_cast<std::uint8_t>((isActive(b) ? kActive : 0) | (optedOut(b) ? kOptedOut : 0) |
+    return static_cast<std::uint8_t>((isActive(b) ? kActive : 0) |
+                                     (optedOutOfContinuous(b) ? kOptedOut : 0) |
                                      (stopsTunnelling(b) ? kStopsTunnelling : 0));
 }
 
@@ -215,7 +207,7 @@ void ContinuousSolver::buildIsland(std::int32_t contactIndex, float alpha, SlotP
             // Only what can stop the body: static, kinematic and bullet bodies (a bullet's
             // contacts take ordinary dynamic bodies in too).
             if (other.type == BodyType::Dynamic && !body.bullet && !other.bullet) continue;
-            if (optedOut(other)) continue;
+            if (optedOutOfContinuous(other)) continue;
             const Motion before(other);
             if (bodySlot_[otherIndex] < 0) {
                 keepPath(otherIndex, other);

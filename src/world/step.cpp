@@ -146,7 +146,7 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
         }
     }
 
-    contactManager.afterSolve(islands.bodies);
+    contactManager.afterSolve(islands.bodies, enableContinuous);
     if (enableContinuous) {
         stats.impactCount =
             continuous.solve(bodies, shapes, contacts, contactManager, pool, context);

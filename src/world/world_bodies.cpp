@@ -110,7 +110,9 @@ void World::setBodyType(BodyId id, BodyType type) {
     if (body.type == type) return;
     requireMotionAfterMassChange(call, bodyAfterMassChange(body, w.shapes, MassChange{type}), body);
 
+    if (movesAndStopsTunnelling(body)) w.contactManager.countMovingStoppers(-body.shapeCount);
     body.type = type;
+    if (movesAndStopsTunnelling(body)) w.contactManager.countMovingStoppers(+body.shapeCount);
     body.force = Vec2{};
     body.torque = 0.0f;
     updateBodyMass(body, w.shapes);
@@ -273,7 +275,11 @@ bool World::isBodyBullet(BodyId id) const {
 
 void World::setBodyBullet(BodyId id, bool bullet) {
     impl_->requireNotInCallback("World::setBodyBullet");
-    impl_->bodies[impl_->bodyIndex("World::setBodyBullet", id)].bullet = bullet;
+    Body& body = impl_->bodies[impl_->bodyIndex("World::setBodyBullet", id)];
+    ContactManager& contactManager = impl_->contactManager;
+    if (movesAndStopsTunnelling(body)) contactManager.countMovingStoppers(-body.shapeCount);
+    body.bullet = bullet;
+    if (movesAndStopsTunnelling(body)) contactManager.countMovingStoppers(+body.shapeCount);
 }
 
 std::uint64_t World::bodyUserData(BodyId id) const {

@@ -33,6 +33,7 @@ ShapeId attachShape(const char* call, World::Impl& w, std::int32_t bodyIndex, co
     requireMotionAfterMassChange(
         call, bodyAfterMassChange(body, w.shapes, MassChange{body.type, &shape}), body);
     w.contactManager.countCategories(shape.filter, +1);
+    if (movesAndStopsTunnelling(body)) w.contactManager.countMovingStoppers(+1);
     if (shape.hitEvents) ++w.hitEventShapeCount;
     shape.next = body.shapeList;
     std::int32_t index = w.shapes.insert(shape);
@@ -57,6 +58,7 @@ void World::Impl::removeShape(std::int32_t index) {
     contactManager.countCategories(shape.filter, -1);
     if (shape.hitEvents) --hitEventShapeCount;
     Body& body = bodies[shape.body];
+    if (movesAndStopsTunnelling(body)) contactManager.countMovingStoppers(-1);
     for (std::int32_t key = body.contactList; key != -1;) {
         std::int32_t contactIndex = edgeOwner(key);
         const Contact& contact = contacts[contactIndex];

@@ -45,12 +45,19 @@ struct SceneBody {
     std::int32_t proxy;
     AABB tight;
     Vec2 velocity;
-    bool onStatic;  // a static body's: moves only by a jump now and then
+    bool onStatic;       // a static body's: moves only by a jump now and then
+    bool swept = false;  // this round, under Compact: moved further than its tree's margin
+    AABB sweep;          // then: its start and end boxes together, fattened by that margin
 };
+
+AABB fattened(const AABB& box, float margin) {
+    return {box.lower - Vec2{margin, margin}, box.upper + Vec2{margin, margin}};
+}
 
 // Plays a contact manager over a random scene for `rounds` rounds and checks after each
 // update that the pairs it knows are exactly the overlapping pairs of live fat boxes (under
-// Compact, but for pairs of two static bodies' proxies, which it never reports).
+// Compact, but for pairs of two static bodies' proxies, which it never reports), together with
+// (under Compact) the pairs of a sweep made this round with a fat box it overlaps.
 // Returns the number of pairs reported, so callers can check the scene was not trivial.
 std::size_t runRandomScene(std::uint32_t seed, int rounds,
                            BroadPhaseBoxes boxes = BroadPhaseBoxes::Predictive) {
@@ -78,8 +85,12 @@ std::size_t runRandomScene(std::uint32_t seed, int rounds,
             const std::int32_t userData = nextUserData++;
             const Vec2 velocity{symmetric(rng), symmetric(rng)};
             const bool onStatic = unit(rng) < 0.25f;
-            bodies[userData] = {broadPhase.createProxy(tight, userData, onStatic), tight, velocity,
-                                onStatic};
+            bodies[userData] = {broadPhase.createProxy(tight, userData, onStatic),
+                                tight,
+                                velocity,
+                                onStatic,
+                                false,
+                                AABB{}};
         }
         const bool staticPairs = boxes == BroadPhaseBoxes::Predictive;
         auto reportable = [&](const SceneBody& a, const SceneBody& b) {
@@ -125,6 +136,7 @@ std::size_t runRandomScene(std::uint32_t seed, int rounds,
             }
             const AABB from = body.tight;
             body.tight = translated(body.tight, d);
+            body.swept = false;
             // Keep the scene dense: wrap bodies that drift far off back to the other side.
             const Vec2 centre = 0.5f * (body.tight.lower + body.tight.upper);
             if (centre.x > 2.0f * worldHalfWidth || centre.x < -2.0f * worldHalfWidth) {
@@ -134,12 +146,26 @@ std::size_t runRandomScene(std::uint32_t seed, int rounds,
                 body.tight = translated(body.tight, {0.0f, -centre.y});
             }
             broadPhase.moveProxy(body.proxy, from, body.tight);
+            if (boxes == BroadPhaseBoxes::Compact) {
+                const float margin = body.onStatic ? kCompactStaticAabbMargin : kCompactAabbMargin;
+                body.swept = !contains(fattened(body.tight, margin), from);
+                body.sweep = fattened(combine(from, body.tight), margin);
+            }
         }
 
         // Now and then a filter change asks for a body's pairs again.
         for (auto& [userData, body] : bodies) {
             if (unit(rng) < 0.01f) broadPhase.touchProxy(body.proxy);
         }
+
+        // Whether the broad phase owes a and b a pair this round.
+        auto pairedNow = [&](const SceneBody& a, const SceneBody& b) {
+            const AABB& fatA = broadPhase.fatBox(a.proxy);
+            const AABB& fatB = broadPhase.fatBox(b.proxy);
+            return reportable(a, b) &&
+                   (overlaps(fatA, fatB) || (a.swept && overlaps(a.sweep, fatB)) ||
+                    (b.swept && overlaps(b.sweep, fatA)));
+        };
 
         // The contact manager drops contacts whose fat boxes parted (or that became static)...
         for (auto k = known.begin(); k != known.end();) {
@@ -156,7 +182,7 @@ std::size_t runRandomScene(std::uint32_t seed, int rounds,
             const SceneBody& a = bodies.at(pair.first);
             const SceneBody& b = bodies.at(pair.second);
             EXPECT_LT(a.proxy, b.proxy) << "userDataA must come from the smaller proxy id";
-            EXPECT_TRUE(broadPhase.testOverlap(a.proxy, b.proxy));
+            EXPECT_TRUE(pairedNow(a, b)) << "neither the fat boxes nor a sweep overlap";
             EXPECT_TRUE(reportable(a, b)) << "two static bodies' proxies paired";
             EXPECT_TRUE(thisCall.insert(ordered(pair.first, pair.second)).second)
                 << "pair reported twice in one call";
@@ -169,13 +195,10 @@ std::size_t runRandomScene(std::uint32_t seed, int rounds,
         std::set<UserPair> expected;
         for (auto a = bodies.begin(); a != bodies.end(); ++a) {
             for (auto b = std::next(a); b != bodies.end(); ++b) {
-                if (overlaps(broadPhase.fatBox(a->second.proxy),
-                             broadPhase.fatBox(b->second.proxy)) &&
-                    reportable(a->second, b->second)) {
-                    expected.insert({a->first, b->first});
-                }
+                if (pairedNow(a->second, b->second)) expected.insert({a->first, b->first});
             }
         }
+        for (auto& [userData, body] : bodies) body.swept = false;
         if (known != expected) {
             ADD_FAILURE() << "seed " << seed << " round " << round << ": " << known.size()
                           << " pairs known, " << expected.size() << " overlapping";
@@ -234,34 +257,62 @@ TEST(BroadPhase, SmallMovesAreNotBufferedAndLargeOnesAre) {
     EXPECT_EQ(update(broadPhase), (std::vector<UserPair>{{1, 2}}));
 }
 
-// Compact keeps a slow shape's box around where it ended (it still covers where it started)
-// and a fast one's around its whole sweep, so continuous collision finds what it passed.
-TEST(BroadPhase, CompactBoxesCoverTheEndOfASlowMoveAndTheSweepOfAFastOne) {
+// Compact keeps a shape's box around where it ended the step. A fast shape's sweep is paired
+// once with what it passed, so continuous collision finds it, and is then forgotten.
+TEST(BroadPhase, CompactBoxesCoverTheEndOfAMoveAndAFastOnesSweepIsPairedOnce) {
     BroadPhase broadPhase;
     broadPhase.setBoxes(BroadPhaseBoxes::Compact);
     const AABB start = boxAt({0, 0}, {1, 1});
     const std::int32_t proxy = broadPhase.createProxy(start, 1);
     const Vec2 margin{kCompactAabbMargin, kCompactAabbMargin};
     EXPECT_EQ(broadPhase.fatBox(proxy).lower, start.lower - margin);
+    // A wall the shape will pass through, and a box beyond its sweep.
+    broadPhase.createProxy(boxAt({2.5f, 0}, {0.1f, 2}), 2, true);
+    broadPhase.createProxy(boxAt({4.1f, 5}, {0.1f, 1}), 3);
+    EXPECT_TRUE(update(broadPhase).empty());
 
     // Two small steps: the first stays in the box, the second leaves it but moved less than the
-    // margin, so the end box, fattened, is kept.
+    // margin: the end box, fattened, and no sweep.
     const AABB halfway = translated(start, {0.05f, 0.0f});
+    EXPECT_FALSE(broadPhase.needsMove(proxy, start, halfway));
     broadPhase.moveProxy(proxy, start, halfway);
     EXPECT_EQ(broadPhase.fatBox(proxy).lower, start.lower - margin);
     const AABB nudged = translated(halfway, {0.05f, 0.0f});
+    EXPECT_TRUE(broadPhase.needsMove(proxy, halfway, nudged));
     broadPhase.moveProxy(proxy, halfway, nudged);
     EXPECT_EQ(broadPhase.fatBox(proxy).lower, nudged.lower - margin);
     EXPECT_EQ(broadPhase.fatBox(proxy).upper, nudged.upper + margin);
+    EXPECT_TRUE(update(broadPhase).empty());
 
-    // Further than the margin in one step: the swept box, fattened.
-    const AABB far = translated(nudged, {3.0f, 0.0f});
+    // Through the wall in one step: the box is the end box, fattened; the sweep finds the wall
+    // once, and not the box it never reached.
+    const AABB far = translated(nudged, {4.0f, 0.0f});
     broadPhase.moveProxy(proxy, nudged, far);
-    EXPECT_EQ(broadPhase.fatBox(proxy).lower, nudged.lower - margin);
+    EXPECT_EQ(broadPhase.fatBox(proxy).lower, far.lower - margin);
     EXPECT_EQ(broadPhase.fatBox(proxy).upper, far.upper + margin);
+    EXPECT_EQ(update(broadPhase), (std::vector<UserPair>{{1, 2}}));
+    EXPECT_TRUE(update(broadPhase).empty());
+
+    // Back, without a sweep kept (a body left out of continuous collision): nothing met.
+    EXPECT_FALSE(broadPhase.needsMove(proxy, far, far, SweepReach::None));
+    broadPhase.moveProxy(proxy, far, nudged, SweepReach::None);
+    EXPECT_TRUE(update(broadPhase).empty());
+
+    // Up through the moving box, its sweep kept among static proxies only: nothing met. The
+    // same sweep with every tree in reach meets it.
+    const AABB up = translated(far, {0.0f, 10.0f});
+    broadPhase.moveProxy(proxy, far, up, SweepReach::StaticTree);
+    EXPECT_TRUE(update(broadPhase).empty());
+    broadPhase.moveProxy(proxy, far, up, SweepReach::EveryTree);
+    EXPECT_EQ(update(broadPhase), (std::vector<UserPair>{{1, 3}}));
+
+    // A sweep whose proxy is destroyed before the update is never reported.
+    broadPhase.moveProxy(proxy, nudged, far);
+    broadPhase.destroyProxy(proxy);
+    EXPECT_TRUE(update(broadPhase).empty());
 
     // A static shape's box gets the smaller static margin.
-    const std::int32_t wall = broadPhase.createProxy(start, 2, true);
+    const std::int32_t wall = broadPhase.createProxy(start, 4, true);
     const Vec2 staticMargin{kCompactStaticAabbMargin, kCompactStaticAabbMargin};
     EXPECT_EQ(broadPhase.fatBox(wall).lower, start.lower - staticMargin);
 }

@@ -75,14 +75,57 @@ TEST(Continuous, AFastBallStopsAtAThinWall) {
     EXPECT_EQ(off.impacts, 0);
 }
 
-TEST(Continuous, CompactBroadPhaseBoxesStillCoverTheWholeStep) {
-    // Compact boxes are not stretched ahead of the motion, but they still hold the step's
-    // sweep, so the contact with the wall exists when the impact is sought.
+TEST(Continuous, CompactBroadPhaseBoxesStillPairTheWholeStep) {
+    // Compact boxes hold only where the shape ended the step, but a fast shape's sweep is paired
+    // with what it passed, so the contact with the wall exists when the impact is sought.
     const Shot on = shootAtThinWall(true, true, BroadPhaseBoxes::Compact);
     EXPECT_LT(on.furthest, -0.025f) << "the ball's centre passed the wall's near face";
     EXPECT_GE(on.impacts, 1);
     const Shot off = shootAtThinWall(false, true, BroadPhaseBoxes::Compact);
     EXPECT_GT(off.furthest, 0.5f);
+}
+
+namespace {
+// The ball of shootAtThinWall at a thin kinematic wall, under Compact boxes (which pair a fast
+// shape's sweep with kinematic shapes only while there are any): made kinematic at creation,
+// or created static and made kinematic (then static again, and kinematic again) before the shot.
+Shot shootAtThinKinematicWall(bool worldContinuous, bool madeKinematicLater) {
+    WorldDef def = weightless();
+    def.enableContinuous = worldContinuous;
+    def.broadPhaseBoxes = BroadPhaseBoxes::Compact;
+    World world(def);
+    BodyId wall;
+    if (madeKinematicLater) {
+        wall = staticBox(world, {0.0f, 0.0f}, 0.025f, 2.0f);
+        world.setBodyType(wall, BodyType::Kinematic);
+        world.setBodyType(wall, BodyType::Static);
+        world.setBodyType(wall, BodyType::Kinematic);
+    } else {
+        BodyDef wallDef;
+        wallDef.type = BodyType::Kinematic;
+        wall = world.createBody(wallDef);
+        world.createShape(wall, ShapeDef{}, Polygon::box(0.025f, 2.0f));
+    }
+    const BodyId shot = ball(world, {-3.0f, 0.0f}, {500.0f, 0.0f}, 0.1f);
+    Shot result;
+    for (int i = 0; i < 30; ++i) {
+        world.step(kDt);
+        result.furthest = std::max(result.furthest, world.bodyPosition(shot).x);
+        result.impacts += world.lastStepStats().impactCount;
+    }
+    return result;
+}
+}  // namespace
+
+TEST(Continuous, AFastBallStopsAtAThinKinematicWallUnderCompactBoxes) {
+    for (bool later : {false, true}) {
+        const Shot on = shootAtThinKinematicWall(true, later);
+        EXPECT_LT(on.furthest, -0.025f)
+            << "the ball passed the wall; made kinematic later: " << later;
+        EXPECT_GE(on.impacts, 1);
+        const Shot off = shootAtThinKinematicWall(false, later);
+        EXPECT_GT(off.furthest, 0.5f);
+    }
 }
 
 TEST(Continuous, IsSwitchedPerBody) {
