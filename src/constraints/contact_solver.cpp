@@ -184,24 +184,12 @@ MeasuredPoint measure(const ContactPositionConstraint& pc, const Transform& xfA,
     return m;
 }
 
-// Contacts come to prepare in colour order, scattered over the pool, and each leads to two
-// bodies elsewhere again: the contact this far ahead is fetched, and the bodies of the one half
-// as far ahead (whose contact has arrived by then), so the misses overlap instead of following
-// one another.
+// Contacts come to prepare in colour order, scattered over the pool: the contact this far ahead
+// is fetched, so the misses overlap instead of following one another.
 constexpr int kContactsAhead = 16;
-constexpr int kPartsAhead = kContactsAhead / 2;
 
 void prefetchContact(const Contact& contact) {
     prefetch(&contact, sizeof(Contact));
-}
-
-// Only the lines prepare reads: a line fetched for nothing takes one of the few slots the core
-// has for loads in flight.
-void prefetchBodies(const Contact& contact, const SlotPool<Body>& bodies) {
-    for (const Body* body : {&bodies[contact.bodyA()], &bodies[contact.bodyB()]}) {
-        prefetch(&body->localCenter);
-        prefetch(&body->invInertia);
-    }
 }
 
 // Constraint c's fields into lane `lane` of its tile (all of both points: a one-point
@@ -319,7 +307,7 @@ void ContactSolver::reset(int count, const StepContext& step, const std::vector<
 }
 
 void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
-                            const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
+                            const SlotPool<Contact>& pool, const SolverBodyInputs* inputs,
                             const StepContext& step, const SolverPose* positions,
                             const Rot* rotations) {
     // A tiled contact's constraint is assembled here and written field by field into its tile;
@@ -330,12 +318,11 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
     ContactVelocityConstraint assembled;
     for (int k = range.begin; k < range.end; ++k) {
         if (k + kContactsAhead < range.end) prefetchContact(pool[ids[k + kContactsAhead]]);
-        if (k + kPartsAhead < range.end) prefetchBodies(pool[ids[k + kPartsAhead]], bodies);
         const std::int32_t contactIndex = ids[k];
         const Contact& contact = pool[contactIndex];
         const Manifold& manifold = contact.manifold;
-        const Body& bodyA = bodies[contact.bodyA()];
-        const Body& bodyB = bodies[contact.bodyB()];
+        const SolverBodyInputs& bodyA = inputs[pairs[k][0]];
+        const SolverBodyInputs& bodyB = inputs[pairs[k][1]];
 
         const int slot = tiles_.slot(k);
         ContactVelocityConstraint& c = slot >= 0 ? assembled : velocity_[k];
@@ -376,8 +363,8 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
 
         const SolverPose& posA = positions[c.indexA];
         const SolverPose& posB = positions[c.indexB];
-        const SolverVelocity startA{bodyA.linearVelocity, bodyA.angularVelocity};
-        const SolverVelocity startB{bodyB.linearVelocity, bodyB.angularVelocity};
+        const SolverVelocity& startA = bodyA.start;
+        const SolverVelocity& startB = bodyB.start;
         const Rot qA = rotations ? rotations[c.indexA] : Rot(posA.a);
         const Rot qB = rotations ? rotations[c.indexB] : Rot(posB.a);
         WorldManifold wm = computeWorldManifold(

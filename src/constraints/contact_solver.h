@@ -38,7 +38,6 @@
 #include "constraints/step_context.h"
 #include "core/index_range.h"
 #include "core/slot_pool.h"
-#include "model/body.h"
 #include "model/contact.h"
 
 namespace pivot {
@@ -111,12 +110,13 @@ public:
         position_.reserve(count);
     }
     /// Builds constraints [range) from the contacts ids[k], whose solver bodies are pairs[k], at
-    /// the solver arrays' poses (the start of the step); writes no velocity. Restitution
-    /// measures the approach speed from the bodies' velocities before this step's forces.
+    /// the solver arrays' poses (the start of the step), with the bodies' masses and centres
+    /// from `inputs` (by solver slot); writes no velocity. Restitution measures the approach
+    /// speed from the bodies' velocities before this step's forces (`inputs`' start).
     /// `rotations`, if given, holds Rot(positions[i].a) for every slot (computed once per body
     /// rather than once per contact).
     void prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
-                 const SlotPool<Contact>& pool, const SlotPool<Body>& bodies,
+                 const SlotPool<Contact>& pool, const SolverBodyInputs* inputs,
                  const StepContext& step, const SolverPose* positions,
                  const Rot* rotations = nullptr);
     /// Whether constraints are built once a step (soft contacts): later substeps call

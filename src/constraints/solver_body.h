@@ -28,6 +28,18 @@ struct SolverPose {
 };
 static_assert(sizeof(SolverPose) == 4 * sizeof(float), "four floats, no more");
 
+/// What a contact's set-up (ContactSolver::prepare) reads of a body, copied into an array by
+/// solver slot as the step loads the bodies: prepare then reads two of these, close together,
+/// instead of two Body objects from anywhere in the pool (each body is read once a step, not
+/// once for each of its contacts).
+struct SolverBodyInputs {
+    Vec2 localCenter;
+    float invMass = 0.0f;
+    float invInertia = 0.0f;
+    SolverVelocity start;  // the body's velocity before this step's forces
+};
+static_assert(sizeof(SolverBodyInputs) == 8 * sizeof(float), "two to a cache line");
+
 /// How far a solver slot has moved since the start of the step: its centre's displacement and
 /// the rotation by its angle's change. Soft contacts, built once a step, measure their
 /// separation at later substeps from these (contact_solver.h).

@@ -31,6 +31,7 @@ void loadBodies(const Team& team, const IslandView& island, IslandWorkspace& wor
     const auto load = [&](std::size_t slot, const Body& b) {
         work.positions[slot] = {b.center, b.angle};
         work.velocities[slot] = {b.linearVelocity, b.angularVelocity};
+        work.bodyInputs[slot] = {b.localCenter, b.invMass, b.invInertia, work.velocities[slot]};
         if (keepStart) work.stepStart[slot] = work.positions[slot];
     };
     team.forBlocks(island.bodyCount, [&](IndexRange mine) {
@@ -313,9 +314,9 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
         if (contactsBuilt) {
             work.contactSolver.updateSeparations(range, work.motion.data());
         } else {
-            work.contactSolver.prepare(range, schedule.contactIds.data(),
-                                       schedule.contactPairs.data(), storage.contacts, bodies, step,
-                                       work.positions.data(), work.rotations.data());
+            work.contactSolver.prepare(
+                range, schedule.contactIds.data(), schedule.contactPairs.data(), storage.contacts,
+                work.bodyInputs.data(), step, work.positions.data(), work.rotations.data());
         }
     });
     prepareJoints(team, work, bodies, storage.joints, step, firstSubstep,
@@ -399,6 +400,7 @@ void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
     work.schedule.reserve(bound);
     work.velocities.reserve(bound.bodies);
     work.positions.reserve(bound.bodies);
+    work.bodyInputs.reserve(bound.bodies);
     work.stepStart.reserve(bound.bodies);
     work.motion.reserve(bound.bodies);
     work.rotations.reserve(bound.bodies);
@@ -424,6 +426,7 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     const std::size_t slots = static_cast<std::size_t>(schedule.slotCount(island));
     resizeBuffer(work.velocities, slots);
     resizeBuffer(work.positions, slots);
+    resizeBuffer(work.bodyInputs, slots);
     resizeBuffer(work.stepStart, slots);
     resizeBuffer(work.motion, slots);
     resizeBuffer(work.rotations, slots);

@@ -40,6 +40,7 @@ struct IslandWorkspace {
     std::uint64_t plannedAt = kNeverPlanned;
     std::vector<SolverVelocity> velocities;  // one per solver slot
     std::vector<SolverPose> positions;
+    std::vector<SolverBodyInputs> bodyInputs;  // loaded with the bodies, for the contacts' set-up
     // Contacts built once a step (soft): the poses the step started from, and each slot's
     // motion since, measured at every later substep.
     std::vector<SolverPose> stepStart;

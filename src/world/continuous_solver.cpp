@@ -237,10 +237,12 @@ void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Contac
     const int contactCount = static_cast<int>(islandContacts_.size());
     resizeBuffer(positions_, bodyCount);
     resizeBuffer(velocities_, bodyCount);
+    resizeBuffer(inputs_, bodyCount);
     for (std::size_t i = 0; i < bodyCount; ++i) {
         const Body& b = bodies[islandBodies_[i]];
         positions_[i] = {b.center, b.angle};
         velocities_[i] = {b.linearVelocity, b.angularVelocity};
+        inputs_[i] = {b.localCenter, b.invMass, b.invInertia, velocities_[i]};
     }
     resizeBuffer(islandPairs_, islandContacts_.size());
     for (std::size_t k = 0; k < islandContacts_.size(); ++k) {
@@ -258,8 +260,8 @@ void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Contac
     rest.contactCorrection = ContactCorrection::NGS;
     const IndexRange all{0, contactCount};
     contactSolver_.reset(contactCount, rest);
-    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts, bodies, rest,
-                           positions_.data());
+    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts,
+                           inputs_.data(), rest, positions_.data());
     // The impact's contact is the island's first: how fast it closed, before anything pushed.
     Impact impact{islandContacts_[0], 0, 0.0f};
     for (int j = 0; j < contacts[impact.contact].manifold.pointCount; ++j) {
@@ -279,8 +281,8 @@ void ContinuousSolver::solveIsland(SlotPool<Body>& bodies, const SlotPool<Contac
         b.angle0 = positions_[static_cast<std::size_t>(slot)].a;
     }
     // Velocity constraints at the corrected poses.
-    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts, bodies, rest,
-                           positions_.data());
+    contactSolver_.prepare(all, islandContacts_.data(), islandPairs_.data(), contacts,
+                           inputs_.data(), rest, positions_.data());
     for (int i = 0; i < step.velocityIterations; ++i) {
         contactSolver_.solveVelocities(all, velocities_.data());
     }
@@ -370,6 +372,7 @@ int ContinuousSolver::solve(SlotPool<Body>& bodies, const SlotPool<Shape>& shape
     islandPairs_.reserve(kMaxIslandContacts);
     positions_.reserve(kMaxIslandBodies);
     velocities_.reserve(kMaxIslandBodies);
+    inputs_.reserve(kMaxIslandBodies);
     kinematicPaths_.reserve(kMaxIslandBodies);
     contactSolver_.reserve(kMaxIslandContacts, 0);  // unbatched: no tiles
     // Most contacts have one impact a step at most; twice that is room for the busiest steps.

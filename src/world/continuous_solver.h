@@ -113,6 +113,7 @@ private:
     std::vector<std::uint8_t> inIsland_;        // per contact slot
     std::vector<SolverPose> positions_;
     std::vector<SolverVelocity> velocities_;
+    std::vector<SolverBodyInputs> inputs_;
     ContactSolver contactSolver_;
     std::vector<std::int32_t> heldAtEdge_;
     std::vector<std::int32_t> discarded_;
