@@ -300,7 +300,12 @@ template <typename MayQuery, typename MayPair, typename MaySweepPair, typename A
 void BroadPhase::updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayPair,
                              MaySweepPair&& maySweepPair, AddPair&& addPair) {
     workerPairs_.resize(static_cast<std::size_t>(pool.workerCount()));
-    for (std::vector<ProxyPair>& pairs : workerPairs_) pairs.clear();
+    for (std::vector<ProxyPair>& pairs : workerPairs_) {
+        pairs.clear();
+        // Which worker collects which pairs depends on timing: each can hold as many as all
+        // of them ever collected together, so only a step with more pairs than ever allocates.
+        if (pairs.capacity() < pairBuffer_.capacity()) pairs.reserve(pairBuffer_.capacity());
+    }
     // A tree refitted around moved proxies answers right but slowly: it is rebuilt when it is
     // about to be searched (a grid of shapes that never look for pairs never pays for it).
     const bool anyQuery =
