@@ -274,7 +274,7 @@ void ContactManager::checkCensus(const char* when) const {
     });
     if (movingStoppers != movingStopperShapes_) {
         throw std::logic_error(
-            std::string("pivot2d: the count of kinematic and bullet shapes is ") + "out of date " +
+            std::string("pivot2d: the count of kinematic and bullet shapes is out of date ") +
             when);
     }
 }
