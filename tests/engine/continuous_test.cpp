@@ -46,13 +46,8 @@ struct Shot {
     float furthest = -1e9f;
     int impacts = 0;
 };
-Shot shootAtThinWall(bool worldContinuous, bool bodyContinuous,
-                     BroadPhaseBoxes boxes = BroadPhaseBoxes::Predictive) {
-    WorldDef def = weightless();
-    def.enableContinuous = worldContinuous;
-    def.broadPhaseBoxes = boxes;
-    World world(def);
-    staticBox(world, {0.0f, 0.0f}, 0.025f, 2.0f);
+// Fires the ball of radius 0.1 m from x = -3 at 500 m/s and steps 30 times.
+Shot fireBall(World& world, bool bodyContinuous = true) {
     const BodyId shot = ball(world, {-3.0f, 0.0f}, {500.0f, 0.0f}, 0.1f, bodyContinuous);
     Shot result;
     for (int i = 0; i < 30; ++i) {
@@ -61,6 +56,16 @@ Shot shootAtThinWall(bool worldContinuous, bool bodyContinuous,
         result.impacts += world.lastStepStats().impactCount;
     }
     return result;
+}
+
+Shot shootAtThinWall(bool worldContinuous, bool bodyContinuous,
+                     BroadPhaseBoxes boxes = BroadPhaseBoxes::Predictive) {
+    WorldDef def = weightless();
+    def.enableContinuous = worldContinuous;
+    def.broadPhaseBoxes = boxes;
+    World world(def);
+    staticBox(world, {0.0f, 0.0f}, 0.025f, 2.0f);
+    return fireBall(world, bodyContinuous);
 }
 
 }  // namespace
@@ -106,14 +111,7 @@ Shot shootAtThinKinematicWall(bool worldContinuous, bool madeKinematicLater) {
         wall = world.createBody(wallDef);
         world.createShape(wall, ShapeDef{}, Polygon::box(0.025f, 2.0f));
     }
-    const BodyId shot = ball(world, {-3.0f, 0.0f}, {500.0f, 0.0f}, 0.1f);
-    Shot result;
-    for (int i = 0; i < 30; ++i) {
-        world.step(kDt);
-        result.furthest = std::max(result.furthest, world.bodyPosition(shot).x);
-        result.impacts += world.lastStepStats().impactCount;
-    }
-    return result;
+    return fireBall(world);
 }
 }  // namespace
 
