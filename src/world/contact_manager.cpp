@@ -391,6 +391,7 @@ void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& so
                 ShapeMove& move = shapeMoves_[s];
                 move.from = shape.box;
                 move.needed = broadPhase_.needsMove(shape.proxyId, shape.box, after, reach);
+                move.reach = reach;
                 shape.box = after;
             }
         }
@@ -399,11 +400,10 @@ void ContactManager::synchronizeSolvedBodies(const std::vector<std::int32_t>& so
     for (std::int32_t b : solvedBodies) {
         const Body& body = bodies_[b];
         if (body.type == BodyType::Static) continue;
-        const SweepReach reach = sweepReach(body, continuous);
         for (std::int32_t s = body.shapeList; s != -1; s = shapes_[s].next) {
             const ShapeMove& move = shapeMoves_[s];
             if (move.needed) {
-                broadPhase_.moveProxy(shapes_[s].proxyId, move.from, shapes_[s].box, reach);
+                broadPhase_.moveProxy(shapes_[s].proxyId, move.from, shapes_[s].box, move.reach);
             }
         }
     }

@@ -195,6 +195,7 @@ private:
     struct ShapeMove {
         AABB from;  // the shape's box at the start of the step
         bool needed = false;
+        SweepReach reach = SweepReach::None;  // its body's sweepReach, for the move in turn
     };
     std::vector<ShapeMove> shapeMoves_;  // per shape slot, for synchronizeSolvedBodies
     int movingStopperShapes_ = 0;        // countMovingStoppers
