@@ -13,4 +13,5 @@
 #include "pivot/query.h"
 #include "pivot/shape.h"
 #include "pivot/solvers.h"
+#include "pivot/step_tasks.h"
 #include "pivot/world.h"

@@ -25,6 +25,7 @@
 #include "pivot/query.h"
 #include "pivot/shape.h"
 #include "pivot/solvers.h"
+#include "pivot/step_tasks.h"
 
 namespace pivot {
 
@@ -70,6 +71,17 @@ struct WorldDef {
     /// other cores are left to the rest of the program). The results are the same bits either
     /// way. false: always all of them.
     bool adaptWorkerCount = true;
+    /// A game's own task system to run the step's shared work on (pivot/step_tasks.h says
+    /// how), as Box2D v3 offers: both set, or neither. Set, the world starts no thread of its
+    /// own; each parallel stage of a step hands enqueueTask one task per helper (workerCount - 1
+    /// of them, none while the caller alone is faster), and a task that the game runs late, or
+    /// drops unstarted in finishTask, holds nobody up. The same bits as with the world's own
+    /// threads, or with none. An exception either lets out is held, and World::step throws the
+    /// first once the step is done (the world then is as that step left it; an enqueueTask
+    /// that threw handed out no task, and the calling thread did the helper's share). Empty,
+    /// the default: threads of the world's own.
+    EnqueueTaskFunction enqueueTask = nullptr;
+    FinishTaskFunction finishTask = nullptr;
     /// m, in [0, kMaxMagnitude]. Opt-in breaking: a joint whose anchors are further apart than
     /// this when a step reaches it is let go (World::jointLetGoEvents, JointLetGoReason). 0, the
     /// default: joints are never let go for their separation, however far they are pulled

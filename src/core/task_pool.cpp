@@ -1,13 +1,19 @@
 #include "core/task_pool.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/spin_wait.h"
 
 namespace pivot {
 
-TaskPool::TaskPool(int workers) : active_(std::max(workers, 1)) {
-    for (int i = 1; i < workers; ++i) threads_.emplace_back([this, i] { workerLoop(i); });
+TaskPool::TaskPool(int workers, TaskSystem tasks)
+    : workerCount_(std::max(workers, 1)), tasks_(std::move(tasks)), active_(workerCount_) {
+    if (tasks_.present()) {
+        handles_.reserve(static_cast<std::size_t>(workerCount_ - 1));
+        return;
+    }
+    for (int i = 1; i < workerCount_; ++i) threads_.emplace_back([this, i] { workerLoop(i); });
 }
 
 void TaskPool::setActiveWorkers(int count) {
@@ -50,7 +56,11 @@ void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline
         open_ = true;
         generation_.fetch_add(1, std::memory_order_release);
     }
-    wake_.notify_all();
+    if (tasks_.present()) {
+        enqueueHelpers();
+    } else {
+        wake_.notify_all();
+    }
     takeChunks(0);
     {
         // The caller has taken every chunk it could: a worker that has not joined yet finds
@@ -58,6 +68,7 @@ void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline
         std::lock_guard<std::mutex> lock(mutex_);
         open_ = false;
     }
+    if (tasks_.present()) finishHelpers();
     if (spinUntil(kJobSpin, [this] { return busy_.load(std::memory_order_acquire) == 0; })) return;
     std::unique_lock<std::mutex> lock(mutex_);
     done_.wait(lock, [this] { return busy_.load(std::memory_order_acquire) == 0; });
@@ -76,18 +87,71 @@ void TaskPool::workerLoop(int worker) {
             });
             if (stopping_) return;
             seen = generation_.load(std::memory_order_relaxed);
-            // Joins only a job still open (one whose caller is not yet past its own part) and
-            // open to it.
-            if (!open_ || worker >= active_) continue;
-            busy_.fetch_add(1, std::memory_order_relaxed);
         }
-        takeChunks(worker);
-        if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-            // Under the lock, so a caller between its last check and its wait cannot miss it.
-            std::lock_guard<std::mutex> lock(mutex_);
-            done_.notify_one();
+        if (join(worker, seen)) {
+            takeChunks(worker);
+            leave();
         }
     }
+}
+
+bool TaskPool::join(int worker, std::uint64_t generation) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    // Joins only the job it was called for, while still open (its caller not yet past its own
+    // part) and open to it.
+    if (generation_.load(std::memory_order_relaxed) != generation || !open_ || worker >= active_) {
+        return false;
+    }
+    busy_.fetch_add(1, std::memory_order_relaxed);
+    return true;
+}
+
+void TaskPool::leave() {
+    if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+        // Under the lock, so a caller between its last check and its wait cannot miss it.
+        std::lock_guard<std::mutex> lock(mutex_);
+        done_.notify_one();
+    }
+}
+
+void TaskPool::runHelper(void* context, std::uint64_t ticket) {
+    TaskPool& pool = *static_cast<TaskPool*>(context);
+    const int worker = static_cast<int>(ticket % kMaxWorkers);
+    if (pool.join(worker, ticket / kMaxWorkers)) {
+        pool.takeChunks(worker);
+        pool.leave();
+    }
+}
+
+void TaskPool::enqueueHelpers() {
+    handles_.clear();
+    const std::uint64_t generation = generation_.load(std::memory_order_relaxed);
+    for (int worker = 1; worker < active_; ++worker) {
+        const std::uint64_t ticket = generation * kMaxWorkers + static_cast<std::uint64_t>(worker);
+        try {
+            handles_.push_back(tasks_.enqueue(StepTask(&TaskPool::runHelper, this, ticket)));
+        } catch (...) {
+            // The caller does the job without this helper.
+            holdTaskError();
+        }
+    }
+}
+
+void TaskPool::finishHelpers() {
+    for (void* handle : handles_) {
+        try {
+            tasks_.finish(handle);
+        } catch (...) {
+            // Whether the task ran or not, its ticket keeps it out of every later job; one
+            // that joined this job is waited for below, in run.
+            holdTaskError();
+        }
+    }
+    handles_.clear();
+}
+
+void TaskPool::holdTaskError() {
+    if (!taskError_) taskError_ = std::current_exception();
 }
 
 }  // namespace pivot

@@ -2,30 +2,48 @@
 // index range into chunks that the workers and the calling thread take in turn; it returns once
 // every chunk is done. Stages only use it where the chunks are independent, and merge their
 // results in index order afterwards, so results never depend on the number of workers or on
-// scheduling.
+// scheduling. The workers are threads of the pool's own, or tasks handed to a game's task
+// system (pivot/step_tasks.h), which join a job the same way a woken thread does.
 #pragma once
 
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <mutex>
 #include <thread>
 #include <vector>
 
 #include "core/stage_board.h"
+#include "pivot/step_tasks.h"
 
 namespace pivot {
 
+/// A game's task system (WorldDef::enqueueTask, WorldDef::finishTask): both set, or neither.
+struct TaskSystem {
+    EnqueueTaskFunction enqueue;
+    FinishTaskFunction finish;
+    bool present() const { return static_cast<bool>(enqueue); }
+};
+
 class TaskPool {
 public:
-    /// `workers` threads in all, the caller included (1: everything runs on the caller).
-    explicit TaskPool(int workers);
+    /// `workers` in all, the caller included (1: everything runs on the caller): threads of
+    /// the pool's own, or with `tasks` present, tasks handed to it for each job.
+    explicit TaskPool(int workers, TaskSystem tasks = {});
     ~TaskPool();
     TaskPool(const TaskPool&) = delete;
     TaskPool& operator=(const TaskPool&) = delete;
 
-    int workerCount() const { return static_cast<int>(threads_.size()) + 1; }
+    int workerCount() const { return workerCount_; }
+
+    /// The first exception the task system let out since the last call (nullptr if none).
+    std::exception_ptr takeTaskError() {
+        std::exception_ptr error = taskError_;
+        taskError_ = nullptr;
+        return error;
+    }
 
     /// Workers the next jobs may use, the caller included, in [1, workerCount()]: the others stay
     /// out of them (and sleep once their spin runs out). Set between jobs, by the caller.
@@ -69,8 +87,25 @@ private:
     void run(int count, int minChunk, void* context, Trampoline trampoline);
     void workerLoop(int worker);
     void takeChunks(int worker);
+    /// A worker joining job `generation`, if it is still the current one and open to it;
+    /// false if it stayed out.
+    bool join(int worker, std::uint64_t generation);
+    void leave();
+    // With a task system: hands it a task per helper, and after the caller's part, every
+    // handle back.
+    void enqueueHelpers();
+    void finishHelpers();
+    void holdTaskError();
+    // A helper task's ticket: the job it was handed for (so that a task the game runs late
+    // joins no later job) and its worker index, below kMaxWorkers.
+    static constexpr std::uint64_t kMaxWorkers = 64;
+    static void runHelper(void* pool, std::uint64_t ticket);
 
+    int workerCount_;
     std::vector<std::thread> threads_;
+    TaskSystem tasks_;
+    std::vector<void*> handles_;  // of the current job's tasks
+    std::exception_ptr taskError_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable done_;

@@ -40,7 +40,7 @@ World::Impl::Impl(const WorldDef& def)
       jointLetGoSeparation(def.jointLetGoSeparation),
       substepCount(def.substepCount),
       hitEventThreshold(def.hitEventThreshold),
-      pool(def.workerCount),
+      pool(def.workerCount, TaskSystem{def.enqueueTask, def.finishTask}),
       adaptWorkerCount(def.adaptWorkerCount),
       workerChooser(def.workerCount),
       contactManager(bodies, shapes, joints, contacts, islandRevision, pool, id),
@@ -83,6 +83,10 @@ World::World(const WorldDef& def) {
         fail(call,
              "def.workerCount must be in [1, 64] (got " + std::to_string(def.workerCount) + ")");
     }
+    if (static_cast<bool>(def.enqueueTask) != static_cast<bool>(def.finishTask)) {
+        fail(call, std::string("def.enqueueTask and def.finishTask must be set together (got ") +
+                       (def.enqueueTask ? "enqueueTask" : "finishTask") + " alone)");
+    }
     // bool fields need no check: any value is meaningful.
     impl_ = std::make_unique<Impl>(def);
 }
@@ -117,10 +121,12 @@ void World::step(float dt, int velocityIterations, int positionIterations) {
                        " substeps)");
     }
     impl_->step(dt, velocityIterations, positionIterations);
-    // A callback's exception, held while the step finished (World::setPreSolveCallback).
-    if (std::exception_ptr error = impl_->contactManager.takeCallbackError()) {
-        std::rethrow_exception(error);
-    }
+    // A callback's exception, held while the step finished (World::setPreSolveCallback), or
+    // the task system's (WorldDef::enqueueTask): the callback's first when both threw.
+    std::exception_ptr callbackError = impl_->contactManager.takeCallbackError();
+    std::exception_ptr taskError = impl_->pool.takeTaskError();
+    if (callbackError) std::rethrow_exception(callbackError);
+    if (taskError) std::rethrow_exception(taskError);
 }
 
 const StepStats& World::lastStepStats() const {

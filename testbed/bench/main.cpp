@@ -36,6 +36,7 @@ struct Options {
     bool workersGiven = false;  // --workers on the command line (--profile then uses it)
     bool continuous = true;
     bool predictiveBoxes = false;      // --boxes predictive: pivot2d's worlds use Box2D 2.4.1's
+    bool sharedTasks = false;          // --pivot-workers tasks: pivot2d's on the bench's pool
     std::string only;                  // --scene
     std::vector<std::string> engines;  // --engines; empty: all
     std::string profileEngine;         // --profile: step one engine, untimed, for a profiler
@@ -66,6 +67,7 @@ public:
         settings.sleep = scene.sleep;
         settings.continuous = options.continuous;
         settings.predictiveBoxes = options.predictiveBoxes;
+        settings.sharedTasks = options.sharedTasks;
         engine_ = kind.make(settings);
         script_ = scene.build(*engine_);
     }
@@ -191,7 +193,8 @@ void usage(const std::vector<EngineKind>& kinds) {
     std::cerr
         << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] [--scene NAME]\n"
            "                   [--engines A,B,...] [--continuous on|off]\n"
-           "                   [--boxes compact|predictive] [--list] [--profile ENGINE STEPS]\n"
+           "                   [--boxes compact|predictive] [--pivot-workers own|tasks] [--list]\n"
+           "                   [--profile ENGINE STEPS]\n"
            "  Times each scene in every engine, 1/60 s steps, continuous collision on, sleeping\n"
            "  as the scene says, and prints the median milliseconds per step (the first step\n"
            "  left out, as Box2D v3's benchmark app does) with ratios: x 2.4.1 = Box2D 2.4.1's\n"
@@ -208,6 +211,9 @@ void usage(const std::vector<EngineKind>& kinds) {
            "  --continuous off  continuous collision off in every engine\n"
            "  --boxes predictive  pivot2d's worlds use BroadPhaseBoxes::Predictive (Box2D\n"
            "             2.4.1's boxes) instead of the default, Compact (Box2D v3's)\n"
+           "  --pivot-workers tasks  pivot2d's helpers run as tasks on the bench's pool of\n"
+           "             threads, the one Box2D v3 is given (WorldDef::enqueueTask), instead of\n"
+           "             on threads of the world's own (the default, --pivot-workers own)\n"
            "  --list     name and describe the scenes\n"
            "  --scene queries  only the query rows (ray casts and box queries in 10^4\n"
            "             shapes); --scene memory  only the memory rows\n"
@@ -243,6 +249,9 @@ int main(int argc, char** argv) {
                    (std::string(argv[i + 1]) == "predictive" ||
                     std::string(argv[i + 1]) == "compact")) {
             options.predictiveBoxes = std::string(argv[++i]) == "predictive";
+        } else if (arg == "--pivot-workers" && i + 1 < argc &&
+                   (std::string(argv[i + 1]) == "tasks" || std::string(argv[i + 1]) == "own")) {
+            options.sharedTasks = std::string(argv[++i]) == "tasks";
         } else if (arg == "--profile" && i + 2 < argc) {
             options.profileEngine = argv[++i];
             options.profileSteps = std::max(0, std::atoi(argv[++i]));
@@ -335,10 +344,11 @@ int main(int argc, char** argv) {
     }
     std::printf(
         "%s: median ms per step over %d run%s (first step left out); continuous collision "
-        "%s; pivot2d's broad-phase boxes %s.\n",
+        "%s; pivot2d's broad-phase boxes %s; pivot2d's helpers on %s.\n",
         options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
         options.repeats == 1 ? "" : "s", options.continuous ? "on" : "off",
-        options.predictiveBoxes ? "predictive" : "compact");
+        options.predictiveBoxes ? "predictive" : "compact",
+        options.sharedTasks ? "the bench's pool of threads (tasks)" : "threads of their own");
     for (const EngineKind& kind : kinds) {
         std::printf("  %-12s %s\n", kind.name.c_str(), kind.about.c_str());
     }

@@ -73,10 +73,19 @@ INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene,
 
 // Big islands are coloured and solved by every worker together (src/islands/team.h): their
 // schedules and arrays are reused too. A 30 x 30 joint grid and a 40-row pyramid, side by side.
+// With a game's task system (WorldDef::enqueueTask) too, one that allocates nothing itself (it
+// runs each task at once): the world's side of it allocates nothing either.
 TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
-    for (int workers : {1, 2}) {
+    for (int variant : {1, 2, 3}) {
         WorldDef def;
-        def.workerCount = workers;
+        def.workerCount = variant == 1 ? 1 : 2;
+        if (variant == 3) {
+            def.enqueueTask = [](StepTask task) -> void* {
+                task();
+                return nullptr;
+            };
+            def.finishTask = [](void*) {};
+        }
         World world(def);
         addShelf(world, -50.0f, 50.0f, 0.0f);
         PyramidSpec pyramid;  // as the coloured-island reference test's
@@ -110,7 +119,8 @@ TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
         for (int i = 0; i < 600; ++i) world.step(1.0f / 60.0f);
         heap::Counter counter;
         for (int i = 0; i < 300; ++i) world.step(1.0f / 60.0f);
-        EXPECT_EQ(counter.allocations(), 0) << workers << " workers";
+        EXPECT_EQ(counter.allocations(), 0)
+            << def.workerCount << " workers" << (variant == 3 ? ", task system" : "");
     }
 }
 

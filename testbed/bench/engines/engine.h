@@ -20,6 +20,9 @@ struct WorldSettings {
     bool sleep = false;            ///< bodies may sleep
     bool continuous = true;        ///< continuous collision
     bool predictiveBoxes = false;  ///< pivot2d: BroadPhaseBoxes::Predictive (others ignore it)
+    /// pivot2d: its helpers run as tasks on the bench's pool of threads (engines/task_pool.h,
+    /// the one Box2D v3 is given), through WorldDef::enqueueTask, not on threads of its own.
+    bool sharedTasks = false;
 };
 
 class Engine : public Builder {

@@ -1,7 +1,12 @@
 // pivot2d behind bench::Builder, in each of the bench's set-ups.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <utility>
+#include <vector>
 
 #include "bench/engines/engine.h"
+#include "bench/engines/task_pool.h"
 #include "pivot/pivot.h"
 #include "scenes/parts.h"
 
@@ -39,6 +44,13 @@ public:
         def.substepCount = setup.substeps;
         def.workerCount = settings.threads;
         if (settings.predictiveBoxes) def.broadPhaseBoxes = BroadPhaseBoxes::Predictive;
+        if (settings.sharedTasks && settings.threads > 1) {
+            tasks_ = std::make_unique<TaskPool>(settings.threads);
+            pending_.assign(static_cast<std::size_t>(settings.threads - 1),
+                            StepTask(nullptr, nullptr, 0));
+            def.enqueueTask = [this](StepTask task) { return enqueue(task); };
+            def.finishTask = [this](void* handle) { tasks_->finish(handle); };
+        }
         world_ = std::make_unique<World>(def);
     }
 
@@ -134,7 +146,21 @@ private:
         return def;
     }
 
+    // A world task waits in a slot of its own until finished. A job's tasks are all finished
+    // before the next job hands out any, so a ring as long as a job's tasks never overwrites
+    // one still waiting.
+    void* enqueue(StepTask task) {
+        StepTask& slot = pending_[nextSlot_++ % pending_.size()];
+        slot = task;
+        return tasks_->enqueue(
+            [](int, int, std::uint32_t, void* context) { (*static_cast<StepTask*>(context))(); }, 1,
+            1, &slot);
+    }
+
     PivotSetup setup_;
+    std::unique_ptr<TaskPool> tasks_;  // outlives the world, which it serves
+    std::vector<StepTask> pending_;
+    std::size_t nextSlot_ = 0;
     std::unique_ptr<World> world_;
     std::vector<BodyId> bodies_;
     std::vector<JointId> joints_;
