@@ -9,6 +9,15 @@
 // and returns at once, so a task that never gets a thread costs the step nothing but the wait
 // in finishTask: a finishTask that drops a task it has not started yet (instead of running it)
 // never holds the step up. The step's results are the same bits whoever did which chunk.
+//
+// With a job system that can cancel a job not yet started (names are the game's):
+//
+//     pivot::WorldDef def;
+//     def.workerCount = 4;  // the calling thread and three tasks a job
+//     def.enqueueTask = [&jobs](pivot::StepTask task) -> void* {
+//         return jobs.submit([task] { task(); });
+//     };
+//     def.finishTask = [&jobs](void* handle) { jobs.cancelOrWait(handle); };
 #pragma once
 
 #include <cstdint>

@@ -733,9 +733,9 @@ public:
     // --- snapshots (docs/snapshots.md) ---------------------------------------------------------
     /// The whole state of the world as bytes: settings, bodies, shapes, joints, mouse joints,
     /// contacts with their manifolds and impulses, the broad phase, and the last step's events
-    /// and statistics. Not in it: the worker count and the callbacks, which belong to the world
-    /// a snapshot is restored into. The bytes are read by the same pivot2d version (format
-    /// version 1), on a machine of the same float behaviour as stateHash needs.
+    /// and statistics. Not in it: the worker count, the task system and the callbacks, which
+    /// belong to the world a snapshot is restored into. The bytes are read by the same pivot2d
+    /// version (format version 1), on a machine of the same float behaviour as stateHash needs.
     std::vector<std::uint8_t> snapshot() const;
     /// Replaces this world's state with a snapshot's, so that stepping on gives, bit for bit,
     /// what stepping the snapshotted world gives (the same stateHash at once and after any
