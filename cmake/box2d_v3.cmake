@@ -28,10 +28,10 @@ endif()
 target_link_libraries(pivot_box2d_v3 PUBLIC m)
 
 # The bench's Box2D v3 engine: the one translation unit that includes v3's headers (their
-# box2d/box2d.h has the same name as Box2D 2.4.1's), and the task pool it steps on.
+# box2d/box2d.h has the same name as Box2D 2.4.1's). The task pool it steps on is pivot-bench's
+# own (bench/engines/task_pool.cpp), built with or without v3: pivot2d's worlds can use it too.
 add_library(pivot_bench_box2d_v3 STATIC
-    ${PROJECT_SOURCE_DIR}/testbed/bench/engines/box2d_v3_engine.cpp
-    ${PROJECT_SOURCE_DIR}/testbed/bench/engines/task_pool.cpp)
+    ${PROJECT_SOURCE_DIR}/testbed/bench/engines/box2d_v3_engine.cpp)
 pivot_target_defaults(pivot_bench_box2d_v3)
 target_include_directories(pivot_bench_box2d_v3 PRIVATE ${PROJECT_SOURCE_DIR}/testbed)
 target_link_libraries(pivot_bench_box2d_v3 PRIVATE pivot::pivot pivot_box2d_v3 Threads::Threads)
