@@ -87,16 +87,19 @@ void TaskPool::workerLoop(int worker) {
             });
             if (stopping_) return;
             seen = generation_.load(std::memory_order_relaxed);
+            if (!joinLocked(worker, seen)) continue;
         }
-        if (join(worker, seen)) {
-            takeChunks(worker);
-            leave();
-        }
+        takeChunks(worker);
+        leave();
     }
 }
 
 bool TaskPool::join(int worker, std::uint64_t generation) {
     std::lock_guard<std::mutex> lock(mutex_);
+    return joinLocked(worker, generation);
+}
+
+bool TaskPool::joinLocked(int worker, std::uint64_t generation) {
     // Joins only the job it was called for, while still open (its caller not yet past its own
     // part) and open to it.
     if (generation_.load(std::memory_order_relaxed) != generation || !open_ || worker >= active_) {

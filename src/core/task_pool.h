@@ -90,6 +90,7 @@ private:
     /// A worker joining job `generation`, if it is still the current one and open to it;
     /// false if it stayed out.
     bool join(int worker, std::uint64_t generation);
+    bool joinLocked(int worker, std::uint64_t generation);  // with mutex_ held
     void leave();
     // With a task system: hands it a task per helper, and after the caller's part, every
     // handle back.
