@@ -4,10 +4,13 @@
 
 namespace pivot {
 
-void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodies,
-                           const SlotPool<Joint>& joints, IslandSchedule& schedule) {
-    schedule.colored = isColored(island);
-    schedule.contactsColored = colorsContacts(island);
+void IslandScheduler::plan(const IslandView& island, const IslandSet::Range* members, int count,
+                           const SlotPool<Body>& bodies, const SlotPool<Joint>& joints,
+                           IslandSchedule& schedule) {
+    const bool bundle = count > 1;
+    schedule.memberCount = count;
+    schedule.colored = !bundle && isColored(island);
+    schedule.contactsColored = !bundle && colorsContacts(island);
     schedule.fixedCopies.clear();
     if (schedule.contactsColored) {
         resizeBuffer(fixed_, static_cast<std::size_t>(island.bodyCount));
@@ -15,18 +18,60 @@ void IslandScheduler::plan(const IslandView& island, const SlotPool<Body>& bodie
             fixed_[i] = bodies[island.bodies[i]].type != BodyType::Dynamic;
         }
     }
-    planJoints(island, joints, schedule);
-    planContacts(island, schedule);
+    planJoints(island, members, joints, schedule);
+    planContacts(island, members, schedule);
     if (schedule.contactsColored) giveFixedBodiesPrivateSlots(island, schedule, schedule.colored);
+    planMembers(members, count, schedule);
+    // One island's slots end with the private copies of its fixed bodies.
+    schedule.memberSlotStart[count] = schedule.slotCount(island);
 }
 
-void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Joint>& joints,
-                                 IslandSchedule& schedule) {
+void IslandScheduler::planMembers(const IslandSet::Range* members, int count,
+                                  IslandSchedule& schedule) {
+    const IslandSet::Range& first = members[0];
+    resizeBuffer(schedule.memberSlotStart, static_cast<std::size_t>(count) + 1);
+    resizeBuffer(schedule.memberContactStart, static_cast<std::size_t>(count) + 1);
+    for (int m = 0; m <= count; ++m) {
+        // The contacts keep the islands' order (planContacts), so their starts are the ranges'.
+        const bool end = m == count;
+        const IslandSet::Range& r = members[end ? count - 1 : m];
+        schedule.memberSlotStart[m] = (end ? r.bodyEnd : r.bodyBegin) - first.bodyBegin;
+        schedule.memberContactStart[m] = (end ? r.contactEnd : r.contactBegin) - first.contactBegin;
+    }
+}
+
+namespace {
+
+// A bundle member's solver slots, moved past the islands' before it (kNoSlot stays).
+template <typename Slots>
+Slots movedBy(Slots slots, std::int32_t offset) {
+    for (std::int32_t& slot : slots) {
+        if (slot != kNoSlot) slot += offset;
+    }
+    return slots;
+}
+
+}  // namespace
+
+void IslandScheduler::planJoints(const IslandView& island, const IslandSet::Range* members,
+                                 const SlotPool<Joint>& joints, IslandSchedule& schedule) {
     schedule.jointsMayBreak = false;
+    const int memberCount = schedule.memberCount;
+    schedule.jointMember.clear();
     if (island.jointCount == 0 && schedule.jointIds.empty()) {
         // As planned before, every group empty and every batch list cleared: nothing to undo
         // (most islands of a contact scene, and there are many groups).
         return;
+    }
+    if (memberCount > 1) {
+        resizeBuffer(jointMembers_, static_cast<std::size_t>(island.jointCount));
+        for (int m = 0; m < memberCount; ++m) {
+            const std::int32_t begin = members[m].jointBegin - members[0].jointBegin;
+            const std::int32_t end = members[m].jointEnd - members[0].jointBegin;
+            for (std::int32_t j = begin; j < end; ++j) {
+                jointMembers_[static_cast<std::size_t>(j)] = static_cast<std::uint8_t>(m);
+            }
+        }
     }
     std::array<std::int32_t, kJointGroupCount> sizes{};
     // One pass over the joints, which lie all over the pool: the groups are read from here on.
@@ -57,6 +102,9 @@ void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Joint>
         if (schedule.colored) {
             coloring_.color(items_.data(), sizes[g], island.jointBodies, fixed_.data(),
                             island.bodyCount, order_, batches, 0);
+        } else if (memberCount > 1) {
+            dealOut(memberCount);
+            batches.push_back({0, sizes[g], true});
         } else {
             order_.insert(order_.end(), items_.begin(), items_.end());
             batches.push_back({0, sizes[g], true});
@@ -69,9 +117,36 @@ void IslandScheduler::planJoints(const IslandView& island, const SlotPool<Joint>
         schedule.jointIds[k] = island.joints[order_[k]];
         schedule.jointPairs[k] = island.jointBodies[order_[k]];
     }
+    if (memberCount > 1) {
+        resizeBuffer(schedule.jointMember, order_.size());
+        for (std::size_t k = 0; k < order_.size(); ++k) {
+            const std::uint8_t m = jointMembers_[static_cast<std::size_t>(order_[k])];
+            schedule.jointMember[k] = m;
+            schedule.jointPairs[k] =
+                movedBy(schedule.jointPairs[k], members[m].bodyBegin - members[0].bodyBegin);
+        }
+    }
 }
 
-void IslandScheduler::planContacts(const IslandView& island, IslandSchedule& schedule) {
+void IslandScheduler::dealOut(int memberCount) {
+    // items_ holds the group's joints island by island: where each island's begin.
+    memberItems_.fill(0);
+    for (const std::int32_t j : items_) ++memberItems_[jointMembers_[j] + 1];
+    for (int m = 0; m < memberCount; ++m) memberItems_[m + 1] += memberItems_[m];
+    std::array<std::int32_t, kMostBundleMembers> next{};
+    std::copy(memberItems_.begin(), memberItems_.begin() + memberCount, next.begin());
+    const std::size_t total = items_.size();
+    for (std::size_t dealt = 0; dealt < total;) {
+        for (int m = 0; m < memberCount; ++m) {
+            if (next[m] == memberItems_[m + 1]) continue;
+            order_.push_back(items_[static_cast<std::size_t>(next[m]++)]);
+            ++dealt;
+        }
+    }
+}
+
+void IslandScheduler::planContacts(const IslandView& island, const IslandSet::Range* members,
+                                   IslandSchedule& schedule) {
     const int count = island.contactCount;
     schedule.contactBatches.clear();
     resizeBuffer(schedule.contactIds, static_cast<std::size_t>(count));
@@ -80,6 +155,14 @@ void IslandScheduler::planContacts(const IslandView& island, IslandSchedule& sch
         for (int k = 0; k < count; ++k) {
             schedule.contactIds[k] = island.contacts[k];
             schedule.contactPairs[k] = island.contactBodies[k];
+        }
+        for (int m = 1; m < schedule.memberCount; ++m) {
+            const IslandSet::Range& r = members[m];
+            const std::int32_t offset = r.bodyBegin - members[0].bodyBegin;
+            for (std::int32_t k = r.contactBegin; k < r.contactEnd; ++k) {
+                BodyPair& pair = schedule.contactPairs[k - members[0].contactBegin];
+                pair = movedBy(pair, offset);
+            }
         }
         if (count > 0) schedule.contactBatches.push_back({0, count, true});
         return;

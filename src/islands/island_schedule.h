@@ -20,6 +20,14 @@
 // Whether an island is coloured depends only on its size, never on the number of workers: a
 // world steps to the same bits with any WorldDef::workerCount. A coloured island is solved in
 // a different order than Box2D 2.4.1 would, so it agrees with Box2D in behaviour, not in bits.
+//
+// A bundle is several small islands planned as one (solver/island_bundles.h): their bodies,
+// contacts and joints side by side, each island's solver slots moved past those of the islands
+// before it. Within a group the islands' joints are dealt out in turn (the first joint of each
+// island, then the second of each, ...), each island's in its own order; the contacts follow
+// one island after another. The islands share no body, so each is solved to the bits it would
+// be alone, while one island's joint waits on the joint before it (a chain's next link) the
+// processor works on the other islands' (docs/performance.md, "Small islands together").
 #pragma once
 
 #include <algorithm>
@@ -38,6 +46,9 @@
 #include "pivot/joint.h"
 
 namespace pivot {
+
+/// At most this many islands are planned as one bundle (a joint's island is kept in a byte).
+constexpr int kMostBundleMembers = 8;
 
 /// Islands with at least this many joints and contacts are coloured.
 constexpr int kColoringThreshold = 1024;
@@ -66,6 +77,12 @@ struct IslandSchedule {
     std::vector<Batch> contactBatches;
     /// Extra solver slots after the island's bodies: the island body each one copies.
     std::vector<std::int32_t> fixedCopies;
+    /// The islands of a bundle (1 for one island), and where each one's solver slots and
+    /// contacts (in solving order) begin: memberCount + 1 entries each, the last the end.
+    int memberCount = 1;
+    std::vector<std::int32_t> memberSlotStart;
+    std::vector<std::int32_t> memberContactStart;
+    std::vector<std::uint8_t> jointMember;  // bundles: per joint, in solving order, its island
 
     /// Room for an island holding every joint and contact of the world.
     void reserve(const BufferBounds& bound) {
@@ -77,6 +94,9 @@ struct IslandSchedule {
         constexpr std::size_t kMostBatches = GraphColoring::kMaxColors + 1;
         for (std::vector<Batch>& batches : jointBatches) batches.reserve(kMostBatches);
         contactBatches.reserve(kMostBatches);
+        jointMember.reserve(bound.joints);
+        memberSlotStart.reserve(kMostBundleMembers + 1);
+        memberContactStart.reserve(kMostBundleMembers + 1);
     }
 
     int slotCount(const IslandView& island) const {
@@ -88,19 +108,35 @@ class IslandScheduler {
 public:
     /// Plans `island` into `schedule`. Allocates only while its buffers grow.
     void plan(const IslandView& island, const SlotPool<Body>& bodies, const SlotPool<Joint>& joints,
+              IslandSchedule& schedule) {
+        const IslandSet::Range whole{0, island.bodyCount,  0, island.contactCount,
+                                     0, island.jointCount, 0, island.mouseCount};
+        plan(island, &whole, 1, bodies, joints, schedule);
+    }
+    /// Plans the bundle of islands `members[0..count)` (their ranges in one IslandSet, which
+    /// `island` spans) into `schedule`. A bundle of more than one island has no mouse joint
+    /// and is not coloured, whatever its size.
+    void plan(const IslandView& island, const IslandSet::Range* members, int count,
+              const SlotPool<Body>& bodies, const SlotPool<Joint>& joints,
               IslandSchedule& schedule);
     /// Room to plan an island holding every body, joint and contact of the world.
     void reserve(const BufferBounds& bound) {
         fixed_.reserve(bound.bodies);
         jointGroups_.reserve(bound.joints);
+        jointMembers_.reserve(bound.joints);
         items_.reserve(std::max(bound.joints, bound.contacts));
         order_.reserve(std::max(bound.joints, bound.contacts));
     }
 
 private:
-    void planJoints(const IslandView& island, const SlotPool<Joint>& joints,
-                    IslandSchedule& schedule);
-    void planContacts(const IslandView& island, IslandSchedule& schedule);
+    void planMembers(const IslandSet::Range* members, int count, IslandSchedule& schedule);
+    void planJoints(const IslandView& island, const IslandSet::Range* members,
+                    const SlotPool<Joint>& joints, IslandSchedule& schedule);
+    void planContacts(const IslandView& island, const IslandSet::Range* members,
+                      IslandSchedule& schedule);
+    /// Appends the joints of items_ (one group's, island by island) to order_, dealt out in
+    /// turn among the bundle's islands.
+    void dealOut(int memberCount);
     /// For the constraints of the coloured arrays: the contacts, and the joints if `joints`.
     void giveFixedBodiesPrivateSlots(const IslandView& island, IslandSchedule& schedule,
                                      bool joints);
@@ -109,7 +145,9 @@ private:
     std::vector<std::uint8_t> fixed_;  // per island body: never moves
     std::vector<std::int32_t> items_;
     std::vector<std::int32_t> order_;
-    std::vector<std::uint8_t> jointGroups_;  // per island joint: its group, read once
+    std::vector<std::uint8_t> jointGroups_;   // per island joint: its group, read once
+    std::vector<std::uint8_t> jointMembers_;  // bundles: per island joint, its island
+    std::array<std::int32_t, kMostBundleMembers + 1> memberItems_{};  // one group's, per island
 };
 
 }  // namespace pivot

@@ -69,8 +69,17 @@ struct IslandSet {
         ranges.clear();
     }
 
-    IslandView view(int index) const {
-        const Range& r = ranges[index];
+    IslandView view(int index) const { return view(index, 1); }
+
+    /// Islands [first, first + count) as one view: their flat arrays are consecutive. The
+    /// solver slots in contactBodies, jointBodies and mouseBodies stay each island's own.
+    IslandView view(int first, int count) const {
+        Range r = ranges[first];
+        const Range& last = ranges[first + count - 1];
+        r.bodyEnd = last.bodyEnd;
+        r.contactEnd = last.contactEnd;
+        r.jointEnd = last.jointEnd;
+        r.mouseEnd = last.mouseEnd;
         return {bodies.data() + r.bodyBegin,       r.bodyEnd - r.bodyBegin,
                 contacts.data() + r.contactBegin,  contactBodies.data() + r.contactBegin,
                 r.contactEnd - r.contactBegin,     joints.data() + r.jointBegin,

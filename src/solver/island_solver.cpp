@@ -23,6 +23,25 @@ bool laterSubstepsRemeasure(const StepContext& step) {
     return step.warmStarting && jointRemeasuring.load(std::memory_order_relaxed);
 }
 
+// Runs f(island, range) on the part of `mine` (solver slots) in each island of the bundle.
+template <typename F>
+void forEachMemberPart(const IslandSchedule& schedule, IndexRange mine, F&& f) {
+    if (schedule.memberCount == 1) {
+        f(0, mine);
+        return;
+    }
+    for (int m = 0; m < schedule.memberCount; ++m) {
+        const int begin = std::max(mine.begin, schedule.memberSlotStart[m]);
+        const int end = std::min(mine.end, schedule.memberSlotStart[m + 1]);
+        if (begin < end) f(m, IndexRange{begin, end});
+    }
+}
+
+// The island of the bundle that joint `at` (in solving order) belongs to.
+int jointMember(const IslandSchedule& schedule, std::size_t at) {
+    return schedule.memberCount == 1 ? 0 : schedule.jointMember[at];
+}
+
 // Copy body state into the solver slots, with private copies of the bodies that never move
 // (nothing integrates them, so a copy is simply the body's own state); with `keepStart`, the
 // poses also into stepStart.
@@ -95,7 +114,7 @@ bool beyondLetGoSeparation(const Joint& joint, float separationSquared, const St
 // keep a let-go joint inert (work.jointLetGo says which, so a re-measured joint is not read).
 void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
                    SlotPool<Joint>& joints, const StepContext& step, bool firstSubstep,
-                   const Rot* rotations, IslandReport& report) {
+                   const Rot* rotations, IslandReport* reports) {
     const IslandSchedule& schedule = work.schedule;
     const bool remeasure = !firstSubstep && laterSubstepsRemeasure(step);
     const SolverPose* poses = work.positions.data();
@@ -135,7 +154,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
                     } else if (firstSubstep &&
                                beyondLetGoSeparation(joint, separationSquared, step)) {
                         joint.letGoFor(JointLetGoReason::Separation, std::sqrt(separationSquared));
-                        ++report.letGoJoints;
+                        ++reports[jointMember(schedule, at)].letGoJoints;
                         c.makeInert();
                     } else {
                         const bool warm = S::kWarmStart || isVelocityOnly<C>();
@@ -163,7 +182,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
 // are discarded at the end of the step); the joint is let go then.
 void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
                         const SlotPool<Body>& bodies, const StepContext& step, bool lastSubstep,
-                        bool afterPositionPhase, IslandReport& report) {
+                        bool afterPositionPhase, IslandReport* reports) {
     const bool nextRemeasures =
         !lastSubstep && laterSubstepsRemeasure(step) && !work.schedule.jointsMayBreak;
     const float invDt = step.invDt;
@@ -183,7 +202,9 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
                 // zero impulse can still be 0 * inf = NaN when its island diverged).
                 if (joint.letGo) continue;
                 c.storeImpulses(joint, invDt);
-                std::uint8_t& letGo = work.jointLetGo[static_cast<std::size_t>(start + k)];
+                const std::size_t at = static_cast<std::size_t>(start + k);
+                std::uint8_t& letGo = work.jointLetGo[at];
+                IslandReport& report = reports[jointMember(work.schedule, at)];
                 // The bodies are still at their start-of-step poses (written back later).
                 if (!joint.hasFiniteReactions()) {
                     joint.letGoFor(JointLetGoReason::NonFinite, joint.separation(bodies));
@@ -230,26 +251,29 @@ void prepareMouseJoints(const IslandView& island, IslandWorkspace& work,
 
 // Move every body by its velocity, limiting the move per step (integratePosition).
 void integratePositions(const Team& team, IslandWorkspace& work, const StepContext& step,
-                        IslandReport& report) {
+                        IslandReport* reports) {
     const MotionLimits limits(step);
     team.forBlocks(static_cast<int>(work.velocities.size()), [&](IndexRange mine) {
-        for (int i = mine.begin; i < mine.end; ++i) {
-            integratePosition(work.velocities[i], work.positions[i], step.dt, limits, report);
-        }
+        forEachMemberPart(work.schedule, mine, [&](int member, IndexRange part) {
+            for (int i = part.begin; i < part.end; ++i) {
+                integratePosition(work.velocities[i], work.positions[i], step.dt, limits,
+                                  reports[member]);
+            }
+        });
     });
 }
 
 // Bodies slower than the sleep tolerances accumulate rest time; once every body of the island
 // has rested kTimeToSleep and the position phase converged, the whole island sleeps.
-bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepContext& step,
-                 bool positionSolved) {
+bool updateSleep(const std::int32_t* islandBodies, int bodyCount, SlotPool<Body>& bodies,
+                 const StepContext& step, bool positionSolved) {
     if (!step.enableSleep) return false;
     const float linearTolerance = kLinearSleepTolerance * kLinearSleepTolerance;
     const float angularTolerance = kAngularSleepTolerance * kAngularSleepTolerance;
     float minSleepTime = kTimeToSleep;
     bool anyMovable = false;
-    for (int i = 0; i < island.bodyCount; ++i) {
-        Body& b = bodies[island.bodies[i]];
+    for (int i = 0; i < bodyCount; ++i) {
+        Body& b = bodies[islandBodies[i]];
         if (b.type == BodyType::Static) continue;
         anyMovable = true;
         if (!b.allowSleep || b.angularVelocity * b.angularVelocity > angularTolerance ||
@@ -262,8 +286,8 @@ bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepCon
         }
     }
     if (!anyMovable || minSleepTime < kTimeToSleep || !positionSolved) return false;
-    for (int i = 0; i < island.bodyCount; ++i) {
-        Body& b = bodies[island.bodies[i]];
+    for (int i = 0; i < bodyCount; ++i) {
+        Body& b = bodies[islandBodies[i]];
         if (b.type != BodyType::Static) putToSleep(b);
     }
     return true;
@@ -271,23 +295,25 @@ bool updateSleep(const IslandView& island, SlotPool<Body>& bodies, const StepCon
 
 // Every body's solved state back into the body (writeBackBody).
 void writeBack(const Team& team, const IslandView& island, const IslandWorkspace& work,
-               SlotPool<Body>& bodies, IslandReport& report) {
+               SlotPool<Body>& bodies, IslandReport* reports) {
     team.forBlocks(island.bodyCount, [&](IndexRange mine) {
-        for (int i = mine.begin; i < mine.end; ++i) {
-            Body& b = bodies[island.bodies[i]];
-            if (b.type != BodyType::Static) {
-                writeBackBody(b, work.positions[i], work.velocities[i], report);
+        forEachMemberPart(work.schedule, mine, [&](int member, IndexRange part) {
+            for (int i = part.begin; i < part.end; ++i) {
+                Body& b = bodies[island.bodies[i]];
+                if (b.type != BodyType::Static) {
+                    writeBackBody(b, work.positions[i], work.velocities[i], reports[member]);
+                }
             }
-        }
+        });
     });
 }
 
 // One substep (the whole step when there is one): forces, constraints built at the current
 // poses, warm start, velocity iterations, impulses stored, integration, then the position phase
-// of each strategy. Returns what the position phase did.
-PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& work,
-                                 SolverStorage& storage, const StepContext& step, int substep,
-                                 IslandReport& mine) {
+// of each strategy.
+void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& work,
+                  SolverStorage& storage, const StepContext& step, int substep,
+                  IslandReport* mine) {
     const IslandSchedule& schedule = work.schedule;
     SlotPool<Body>& bodies = storage.bodies;
     const bool firstSubstep = substep == 0;
@@ -362,9 +388,9 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
     integratePositions(team, work, step, mine);
     team.sync();
 
-    PositionPhaseResult phase = solvePositionPhase(
-        team, work.groups, schedule, work.contactSolver, work.positions.data(), velocities,
-        work.positionScratch, step.positionIterations, step.dt, substep);
+    // What it did, island by island, is left in work.positionScratch.memberResults.
+    solvePositionPhase(team, work.groups, schedule, work.contactSolver, work.positions.data(),
+                       velocities, work.positionScratch, step.positionIterations, step.dt, substep);
     // After the relax sweeps, which add to the impulses (the contacts' NGS solves do not).
     storeJointImpulses(team, work, storage.joints, bodies, step, lastSubstep, true, mine);
     // Constraints rebuilt each substep read the impulses back from the manifolds; those built
@@ -378,7 +404,6 @@ PositionPhaseResult solveSubstep(const Team& team, const IslandView& island, Isl
     // The next substep's set-up reads the poses and stored impulses this one wrote; the write
     // back, the bodies the let-go joints above measured their separation on.
     team.sync();
-    return phase;
 }
 
 }  // namespace
@@ -407,20 +432,25 @@ void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
     work.positionScratch.pseudo.reserve(bound.bodies);
     work.positionScratch.xpbdStart.reserve(bound.bodies);
     work.mouseConstraints.reserve(bound.mouseJoints);
+    work.positionScratch.memberResults.reserve(kMostBundleMembers);
+    reserveBuffer(work.memberReports, kMostBundleMembers);
     // A batch per colour, and the overflow's.
     work.contactSolver.reserve(bound.contacts, GraphColoring::kMaxColors + 1);
 }
 
-void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
+void planIsland(const IslandSet& set, int first, int count, IslandWorkspace& work,
                 const SolverStorage& storage, const StepContext& step, int teamSize,
                 std::uint64_t islandRevision) {
-    const IslandView island = set.view(index);
+    const IslandView island = set.view(first, count);
     IslandSchedule& schedule = work.schedule;
     const bool planned = islandRevision != IslandWorkspace::kNeverPlanned &&
-                         work.plannedAt == islandRevision && work.plannedIsland == index;
+                         work.plannedAt == islandRevision && work.plannedIsland == first &&
+                         work.plannedCount == count;
     if (!planned) {
-        work.scheduler.plan(island, storage.bodies, storage.joints, schedule);
-        work.plannedIsland = index;
+        work.scheduler.plan(island, &set.ranges[static_cast<std::size_t>(first)], count,
+                            storage.bodies, storage.joints, schedule);
+        work.plannedIsland = first;
+        work.plannedCount = count;
         work.plannedAt = islandRevision;
     }
     const std::size_t slots = static_cast<std::size_t>(schedule.slotCount(island));
@@ -438,16 +468,18 @@ void planIsland(const IslandSet& set, int index, IslandWorkspace& work,
     resizeBuffer(work.positionScratch.xpbdStart, slots);
     work.positionScratch.clearSweepFlags(static_cast<std::size_t>(step.substepCount) *
                                          static_cast<std::size_t>(step.positionIterations));
-    resizeBuffer(work.memberReports, static_cast<std::size_t>(teamSize));
+    resizeBuffer(work.positionScratch.memberResults, static_cast<std::size_t>(count));
+    resizeBuffer(work.memberReports, static_cast<std::size_t>(teamSize * count));
     std::fill(work.memberReports.begin(), work.memberReports.end(), IslandReport{});
 }
 
-IslandReport solveIsland(const Team& team, const IslandSet& set, int index, IslandWorkspace& work,
-                         SolverStorage& storage, const StepContext& step) {
-    const IslandView island = set.view(index);
+void solveIslands(const Team& team, const IslandSet& set, int first, int count,
+                  IslandWorkspace& work, SolverStorage& storage, const StepContext& step,
+                  IslandReport* reports) {
+    const IslandView island = set.view(first, count);
     SlotPool<Body>& bodies = storage.bodies;
     // Zeroed by planIsland: a member that joins late, or not at all, adds nothing.
-    IslandReport& mine = work.memberReports[team.member()];
+    IslandReport* mine = work.memberReports.data() + team.member() * count;
 
     loadBodies(team, island, work, bodies,
                work.contactSolver.builtOncePerStep() && step.substepCount > 1);
@@ -455,27 +487,41 @@ IslandReport solveIsland(const Team& team, const IslandSet& set, int index, Isla
     // Later substeps warm-start from the substep before, of the same length.
     StepContext later = step;
     later.dtRatio = 1.0f;
-    PositionPhaseResult phase;
-    int positionSweeps = 0;
+    // Per island of the bundle: its position sweeps over the step, and whether its last
+    // substep's position phase was solved.
+    std::array<int, kMostBundleMembers> positionSweeps{};
+    const std::vector<PositionPhaseResult>& phases = work.positionScratch.memberResults;
     for (int substep = 0; substep < step.substepCount; ++substep) {
-        phase =
-            solveSubstep(team, island, work, storage, substep == 0 ? step : later, substep, mine);
-        positionSweeps += phase.sweeps;
+        solveSubstep(team, island, work, storage, substep == 0 ? step : later, substep, mine);
+        for (int m = 0; m < count; ++m) positionSweeps[m] += phases[m].sweeps;
     }
     writeBack(team, island, work, bodies, mine);
     team.sync();
-    if (!team.leader()) return IslandReport{};
+    if (!team.leader()) return;
 
-    IslandReport report;
-    for (const IslandReport& member : work.memberReports) {
-        report.translationClamps += member.translationClamps;
-        report.rotationClamps += member.rotationClamps;
-        report.letGoJoints += member.letGoJoints;
-        report.edgeBodies += member.edgeBodies;
-        report.discardedBodies += member.discardedBodies;
+    const int teamSize = static_cast<int>(work.memberReports.size()) / count;
+    for (int m = 0; m < count; ++m) {
+        IslandReport report;
+        for (int t = 0; t < teamSize; ++t) {
+            const IslandReport& member = work.memberReports[t * count + m];
+            report.translationClamps += member.translationClamps;
+            report.rotationClamps += member.rotationClamps;
+            report.letGoJoints += member.letGoJoints;
+            report.edgeBodies += member.edgeBodies;
+            report.discardedBodies += member.discardedBodies;
+        }
+        report.positionIterations = positionSweeps[m];
+        const IslandSet::Range& r = set.ranges[static_cast<std::size_t>(first + m)];
+        report.fellAsleep = updateSleep(set.bodies.data() + r.bodyBegin, r.bodyEnd - r.bodyBegin,
+                                        bodies, step, phases[m].solved);
+        reports[m] = report;
     }
-    report.positionIterations = positionSweeps;
-    report.fellAsleep = updateSleep(island, bodies, step, phase.solved);
+}
+
+IslandReport solveIsland(const Team& team, const IslandSet& set, int index, IslandWorkspace& work,
+                         SolverStorage& storage, const StepContext& step) {
+    IslandReport report;
+    solveIslands(team, set, index, 1, work, storage, step, &report);
     return report;
 }
 
@@ -493,7 +539,7 @@ IslandReport solveLoneBody(const IslandSet& set, int index, SlotPool<Body>& bodi
     }
     if (b.type != BodyType::Static) writeBackBody(b, pose, velocity, report);
     // With no constraint, the position phase is solved at once, without a sweep.
-    report.fellAsleep = updateSleep(island, bodies, step, true);
+    report.fellAsleep = updateSleep(island.bodies, 1, bodies, step, true);
     return report;
 }
 

@@ -36,7 +36,8 @@ struct IslandWorkspace {
     // The island `schedule` was planned for, and the IslandRevision count its islands were
     // searched at: the same island at the same count has the same plan.
     static constexpr std::uint64_t kNeverPlanned = ~std::uint64_t{0};
-    int plannedIsland = -1;
+    int plannedIsland = -1;  // the first island of the bundle planned
+    int plannedCount = 0;
     std::uint64_t plannedAt = kNeverPlanned;
     std::vector<SolverVelocity> velocities;  // one per solver slot
     std::vector<SolverPose> positions;
@@ -53,25 +54,32 @@ struct IslandWorkspace {
     std::vector<MouseConstraint> mouseConstraints;
     ContactSolver contactSolver;
     PositionPhaseScratch positionScratch;
-    std::vector<IslandReport> memberReports;  // one per team member
+    std::vector<IslandReport> memberReports;  // per team member, one per island of the bundle
 };
 
 /// Makes room in `workspace` for an island holding every body, contact and mouse joint of the
 /// world (joint constraints, larger and rarely churning, grow as needed, at least twofold).
 void reserveWorkspace(IslandWorkspace& workspace, const BufferBounds& bound);
 
-/// Before a team solves island `index`, on one thread: plans its schedule (unless `workspace`
-/// holds the plan of the same island at the same `islandRevision`, a count of
-/// IslandRevision's, or IslandWorkspace::kNeverPlanned to plan anyway) and sizes every array
+/// Before a team solves islands [first, first + count) (one island, or a bundle of several
+/// solved together on one thread: island_bundles.h), on one thread: plans their schedule
+/// (unless `workspace` holds the plan of the same islands at the same `islandRevision`, a count
+/// of IslandRevision's, or IslandWorkspace::kNeverPlanned to plan anyway) and sizes every array
 /// of `workspace` for a team of `teamSize`.
-void planIsland(const IslandSet& set, int index, IslandWorkspace& workspace,
+void planIsland(const IslandSet& set, int first, int count, IslandWorkspace& workspace,
                 const SolverStorage& storage, const StepContext& step, int teamSize,
                 std::uint64_t islandRevision);
 
-/// One member's part of advancing the planned island `index` by one step: every member of the
-/// team calls it with the same arguments. Stores the joints' and contacts' impulses and updates
-/// the bodies' sleep timers (putting the island to sleep when it has rested long enough).
-/// Returns the island's report on the leader (an empty one on other members).
+/// One member's part of advancing the planned islands [first, first + count) by one step: every
+/// member of the team calls it with the same arguments. Stores the joints' and contacts'
+/// impulses and updates the bodies' sleep timers (putting an island to sleep when it has rested
+/// long enough). Each island ends with the bits it would have solved alone. The leader writes
+/// each island's report to reports[0..count).
+void solveIslands(const Team& team, const IslandSet& set, int first, int count,
+                  IslandWorkspace& workspace, SolverStorage& storage, const StepContext& step,
+                  IslandReport* reports);
+
+/// solveIslands for one island: its report on the leader (an empty one on other members).
 IslandReport solveIsland(const Team& team, const IslandSet& set, int index,
                          IslandWorkspace& workspace, SolverStorage& storage,
                          const StepContext& step);
@@ -99,12 +107,12 @@ inline bool isLoneBody(const IslandView& island) {
 IslandReport solveLoneBody(const IslandSet& set, int index, SlotPool<Body>& bodies,
                            const StepContext& step);
 
-/// Plans and solves island `index` on the calling thread.
-inline IslandReport solveIsland(const IslandSet& set, int index, IslandWorkspace& workspace,
-                                SolverStorage& storage, const StepContext& step,
-                                std::uint64_t islandRevision) {
-    planIsland(set, index, workspace, storage, step, 1, islandRevision);
-    return solveIsland(Team{}, set, index, workspace, storage, step);
+/// Plans and solves islands [first, first + count) on the calling thread.
+inline void solveIslands(const IslandSet& set, int first, int count, IslandWorkspace& workspace,
+                         SolverStorage& storage, const StepContext& step,
+                         std::uint64_t islandRevision, IslandReport* reports) {
+    planIsland(set, first, count, workspace, storage, step, 1, islandRevision);
+    solveIslands(Team{}, set, first, count, workspace, storage, step, reports);
 }
 
 }  // namespace pivot

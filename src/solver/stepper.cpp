@@ -47,6 +47,7 @@ void Stepper::reserveStepBuffers(const SolverStorage& storage) {
     builder_.reserve(bound);
     reports_.reserve(bound.bodies);
     smallIslands_.reserve(bound.bodies);
+    runs_.reserve(bound.bodies);
 }
 
 // The solver's arrays hold one island at a time, and no island holds more than all of this
@@ -117,22 +118,28 @@ StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
             continue;
         }
         IslandWorkspace& workspace = workspaces_[0];
-        planIsland(islands_, i, workspace, storage, context, pool_.activeWorkers(), planRevision);
+        planIsland(islands_, i, 1, workspace, storage, context, pool_.activeWorkers(),
+                   planRevision);
         pool_.region([&](int member) {
             IslandReport report =
                 solveIsland(Team(pool_, member), islands_, i, workspace, storage, context);
             if (member == 0) reports_[i] = report;
         });
     }
-    const int smallCount = static_cast<int>(smallIslands_.size());
-    const int islandsPerChunk = islands_.bodies.size() < kParallelBodies ? smallCount : 1;
-    pool_.parallelFor(smallCount, islandsPerChunk, [&](int begin, int end, int worker) {
+    runs_.clear();
+    bundleIslands(islands_, smallIslands_, runs_);
+    const int runCount = static_cast<int>(runs_.size());
+    const int runsPerChunk = islands_.bodies.size() < kParallelBodies ? runCount : 1;
+    pool_.parallelFor(runCount, runsPerChunk, [&](int begin, int end, int worker) {
         for (int k = begin; k < end; ++k) {
-            const int i = smallIslands_[k];
-            reports_[i] =
-                isLoneBody(islands_.view(i))
-                    ? solveLoneBody(islands_, i, storage.bodies, context)
-                    : solveIsland(islands_, i, workspaces_[worker], storage, context, planRevision);
+            const IslandRun run = runs_[static_cast<std::size_t>(k)];
+            IslandReport* reports = &reports_[static_cast<std::size_t>(run.first)];
+            if (run.count == 1 && isLoneBody(islands_.view(run.first))) {
+                *reports = solveLoneBody(islands_, run.first, storage.bodies, context);
+            } else {
+                solveIslands(islands_, run.first, run.count, workspaces_[worker], storage, context,
+                             planRevision, reports);
+            }
         }
     });
 

@@ -1,6 +1,7 @@
 // Solving one step's islands: finds them (or keeps the last step's, and their plans, when
 // nothing the search reads has changed: model/island_revision.h), shares them out among the
-// workers (a coloured island to the whole team, the others whole to one worker each) and adds
+// workers (a coloured island to the whole team, the others whole to one worker each, small ones
+// in bundles: island_bundles.h) and adds
 // up what they report. Owns the island buffers and the workspaces, reserved so that a warm step
 // allocates nothing (docs/architecture.md, "One step").
 #pragma once
@@ -14,6 +15,7 @@
 #include "islands/island_builder.h"
 #include "islands/island_set.h"
 #include "islands/solver_storage.h"
+#include "solver/island_bundles.h"
 #include "solver/island_solver.h"
 
 namespace pivot {
@@ -64,6 +66,7 @@ private:
     std::vector<IslandWorkspace> workspaces_;  // one per worker
     std::vector<IslandReport> reports_;        // one per island of the current step
     std::vector<int> smallIslands_;            // islands solved whole by one worker
+    std::vector<IslandRun> runs_;              // those, alone or in bundles (island_bundles.h)
     BufferBounds reservedFor_;                 // the pool capacities the island set was sized for
     BufferBounds reservedWorkspaceFor_;        // the island totals the workspaces were sized for
     // The IslandRevision count islands_ was searched at, if it was searched.

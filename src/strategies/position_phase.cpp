@@ -121,6 +121,68 @@ void solveXpbdSweeps(const Team& team, JointGroups& groups, const IslandSchedule
     team.sync();
 }
 
+// A bundle's NGS sweeps, on one thread: the sweep above, skipping the islands already solved.
+PositionPhaseResult solveMemberSweeps(JointGroups& groups, const IslandSchedule& schedule,
+                                      ContactSolver& contacts, SolverPose* poses,
+                                      std::vector<PositionPhaseResult>& results, int iterations) {
+    const int count = schedule.memberCount;
+    const std::vector<std::int32_t>& contactStart = schedule.memberContactStart;
+    // An island with nothing for NGS to check is solved without a sweep.
+    std::array<std::uint8_t, kMostBundleMembers> active{};
+    if (contacts.hasPositionConstraints()) {
+        for (int m = 0; m < count; ++m) active[m] = contactStart[m + 1] > contactStart[m];
+    }
+    groups.forEachGroup([&](auto strategy, auto& group, int g) {
+        if constexpr (decltype(strategy)::kNgsSweeps) {
+            const std::int32_t start = schedule.groupStart[g];
+            for (int k = 0; k < static_cast<int>(group.size()); ++k) {
+                active[schedule.jointMember[static_cast<std::size_t>(start + k)]] = 1;
+            }
+        }
+    });
+    int activeCount = 0;
+    for (int m = 0; m < count; ++m) {
+        results[m] = {0, active[m] == 0};
+        activeCount += active[m];
+    }
+
+    std::array<std::uint8_t, kMostBundleMembers> failed{};
+    for (int sweep = 1; sweep <= iterations && activeCount > 0; ++sweep) {
+        failed.fill(0);
+        for (int m = 0; m < count; ++m) {
+            if (!active[m] || contactStart[m + 1] == contactStart[m]) continue;
+            const float smallest =
+                contacts.solvePositions({contactStart[m], contactStart[m + 1]}, poses, false);
+            if (!ContactSolver::withinTolerance(smallest)) failed[m] = 1;
+        }
+        groups.forEachGroup([&](auto strategy, auto& group, int g) {
+            using S = decltype(strategy);
+            if constexpr (S::kNgsSweeps) {
+                const std::uint8_t* member = schedule.jointMember.data() + schedule.groupStart[g];
+                for (int k = 0; k < static_cast<int>(group.size()); ++k) {
+                    if (!active[member[k]]) continue;
+                    if (!S::solvePosition(group[k], poses)) failed[member[k]] = 1;
+                }
+            }
+        });
+        for (int m = 0; m < count; ++m) {
+            if (!active[m]) continue;
+            results[m].sweeps = sweep;
+            if (!failed[m]) {
+                results[m].solved = true;
+                active[m] = 0;
+                --activeCount;
+            }
+        }
+    }
+    PositionPhaseResult result{0, true};
+    for (int m = 0; m < count; ++m) {
+        result.sweeps = std::max(result.sweeps, results[m].sweeps);
+        result.solved = result.solved && results[m].solved;
+    }
+    return result;
+}
+
 }  // namespace
 
 PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
@@ -139,6 +201,7 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
     });
     if (!anyJoint && !contacts.hasPositionConstraints()) {
         result.solved = true;
+        std::fill(scratch.memberResults.begin(), scratch.memberResults.end(), result);
         return result;
     }
 
@@ -151,6 +214,10 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
         }
     });
     team.sync();
+    if (schedule.memberCount > 1) {
+        return solveMemberSweeps(groups, schedule, contacts, poses, scratch.memberResults,
+                                 iterations);
+    }
 
     // A sweep is solved when no block of it found a contact out of tolerance (NaN included)
     // or a joint beyond slop: the same answer however the sweep was cut into blocks.
@@ -184,6 +251,7 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
             break;
         }
     }
+    scratch.memberResults[0] = result;
     return result;
 }
 

@@ -42,6 +42,9 @@ struct PositionPhaseScratch {
     // read after it by every member, however late: flags are never reused within a step.
     std::unique_ptr<std::atomic<std::uint8_t>[]> sweepFailed;
     std::size_t sweepFlags = 0;  // allocated
+    /// Each island's own result, for a bundle of islands (IslandSchedule::memberCount; one
+    /// entry for one island), sized by the caller.
+    std::vector<PositionPhaseResult> memberResults;
     /// Room for `count` flags, all clear. On one thread, before the island is solved.
     void clearSweepFlags(std::size_t count) {
         if (count > sweepFlags) {
@@ -53,8 +56,10 @@ struct PositionPhaseScratch {
 };
 
 /// Runs the phase of substep `substep`. An island with nothing for NGS to check counts as
-/// solved. `scratch` is sized by the caller (pseudo and xpbdStart: the island's solver slots;
-/// sweep flags: substeps x iterations, clear).
+/// solved. In a bundle (one thread) each island stops its NGS sweeps when it is solved, as it
+/// would alone; the result is then the longest island's and whether all were solved, and
+/// scratch.memberResults has each island's. `scratch` is sized by the caller (pseudo and xpbdStart:
+/// the island's solver slots; sweep flags: substeps x iterations, clear).
 PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
                                        const IslandSchedule& schedule, ContactSolver& contacts,
                                        SolverPose* poses, SolverVelocity* velocities,
