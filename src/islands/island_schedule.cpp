@@ -129,7 +129,7 @@ void IslandScheduler::planJoints(const IslandView& island, const IslandSet::Rang
 }
 
 void IslandScheduler::dealOut(int memberCount) {
-    // items_ holds the group's joints island by island: where each island's begin.
+    // items_ holds the group's joints island by island: where each island's joints begin.
     memberItems_.fill(0);
     for (const std::int32_t j : items_) ++memberItems_[jointMembers_[j] + 1];
     for (int m = 0; m < memberCount; ++m) memberItems_[m + 1] += memberItems_[m];

@@ -493,6 +493,7 @@ void solveIslands(const Team& team, const IslandSet& set, int first, int count,
     const std::vector<PositionPhaseResult>& phases = work.positionScratch.memberResults;
     for (int substep = 0; substep < step.substepCount; ++substep) {
         solveSubstep(team, island, work, storage, substep == 0 ? step : later, substep, mine);
+        if (!team.leader()) continue;  // the leader alone reports, and reads the phases
         for (int m = 0; m < count; ++m) positionSweeps[m] += phases[m].sweeps;
     }
     writeBack(team, island, work, bodies, mine);

@@ -201,7 +201,9 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
     });
     if (!anyJoint && !contacts.hasPositionConstraints()) {
         result.solved = true;
-        std::fill(scratch.memberResults.begin(), scratch.memberResults.end(), result);
+        if (team.leader()) {
+            std::fill(scratch.memberResults.begin(), scratch.memberResults.end(), result);
+        }
         return result;
     }
 
@@ -251,7 +253,7 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
             break;
         }
     }
-    scratch.memberResults[0] = result;
+    if (team.leader()) scratch.memberResults[0] = result;  // every member found the same
     return result;
 }
 

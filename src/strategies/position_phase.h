@@ -43,7 +43,7 @@ struct PositionPhaseScratch {
     std::unique_ptr<std::atomic<std::uint8_t>[]> sweepFailed;
     std::size_t sweepFlags = 0;  // allocated
     /// Each island's own result, for a bundle of islands (IslandSchedule::memberCount; one
-    /// entry for one island), sized by the caller.
+    /// entry for one island), sized by the caller; written by the team's leader only.
     std::vector<PositionPhaseResult> memberResults;
     /// Room for `count` flags, all clear. On one thread, before the island is solved.
     void clearSweepFlags(std::size_t count) {
