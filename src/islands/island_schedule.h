@@ -27,7 +27,7 @@
 // island, then the second of each, ...), each island's in its own order; the contacts follow
 // one island after another. The islands share no body, so each is solved to the bits it would
 // be alone, while one island's joint waits on the joint before it (a chain's next link) the
-// processor works on the other islands' (docs/performance.md, "Small islands together").
+// processor works on the other islands' (docs/performance.md, "What the changes bought").
 #pragma once
 
 #include <algorithm>
