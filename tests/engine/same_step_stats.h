@@ -9,30 +9,25 @@
 namespace pivot::test_support {
 
 inline testing::AssertionResult sameSolverStats(const StepStats& a, const StepStats& b) {
-    const auto differ = [](const char* field, int x, int y) {
-        return testing::AssertionFailure() << field << ": " << x << " against " << y;
+    struct Field {
+        const char* name;
+        int StepStats::*count;
     };
-    if (a.islandCount != b.islandCount) return differ("islands", a.islandCount, b.islandCount);
-    if (a.positionIterations != b.positionIterations) {
-        return differ("position iterations", a.positionIterations, b.positionIterations);
-    }
-    if (a.translationClamps != b.translationClamps) {
-        return differ("translation clamps", a.translationClamps, b.translationClamps);
-    }
-    if (a.rotationClamps != b.rotationClamps) {
-        return differ("rotation clamps", a.rotationClamps, b.rotationClamps);
-    }
-    if (a.letGoJointCount != b.letGoJointCount) {
-        return differ("let-go joints", a.letGoJointCount, b.letGoJointCount);
-    }
-    if (a.edgeBodyCount != b.edgeBodyCount) {
-        return differ("bodies at the edge", a.edgeBodyCount, b.edgeBodyCount);
-    }
-    if (a.discardedBodyCount != b.discardedBodyCount) {
-        return differ("discarded bodies", a.discardedBodyCount, b.discardedBodyCount);
-    }
-    if (a.sleepingBodyCount != b.sleepingBodyCount) {
-        return differ("sleeping bodies", a.sleepingBodyCount, b.sleepingBodyCount);
+    static constexpr Field kFields[] = {
+        {"islands", &StepStats::islandCount},
+        {"position iterations", &StepStats::positionIterations},
+        {"translation clamps", &StepStats::translationClamps},
+        {"rotation clamps", &StepStats::rotationClamps},
+        {"let-go joints", &StepStats::letGoJointCount},
+        {"bodies at the edge", &StepStats::edgeBodyCount},
+        {"discarded bodies", &StepStats::discardedBodyCount},
+        {"sleeping bodies", &StepStats::sleepingBodyCount},
+    };
+    for (const Field& field : kFields) {
+        if (a.*field.count != b.*field.count) {
+            return testing::AssertionFailure()
+                   << field.name << ": " << a.*field.count << " against " << b.*field.count;
+        }
     }
     return testing::AssertionSuccess();
 }
