@@ -21,23 +21,21 @@ void IslandScheduler::plan(const IslandView& island, const IslandSet::Range* mem
     planJoints(island, members, joints, schedule);
     planContacts(island, members, schedule);
     if (schedule.contactsColored) giveFixedBodiesPrivateSlots(island, schedule, schedule.colored);
-    planMembers(members, count, schedule);
-    // One island's slots end with the private copies of its fixed bodies.
-    schedule.memberSlotStart[count] = schedule.slotCount(island);
+    planMembers(members, count, schedule.slotCount(island), schedule);
 }
 
-void IslandScheduler::planMembers(const IslandSet::Range* members, int count,
+void IslandScheduler::planMembers(const IslandSet::Range* members, int count, int slotCount,
                                   IslandSchedule& schedule) {
-    const IslandSet::Range& first = members[0];
     resizeBuffer(schedule.memberSlotStart, static_cast<std::size_t>(count) + 1);
     resizeBuffer(schedule.memberContactStart, static_cast<std::size_t>(count) + 1);
-    for (int m = 0; m <= count; ++m) {
-        // The contacts keep the islands' order (planContacts), so their starts are the ranges'.
-        const bool end = m == count;
-        const IslandSet::Range& r = members[end ? count - 1 : m];
-        schedule.memberSlotStart[m] = (end ? r.bodyEnd : r.bodyBegin) - first.bodyBegin;
-        schedule.memberContactStart[m] = (end ? r.contactEnd : r.contactBegin) - first.contactBegin;
+    // The contacts keep the islands' order (planContacts), so their starts are the ranges'.
+    for (int m = 0; m < count; ++m) {
+        schedule.memberSlotStart[m] = members[m].bodyBegin - members[0].bodyBegin;
+        schedule.memberContactStart[m] = members[m].contactBegin - members[0].contactBegin;
     }
+    // The slots end with one island's private copies of its fixed bodies, if it has them.
+    schedule.memberSlotStart[count] = slotCount;
+    schedule.memberContactStart[count] = members[count - 1].contactEnd - members[0].contactBegin;
 }
 
 namespace {

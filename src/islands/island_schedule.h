@@ -129,7 +129,9 @@ public:
     }
 
 private:
-    void planMembers(const IslandSet::Range* members, int count, IslandSchedule& schedule);
+    /// Where each island's solver slots and contacts begin; `slotCount`, the bundle's slots.
+    void planMembers(const IslandSet::Range* members, int count, int slotCount,
+                     IslandSchedule& schedule);
     void planJoints(const IslandView& island, const IslandSet::Range* members,
                     const SlotPool<Joint>& joints, IslandSchedule& schedule);
     void planContacts(const IslandView& island, const IslandSet::Range* members,

@@ -20,29 +20,26 @@ std::uint64_t islandsSolvedInBundles() {
 void bundleIslands(const IslandSet& set, const std::vector<int>& islands,
                    std::vector<IslandRun>& runs) {
     const bool on = bundling.load(std::memory_order_relaxed);
-    const auto constraints = [&](int i) {
-        const IslandSet::Range& r = set.ranges[static_cast<std::size_t>(i)];
-        return (r.jointEnd - r.jointBegin) + (r.contactEnd - r.contactBegin);
-    };
     std::uint64_t bundled = 0;
-    const std::size_t count = islands.size();
-    for (std::size_t k = 0; k < count;) {
-        const int first = islands[k];
-        IslandRun run{first, 1};
-        ++k;
-        if (on && bundles(set.view(first))) {
-            int total = constraints(first);
-            while (k < count && run.count < kMostBundleMembers && islands[k] == first + run.count &&
-                   bundles(set.view(islands[k])) &&
-                   total + constraints(islands[k]) <= kMostBundleConstraints) {
-                total += constraints(islands[k]);
-                ++run.count;
-                ++k;
-            }
+    int total = 0;  // the open run's joints and contacts; runs.back() is open while bundleable
+    bool open = false;
+    for (const int island : islands) {
+        const IslandView view = set.view(island);
+        const int constraints = view.jointCount + view.contactCount;
+        const bool joins = on && bundles(view);
+        if (open && joins && runs.back().count < kMostBundleMembers &&
+            island == runs.back().first + runs.back().count &&
+            total + constraints <= kMostBundleConstraints) {
+            ++runs.back().count;
+            total += constraints;
+            continue;
         }
-        if (run.count > 1) bundled += static_cast<std::uint64_t>(run.count);
-        runs.push_back(run);
+        if (open && runs.back().count > 1) bundled += static_cast<std::uint64_t>(runs.back().count);
+        runs.push_back({island, 1});
+        open = joins;
+        total = constraints;
     }
+    if (open && runs.back().count > 1) bundled += static_cast<std::uint64_t>(runs.back().count);
     if (bundled > 0) bundledIslands.fetch_add(bundled, std::memory_order_relaxed);
 }
 
