@@ -1,6 +1,7 @@
 #include "core/task_pool.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <utility>
 
 #include "core/spin_wait.h"
@@ -35,10 +36,18 @@ void TaskPool::takeChunks(int worker) {
         trampoline_(context_, 0, 0, worker);
         return;
     }
-    for (;;) {
-        int begin = next_.fetch_add(chunk_, std::memory_order_relaxed);
-        if (begin >= count_) return;
-        trampoline_(context_, begin, std::min(begin + chunk_, count_), worker);
+    for (int k = 0; k < stretches_; ++k) {
+        const int stretch = (worker + k) % stretches_;
+        const auto edge = [this](int k) {
+            return static_cast<int>(std::int64_t{chunkCount_} * k / stretches_);
+        };
+        const int first = edge(stretch);
+        const int last = edge(stretch + 1);
+        std::atomic<int>& next = cursors_[static_cast<std::size_t>(stretch)].next;
+        for (int chunk; (chunk = first + next.fetch_add(1, std::memory_order_relaxed)) < last;) {
+            const int begin = chunk * chunk_;
+            trampoline_(context_, begin, std::min(begin + chunk_, count_), worker);
+        }
     }
 }
 
@@ -51,8 +60,12 @@ void TaskPool::run(int count, int minChunk, void* context, Trampoline trampoline
         // A few chunks per worker balance uneven work without much hand-off cost.
         const int target = std::max(1, count / (4 * active_));
         chunk_ = std::max(minChunk, target);
-        next_.store(0, std::memory_order_relaxed);
-        if (count < 0) stages_.reset();
+        chunkCount_ = count < 0 ? 0 : (count + chunk_ - 1) / chunk_;
+        stretches_ = std::clamp(active_, 1, std::clamp(chunkCount_, 1, kMaxStretches));
+        for (int s = 0; s < stretches_; ++s) {
+            cursors_[static_cast<std::size_t>(s)].next.store(0, std::memory_order_relaxed);
+        }
+        if (count < 0) stages_->reset(active_);
         open_ = true;
         generation_.fetch_add(1, std::memory_order_release);
     }

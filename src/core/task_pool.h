@@ -1,16 +1,18 @@
 // A small pool of worker threads for the parallel stages of World::step. parallelFor splits an
-// index range into chunks that the workers and the calling thread take in turn; it returns once
-// every chunk is done. Stages only use it where the chunks are independent, and merge their
-// results in index order afterwards, so results never depend on the number of workers or on
-// scheduling. The workers are threads of the pool's own, or tasks handed to a game's task
-// system (pivot/step_tasks.h), which join a job the same way a woken thread does.
+// index range into chunks that the workers and the calling thread take, each its own stretch of
+// them first; it returns once every chunk is done. Stages only use it where the chunks are
+// independent, and merge their results in index order afterwards, so results never depend on the
+// number of workers or on scheduling. The workers are threads of the pool's own, or tasks handed to
+// a game's task system (pivot/step_tasks.h), which join a job the same way a woken thread does.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -79,7 +81,7 @@ public:
     }
 
     /// Inside region(): where its members claim the blocks of its stages (cleared for each).
-    StageBoard& stages() { return stages_; }
+    StageBoard& stages() { return *stages_; }
 
 private:
     using Trampoline = void (*)(void*, int, int, int);
@@ -124,12 +126,25 @@ private:
     Trampoline trampoline_ = nullptr;
     int count_ = 0;
     int chunk_ = 1;
-    std::atomic<int> next_{0};
+    // The job's chunks are dealt into a stretch per active worker (up to kMaxStretches, then
+    // shared), in order: a worker takes the chunks of its own stretch first, then what the
+    // others left. So a worker that has its core does the same part of a job at every step
+    // (the same contacts, bodies, islands), with their data still in its own cache, and a
+    // worker that is late or never comes holds nobody up: the others take its stretch.
+    static constexpr int kMaxStretches = 8;
+    struct alignas(64) Cursor {
+        std::atomic<int> next{0};  // chunks taken of the stretch, counting from its first
+    };
+    std::array<Cursor, kMaxStretches> cursors_;
+    int chunkCount_ = 0;
+    int stretches_ = 1;
     // How long a waiting thread spins before it sleeps. The stages of a step follow each other
     // within tens of microseconds, less than a wake-up costs, so a worker waiting for the next
     // job, or the caller for the end of one, watches for about kJobSpin.
     static constexpr std::chrono::microseconds kJobSpin{100};
-    StageBoard stages_;
+    // 37 KB, a cache line a word: kept apart, so that the world that holds the pool keeps its
+    // other parts close together.
+    std::unique_ptr<StageBoard> stages_ = std::make_unique<StageBoard>();
 };
 
 }  // namespace pivot

@@ -104,7 +104,8 @@ private:
         if (openCount_ == kMaxOpen) sync();
         const std::uint32_t number = nextStage_++;
         open_[openCount_++] = {number, blocks};
-        for (int b; (b = board_->claim(number, blocks)) >= 0;) {
+        if (!board_->enter(number)) return;
+        for (int b; (b = board_->claim(number, blocks, member_, size_)) >= 0;) {
             run(b);
             board_->finish(number);
         }

@@ -334,6 +334,105 @@ TEST(TeamSolver, AMemberThatHasNotArrivedHoldsNobodyUp) {
     EXPECT_EQ(lateBlocks, 0);
 }
 
+TEST(StageBoard, EachMemberClaimsItsOwnStretchFirstThenWhatTheOthersLeft) {
+    // Two members, eight blocks: member 0's stretch is blocks 0 to 3, member 1's 4 to 7. Claims
+    // made one after the other, as two members might make them.
+    StageBoard board;
+    board.reset(2);
+    ASSERT_TRUE(board.enter(1));
+    EXPECT_EQ(board.claim(1, 8, 0, 2), 0);
+    EXPECT_EQ(board.claim(1, 8, 1, 2), 4);
+    EXPECT_EQ(board.claim(1, 8, 1, 2), 5);
+    EXPECT_EQ(board.claim(1, 8, 1, 2), 6);
+    EXPECT_EQ(board.claim(1, 8, 1, 2), 7);
+    // Member 1's stretch is done: it takes member 0's next block, and member 0 the one after.
+    EXPECT_EQ(board.claim(1, 8, 1, 2), 1);
+    EXPECT_EQ(board.claim(1, 8, 0, 2), 2);
+    EXPECT_EQ(board.claim(1, 8, 0, 2), 3);
+    EXPECT_EQ(board.claim(1, 8, 0, 2), -1);
+    EXPECT_EQ(board.claim(1, 8, 1, 2), -1);
+    for (int b = 0; b < 7; ++b) board.finish(1);
+    EXPECT_FALSE(board.finished(1, 8));
+    board.finish(1);
+    EXPECT_TRUE(board.finished(1, 8));
+}
+
+TEST(StageBoard, EveryBlockIsClaimedOnceWhateverTheTeamAndBlockCounts) {
+    // More members than segments share them; fewer blocks than members leave some without.
+    for (int members : {1, 2, 3, 5, StageBoard::kMaxSegments + 3}) {
+        for (int blocks : {1, 2, 3, 7, 8, 64, 1000}) {
+            StageBoard board;
+            board.reset(members);
+            ASSERT_TRUE(board.enter(7));
+            std::vector<int> claimed(static_cast<std::size_t>(blocks), 0);
+            // Members take turns, each claiming until it finds nothing left.
+            std::vector<bool> out(static_cast<std::size_t>(members), false);
+            int left = members;
+            for (int turn = 0; left > 0; ++turn) {
+                const int member = turn % members;
+                if (out[static_cast<std::size_t>(member)]) continue;
+                const int b = board.claim(7, blocks, member, members);
+                if (b < 0) {
+                    out[static_cast<std::size_t>(member)] = true;
+                    --left;
+                    continue;
+                }
+                ASSERT_LT(b, blocks);
+                ++claimed[static_cast<std::size_t>(b)];
+                board.finish(7);
+            }
+            EXPECT_EQ(std::count(claimed.begin(), claimed.end(), 1), blocks)
+                << members << " members, " << blocks << " blocks";
+            EXPECT_TRUE(board.finished(7, blocks));
+        }
+    }
+}
+
+TEST(StageBoard, AStageWhoseSlotWasReusedIsFinishedLongAgo) {
+    // A member that comes back after the others have run kSlots stages on finds its stage's
+    // slot holding a later one: nothing to claim, nothing to wait for. Member 0 does all of
+    // stage 3 (its own segment, then member 1's), and later takes the same slot for stage 3 +
+    // kSlots.
+    StageBoard board;
+    board.reset(2);
+    ASSERT_TRUE(board.enter(3));
+    for (int b = 0; b < 4; ++b) {
+        EXPECT_EQ(board.claim(3, 4, 0, 2), b);
+        board.finish(3);
+    }
+    EXPECT_EQ(board.claim(3, 4, 0, 2), -1);
+    const std::uint32_t later = 3 + StageBoard::kSlots;
+    ASSERT_TRUE(board.enter(later));
+    EXPECT_EQ(board.claim(later, 4, 0, 2), 0);
+    EXPECT_FALSE(board.enter(3));
+    EXPECT_EQ(board.claim(3, 4, 1, 2), -1);
+    EXPECT_TRUE(board.finished(3, 4));
+    EXPECT_FALSE(board.finished(later, 4));
+}
+
+TEST(TaskPool, EveryIndexIsDoneOnceWhateverTheWorkersAndTheChunks) {
+    // Each worker takes its own stretch of chunks first, then the others' leftovers: every
+    // index must still be done exactly once, whoever comes and whenever.
+    for (int workers : {1, 2, 3, 5}) {
+        TaskPool pool(workers);
+        for (int count : {1, 7, 100, 1001, 4096}) {
+            for (int minChunk : {1, 16, 256}) {
+                std::vector<std::atomic<int>> done(static_cast<std::size_t>(count));
+                for (int round = 0; round < 20; ++round) {
+                    pool.parallelFor(count, minChunk, [&](int begin, int end, int worker) {
+                        EXPECT_LT(worker, workers);
+                        for (int i = begin; i < end; ++i) ++done[static_cast<std::size_t>(i)];
+                    });
+                }
+                int wrong = 0;
+                for (const std::atomic<int>& d : done) wrong += d.load() != 20;
+                EXPECT_EQ(wrong, 0)
+                    << workers << " workers, " << count << " items, chunks of " << minChunk;
+            }
+        }
+    }
+}
+
 TEST(TeamSolver, AnIndependentBatchIsCutWhereTheContactTilesStart) {
     // The wide contact sweeps find their tiles at multiples of kBatchAlignment from a batch's
     // start (constraints/contact_tiles.h): every block must start there, on any team size,
