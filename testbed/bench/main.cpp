@@ -37,6 +37,7 @@ struct Options {
     bool continuous = true;
     bool predictiveBoxes = false;      // --boxes predictive: pivot2d's worlds use Box2D 2.4.1's
     bool sharedTasks = false;          // --pivot-workers tasks: pivot2d's on the bench's pool
+    bool adaptWorkers = true;          // --adapt off: pivot2d's worlds on all workers every step
     std::string only;                  // --scene
     std::vector<std::string> engines;  // --engines; empty: all
     std::string profileEngine;         // --profile: step one engine, untimed, for a profiler
@@ -68,6 +69,7 @@ public:
         settings.continuous = options.continuous;
         settings.predictiveBoxes = options.predictiveBoxes;
         settings.sharedTasks = options.sharedTasks;
+        settings.adaptWorkers = options.adaptWorkers;
         engine_ = kind.make(settings);
         script_ = scene.build(*engine_);
     }
@@ -193,7 +195,8 @@ void usage(const std::vector<EngineKind>& kinds) {
     std::cerr
         << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] [--scene NAME]\n"
            "                   [--engines A,B,...] [--continuous on|off]\n"
-           "                   [--boxes compact|predictive] [--pivot-workers own|tasks] [--list]\n"
+           "                   [--boxes compact|predictive] [--pivot-workers own|tasks]\n"
+           "                   [--adapt on|off] [--list]\n"
            "                   [--profile ENGINE STEPS]\n"
            "  Times each scene in every engine, 1/60 s steps, continuous collision on, sleeping\n"
            "  as the scene says, and prints the median milliseconds per step (the first step\n"
@@ -214,6 +217,9 @@ void usage(const std::vector<EngineKind>& kinds) {
            "  --pivot-workers tasks  pivot2d's helpers run as tasks on the bench's pool of\n"
            "             threads, the one Box2D v3 is given (WorldDef::enqueueTask), instead of\n"
            "             on threads of the world's own (the default, --pivot-workers own)\n"
+           "  --adapt off  pivot2d's worlds step on all their workers at every step\n"
+           "             (WorldDef::adaptWorkerCount = false) instead of timing whether the\n"
+           "             caller alone is faster (the default, --adapt on)\n"
            "  --list     name and describe the scenes\n"
            "  --scene queries  only the query rows (ray casts and box queries in 10^4\n"
            "             shapes); --scene memory  only the memory rows\n"
@@ -252,6 +258,9 @@ int main(int argc, char** argv) {
         } else if (arg == "--pivot-workers" && i + 1 < argc &&
                    (std::string(argv[i + 1]) == "tasks" || std::string(argv[i + 1]) == "own")) {
             options.sharedTasks = std::string(argv[++i]) == "tasks";
+        } else if (arg == "--adapt" && i + 1 < argc &&
+                   (std::string(argv[i + 1]) == "on" || std::string(argv[i + 1]) == "off")) {
+            options.adaptWorkers = std::string(argv[++i]) == "on";
         } else if (arg == "--profile" && i + 2 < argc) {
             options.profileEngine = argv[++i];
             options.profileSteps = std::max(0, std::atoi(argv[++i]));
@@ -344,11 +353,12 @@ int main(int argc, char** argv) {
     }
     std::printf(
         "%s: median ms per step over %d run%s (first step left out); continuous collision "
-        "%s; pivot2d's broad-phase boxes %s; pivot2d's helpers on %s.\n",
+        "%s; pivot2d's broad-phase boxes %s; pivot2d's helpers on %s%s.\n",
         options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
         options.repeats == 1 ? "" : "s", options.continuous ? "on" : "off",
         options.predictiveBoxes ? "predictive" : "compact",
-        options.sharedTasks ? "the bench's pool of threads (tasks)" : "threads of their own");
+        options.sharedTasks ? "the bench's pool of threads (tasks)" : "threads of their own",
+        options.adaptWorkers ? "" : ", all of them at every step");
     for (const EngineKind& kind : kinds) {
         std::printf("  %-12s %s\n", kind.name.c_str(), kind.about.c_str());
     }

@@ -23,6 +23,8 @@ struct WorldSettings {
     /// pivot2d: its helpers run as tasks on the bench's pool of threads (engines/task_pool.h,
     /// the one Box2D v3 is given), through WorldDef::enqueueTask, not on threads of its own.
     bool sharedTasks = false;
+    /// pivot2d: WorldDef::adaptWorkerCount (false: every step on all its workers).
+    bool adaptWorkers = true;
 };
 
 class Engine : public Builder {

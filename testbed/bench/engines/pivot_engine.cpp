@@ -43,6 +43,7 @@ public:
         def.contactCorrection = setup.contacts;
         def.substepCount = setup.substeps;
         def.workerCount = settings.threads;
+        def.adaptWorkerCount = settings.adaptWorkers;
         if (settings.predictiveBoxes) def.broadPhaseBoxes = BroadPhaseBoxes::Predictive;
         if (settings.sharedTasks && settings.threads > 1) {
             tasks_ = std::make_unique<TaskPool>(settings.threads);
