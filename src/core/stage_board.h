@@ -9,9 +9,9 @@
 // a member claims the blocks of its own segment first, in order, and only then those left in
 // the others'. So while every member has its core, a member solves the same stretch of every
 // stage over an island's same constraints or bodies, from one sweep to the next, and the bodies
-// those touch stay in its own cache instead of crossing to another core's at every sweep
-// (across cores a cache line costs hundreds of nanoseconds on the machines measured,
-// docs/performance.md). Which member solves a block never changes a result.
+// those touch stay in its own cache instead of crossing to another core's at every sweep (a
+// cache line took about 200 ns to cross on the machine measured, docs/performance.md). Which
+// member solves a block never changes a result.
 //
 // Stage s lives in slot s % kSlots: a word per segment, the stage's number (high 32 bits) and
 // the blocks claimed of that segment (low 32), and a word counting the blocks finished, with
