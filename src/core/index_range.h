@@ -18,6 +18,12 @@ struct Batch {
     bool serial = true;
 };
 
+/// Where share `part` of `parts` starts when `count` items are dealt into that many shares in
+/// order, as evenly as they go (share `parts` starts at `count`).
+inline int shareStart(int count, int part, int parts) {
+    return static_cast<int>(std::int64_t{count} * part / parts);
+}
+
 /// A batch of independent constraints is cut into blocks at multiples of this from its start
 /// (islands/team.h), so that a solver working on several constraints at a time finds its runs
 /// where it laid them out (constraints/contact_tiles.h), whatever the number of workers.

@@ -27,6 +27,8 @@
 #include <atomic>
 #include <cstdint>
 
+#include "core/index_range.h"
+
 namespace pivot {
 
 class StageBoard {
@@ -63,8 +65,8 @@ public:
         const int segments = std::clamp(members, 1, std::min(kMaxSegments, blocks));
         for (int k = 0; k < segments; ++k) {
             const int segment = (member + k) % segments;
-            const int begin = blocks * segment / segments;
-            const int end = blocks * (segment + 1) / segments;
+            const int begin = shareStart(blocks, segment, segments);
+            const int end = shareStart(blocks, segment + 1, segments);
             const int block = claimIn(slot.segments[segment].word, tag, end - begin);
             if (block == kLongAgo) return -1;
             if (block >= 0) return begin + block;

@@ -1,9 +1,9 @@
 #include "core/task_pool.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <utility>
 
+#include "core/index_range.h"
 #include "core/spin_wait.h"
 
 namespace pivot {
@@ -38,11 +38,8 @@ void TaskPool::takeChunks(int worker) {
     }
     for (int k = 0; k < stretches_; ++k) {
         const int stretch = (worker + k) % stretches_;
-        const auto edge = [this](int k) {
-            return static_cast<int>(std::int64_t{chunkCount_} * k / stretches_);
-        };
-        const int first = edge(stretch);
-        const int last = edge(stretch + 1);
+        const int first = shareStart(chunkCount_, stretch, stretches_);
+        const int last = shareStart(chunkCount_, stretch + 1, stretches_);
         std::atomic<int>& next = cursors_[static_cast<std::size_t>(stretch)].next;
         for (int chunk; (chunk = first + next.fetch_add(1, std::memory_order_relaxed)) < last;) {
             const int begin = chunk * chunk_;
