@@ -66,152 +66,130 @@ void storeVelocities(const Velocities<F>& in, SolverVelocity* velocities, const 
     storeColumns(rows, in.vx, in.vy, in.w, count);
 }
 
-// A point's lanes: its anchors, masses, impulses and targets.
-template <typename F>
-struct PointLanes {
-    F rAx, rAy, rBx, rBy;
-    F normalMass, tangentMass, normalImpulse, tangentImpulse, velocityBias, softTarget;
-};
+// Inlined into the tile loops, so that the two bodies' velocities stay in registers across a
+// tile's constraints.
+#if defined(__GNUC__) || defined(__clang__)
+#define PIVOT_LANES_INLINE inline __attribute__((always_inline))
+#else
+#define PIVOT_LANES_INLINE inline
+#endif
 
-// A tile's constraints, lane by lane.
-template <typename F>
-struct ContactLanes {
-    F nx, ny, friction, mA, mB, iA, iB;
-    F has1, has2;          // masks: the contact has a first, a second point
-    F kxx, kxy, kyx, kyy;  // K (two points): columns cx = (kxx, kxy), cy = (kyx, kyy)
-    F mxx, mxy, myx, myy;  // its inverse, likewise
-    PointLanes<F> p[2];
-};
-
-template <typename F>
-ContactLanes<F> loadContacts(const ContactTile& tile) {
+// A tile's constraints, each field loaded where it is used and impulses stored as they change.
+// (A copy of the whole tile, 37 vectors, does not fit in the 16 vector registers: it went to
+// the stack and back, and the copy alone was about 6% of a large_pyramid soft step.)
+// `Tile` is ContactTile, or const ContactTile for the sweeps that only read it.
+template <typename F, typename Tile>
+struct TileLanes {
     using T = ContactTile;
-    ContactLanes<F> c;
-    c.nx = F::load(tile.lanes(T::kNormalX));
-    c.ny = F::load(tile.lanes(T::kNormalY));
-    c.friction = F::load(tile.lanes(T::kFriction));
-    c.mA = F::load(tile.lanes(T::kMassA));
-    c.mB = F::load(tile.lanes(T::kMassB));
-    c.iA = F::load(tile.lanes(T::kInertiaA));
-    c.iB = F::load(tile.lanes(T::kInertiaB));
-    c.has1 = F::above(tile.pointCount, 0);
-    c.has2 = F::above(tile.pointCount, 1);
-    c.kxx = F::load(tile.lanes(T::kKxx));
-    c.kxy = F::load(tile.lanes(T::kKxy));
-    c.kyx = F::load(tile.lanes(T::kKyx));
-    c.kyy = F::load(tile.lanes(T::kKyy));
-    c.mxx = F::load(tile.lanes(T::kMxx));
-    c.mxy = F::load(tile.lanes(T::kMxy));
-    c.myx = F::load(tile.lanes(T::kMyx));
-    c.myy = F::load(tile.lanes(T::kMyy));
-    for (int j = 0; j < 2; ++j) {
-        PointLanes<F>& p = c.p[j];
-        p.rAx = F::load(tile.lanes(j, T::kAnchorAx));
-        p.rAy = F::load(tile.lanes(j, T::kAnchorAy));
-        p.rBx = F::load(tile.lanes(j, T::kAnchorBx));
-        p.rBy = F::load(tile.lanes(j, T::kAnchorBy));
-        p.normalMass = F::load(tile.lanes(j, T::kNormalMass));
-        p.tangentMass = F::load(tile.lanes(j, T::kTangentMass));
-        p.normalImpulse = F::load(tile.lanes(j, T::kNormalImpulse));
-        p.tangentImpulse = F::load(tile.lanes(j, T::kTangentImpulse));
-        p.velocityBias = F::load(tile.lanes(j, T::kVelocityBias));
-        p.softTarget = F::load(tile.lanes(j, T::kSoftTarget));
-    }
-    return c;
-}
+    Tile& tile;
+    F has1, has2;  // masks: the contact has a first, a second point
 
-// Writes back what a sweep changes: the impulses.
-template <typename F>
-void storeImpulses(const ContactLanes<F>& c, ContactTile& tile) {
-    for (int j = 0; j < 2; ++j) {
-        store(tile.lanes(j, ContactTile::kNormalImpulse), c.p[j].normalImpulse);
-        store(tile.lanes(j, ContactTile::kTangentImpulse), c.p[j].tangentImpulse);
-    }
-}
+    explicit TileLanes(Tile& t)
+        : tile(t), has1(F::above(t.pointCount, 0)), has2(F::above(t.pointCount, 1)) {}
+    F get(T::Field f) const { return F::load(tile.lanes(f)); }
+    F get(int point, T::PointField f) const { return F::load(tile.lanes(point, f)); }
+    void put(int point, T::PointField f, F value) const { store(tile.lanes(point, f), value); }
+    F has(int point) const { return point == 0 ? has1 : has2; }
+};
 
-// (vB + wB x rB - vA - wA x rA) . d, as relativeVelocity and dot compute it.
-template <typename F>
-F relativeAlong(const Velocities<F>& A, const Velocities<F>& B, const PointLanes<F>& p, F dx,
-                F dy) {
-    const F vx = ((B.vx + (-B.w) * p.rBy) - A.vx) - (-A.w) * p.rAy;
-    const F vy = ((B.vy + B.w * p.rBx) - A.vy) - A.w * p.rAx;
+// (vB + wB x rB - vA - wA x rA) . d at point j, as relativeVelocity and dot compute it.
+template <typename F, typename Tile>
+PIVOT_LANES_INLINE F relativeAlong(const Velocities<F>& A, const Velocities<F>& B,
+                                   const TileLanes<F, Tile>& k, int j, F dx, F dy) {
+    using T = ContactTile;
+    const F vx =
+        ((B.vx + (-B.w) * k.get(j, T::kAnchorBy)) - A.vx) - (-A.w) * k.get(j, T::kAnchorAy);
+    const F vy = ((B.vy + B.w * k.get(j, T::kAnchorBx)) - A.vy) - A.w * k.get(j, T::kAnchorAx);
     return vx * dx + vy * dy;
 }
 
-// Impulse (Px, Py) at point p, in the lanes of `mask` only.
-template <typename F>
-void apply(Velocities<F>& A, Velocities<F>& B, const ContactLanes<F>& k, const PointLanes<F>& p,
-           F Px, F Py, F mask) {
-    A.vx = select(mask, A.vx - k.mA * Px, A.vx);
-    A.vy = select(mask, A.vy - k.mA * Py, A.vy);
-    A.w = select(mask, A.w - k.iA * (p.rAx * Py - p.rAy * Px), A.w);
-    B.vx = select(mask, B.vx + k.mB * Px, B.vx);
-    B.vy = select(mask, B.vy + k.mB * Py, B.vy);
-    B.w = select(mask, B.w + k.iB * (p.rBx * Py - p.rBy * Px), B.w);
+// Impulse (Px, Py) at point j, in the lanes of `mask` only.
+template <typename F, typename Tile>
+PIVOT_LANES_INLINE void apply(Velocities<F>& A, Velocities<F>& B, const TileLanes<F, Tile>& k,
+                              int j, F Px, F Py, F mask) {
+    using T = ContactTile;
+    const F mA = k.get(T::kMassA), iA = k.get(T::kInertiaA);
+    const F mB = k.get(T::kMassB), iB = k.get(T::kInertiaB);
+    const F rAx = k.get(j, T::kAnchorAx), rAy = k.get(j, T::kAnchorAy);
+    const F rBx = k.get(j, T::kAnchorBx), rBy = k.get(j, T::kAnchorBy);
+    A.vx = select(mask, A.vx - mA * Px, A.vx);
+    A.vy = select(mask, A.vy - mA * Py, A.vy);
+    A.w = select(mask, A.w - iA * (rAx * Py - rAy * Px), A.w);
+    B.vx = select(mask, B.vx + mB * Px, B.vx);
+    B.vy = select(mask, B.vy + mB * Py, B.vy);
+    B.w = select(mask, B.w + iB * (rBx * Py - rBy * Px), B.w);
 }
 
 template <typename F>
-void solveFriction(ContactLanes<F>& k, Velocities<F>& A, Velocities<F>& B) {
-    const F tx = k.ny, ty = -k.nx;  // tangentOf: cross(n, 1)
+PIVOT_LANES_INLINE void solveFriction(const TileLanes<F, ContactTile>& k, Velocities<F>& A,
+                                      Velocities<F>& B) {
+    using T = ContactTile;
+    const F tx = k.get(T::kNormalY), ty = -k.get(T::kNormalX);  // tangentOf: cross(n, 1)
     for (int j = 0; j < 2; ++j) {
-        PointLanes<F>& p = k.p[j];
-        const F active = j == 0 ? k.has1 : k.has2;
+        const F active = k.has(j);
         if (!any(active)) continue;
-        const F vt = relativeAlong(A, B, p, tx, ty);
-        F lambda = p.tangentMass * (-vt);
-        const F maxFriction = k.friction * p.normalImpulse;
-        const F total = clampOf(p.tangentImpulse + lambda, -maxFriction, maxFriction);
-        lambda = total - p.tangentImpulse;
-        p.tangentImpulse = select(active, total, p.tangentImpulse);
-        apply(A, B, k, p, lambda * tx, lambda * ty, active);
+        const F vt = relativeAlong(A, B, k, j, tx, ty);
+        F lambda = k.get(j, T::kTangentMass) * (-vt);
+        const F maxFriction = k.get(T::kFriction) * k.get(j, T::kNormalImpulse);
+        const F old = k.get(j, T::kTangentImpulse);
+        const F total = clampOf(old + lambda, -maxFriction, maxFriction);
+        lambda = total - old;
+        k.put(j, T::kTangentImpulse, select(active, total, old));
+        apply(A, B, k, j, lambda * tx, lambda * ty, active);
     }
 }
 
 // Point by point, in the lanes of `lanes`: rigid towards velocityBias, or (soft) the spring.
 template <bool soft, typename F>
-void solveNormalPoints(ContactLanes<F>& k, Velocities<F>& A, Velocities<F>& B, F lanes,
-                       const SoftFactors& softness) {
+PIVOT_LANES_INLINE void solveNormalPoints(const TileLanes<F, ContactTile>& k, Velocities<F>& A,
+                                          Velocities<F>& B, F lanes, const SoftFactors& softness) {
+    using T = ContactTile;
+    const F nx = k.get(T::kNormalX), ny = k.get(T::kNormalY);
     for (int j = 0; j < 2; ++j) {
-        PointLanes<F>& p = k.p[j];
-        const F active = both(lanes, j == 0 ? k.has1 : k.has2);
+        const F active = both(lanes, k.has(j));
         if (!any(active)) continue;
-        const F vn = relativeAlong(A, B, p, k.nx, k.ny);
-        F lambda = soft ? F(softness.massScale) * ((-p.normalMass) * (vn - p.softTarget)) -
-                              F(softness.impulseScale) * p.normalImpulse
-                        : (-p.normalMass) * (vn - p.velocityBias);
-        const F total = maxOf(p.normalImpulse + lambda, F(0.0f));
-        lambda = total - p.normalImpulse;
-        p.normalImpulse = select(active, total, p.normalImpulse);
-        apply(A, B, k, p, lambda * k.nx, lambda * k.ny, active);
+        const F vn = relativeAlong(A, B, k, j, nx, ny);
+        const F old = k.get(j, T::kNormalImpulse);
+        const F normalMass = k.get(j, T::kNormalMass);
+        F lambda = soft
+                       ? F(softness.massScale) * ((-normalMass) * (vn - k.get(j, T::kSoftTarget))) -
+                             F(softness.impulseScale) * old
+                       : (-normalMass) * (vn - k.get(j, T::kVelocityBias));
+        const F total = maxOf(old + lambda, F(0.0f));
+        lambda = total - old;
+        k.put(j, T::kNormalImpulse, select(active, total, old));
+        apply(A, B, k, j, lambda * nx, lambda * ny, active);
     }
 }
 
 // Both points together, in the lanes of `lanes` (two-point contacts): solveNormalBlock.
 template <typename F>
-void solveNormalBlock(ContactLanes<F>& k, Velocities<F>& A, Velocities<F>& B, F lanes) {
-    PointLanes<F>& p1 = k.p[0];
-    PointLanes<F>& p2 = k.p[1];
-    const F old1 = p1.normalImpulse, old2 = p2.normalImpulse;
-    const F vn1 = relativeAlong(A, B, p1, k.nx, k.ny);
-    const F vn2 = relativeAlong(A, B, p2, k.nx, k.ny);
-    F bx = vn1 - p1.velocityBias, by = vn2 - p2.velocityBias;
+PIVOT_LANES_INLINE void solveNormalBlock(const TileLanes<F, ContactTile>& k, Velocities<F>& A,
+                                         Velocities<F>& B, F lanes) {
+    using T = ContactTile;
+    const F nx = k.get(T::kNormalX), ny = k.get(T::kNormalY);
+    const F old1 = k.get(0, T::kNormalImpulse), old2 = k.get(1, T::kNormalImpulse);
+    const F vn1 = relativeAlong(A, B, k, 0, nx, ny);
+    const F vn2 = relativeAlong(A, B, k, 1, nx, ny);
+    F bx = vn1 - k.get(0, T::kVelocityBias), by = vn2 - k.get(1, T::kVelocityBias);
     // b -= K * old
-    const F kOldX = k.kxx * old1 + k.kyx * old2;
-    const F kOldY = k.kxy * old1 + k.kyy * old2;
+    const F kxx = k.get(T::kKxx), kxy = k.get(T::kKxy), kyx = k.get(T::kKyx), kyy = k.get(T::kKyy);
+    const F kOldX = kxx * old1 + kyx * old2;
+    const F kOldY = kxy * old1 + kyy * old2;
     bx = bx - kOldX;
     by = by - kOldY;
     const F zero(0.0f);
 
     // Both push: x = -(M b).
-    const F bothX = -(k.mxx * bx + k.myx * by);
-    const F bothY = -(k.mxy * bx + k.myy * by);
+    const F bothX = -(k.get(T::kMxx) * bx + k.get(T::kMyx) * by);
+    const F bothY = -(k.get(T::kMxy) * bx + k.get(T::kMyy) * by);
     const F bothOk = both(atLeast(bothX, zero), atLeast(bothY, zero));
     // Only the first: x = (-m1 bx, 0), and the second not approaching.
-    const F firstX = (-p1.normalMass) * bx;
-    const F firstOk = both(atLeast(firstX, zero), atLeast(k.kxy * firstX + by, zero));
+    const F firstX = (-k.get(0, T::kNormalMass)) * bx;
+    const F firstOk = both(atLeast(firstX, zero), atLeast(kxy * firstX + by, zero));
     // Only the second: x = (0, -m2 by).
-    const F secondY = (-p2.normalMass) * by;
-    const F secondOk = both(atLeast(secondY, zero), atLeast(k.kyx * secondY + bx, zero));
+    const F secondY = (-k.get(1, T::kNormalMass)) * by;
+    const F secondOk = both(atLeast(secondY, zero), atLeast(kyx * secondY + bx, zero));
     // Neither: both separating.
     const F noneOk = both(atLeast(bx, zero), atLeast(by, zero));
 
@@ -220,19 +198,25 @@ void solveNormalBlock(ContactLanes<F>& k, Velocities<F>& A, Velocities<F>& B, F 
     const F found = both(lanes, either(either(bothOk, firstOk), either(secondOk, noneOk)));
 
     const F d1 = x1 - old1, d2 = x2 - old2;
-    const F P1x = d1 * k.nx, P1y = d1 * k.ny;
-    const F P2x = d2 * k.nx, P2y = d2 * k.ny;
+    const F P1x = d1 * nx, P1y = d1 * ny;
+    const F P2x = d2 * nx, P2y = d2 * ny;
     const F Px = P1x + P2x, Py = P1y + P2y;
-    A.vx = select(found, A.vx - k.mA * Px, A.vx);
-    A.vy = select(found, A.vy - k.mA * Py, A.vy);
+    const F mA = k.get(T::kMassA), iA = k.get(T::kInertiaA);
+    const F mB = k.get(T::kMassB), iB = k.get(T::kInertiaB);
+    A.vx = select(found, A.vx - mA * Px, A.vx);
+    A.vy = select(found, A.vy - mA * Py, A.vy);
     A.w = select(found,
-                 A.w - k.iA * ((p1.rAx * P1y - p1.rAy * P1x) + (p2.rAx * P2y - p2.rAy * P2x)), A.w);
-    B.vx = select(found, B.vx + k.mB * Px, B.vx);
-    B.vy = select(found, B.vy + k.mB * Py, B.vy);
+                 A.w - iA * ((k.get(0, T::kAnchorAx) * P1y - k.get(0, T::kAnchorAy) * P1x) +
+                             (k.get(1, T::kAnchorAx) * P2y - k.get(1, T::kAnchorAy) * P2x)),
+                 A.w);
+    B.vx = select(found, B.vx + mB * Px, B.vx);
+    B.vy = select(found, B.vy + mB * Py, B.vy);
     B.w = select(found,
-                 B.w + k.iB * ((p1.rBx * P1y - p1.rBy * P1x) + (p2.rBx * P2y - p2.rBy * P2x)), B.w);
-    p1.normalImpulse = select(found, x1, old1);
-    p2.normalImpulse = select(found, x2, old2);
+                 B.w + iB * ((k.get(0, T::kAnchorBx) * P1y - k.get(0, T::kAnchorBy) * P1x) +
+                             (k.get(1, T::kAnchorBx) * P2y - k.get(1, T::kAnchorBy) * P2x)),
+                 B.w);
+    k.put(0, T::kNormalImpulse, select(found, x1, old1));
+    k.put(1, T::kNormalImpulse, select(found, x2, old2));
 }
 
 // One sweep's work on a tile's contacts: friction, then the normal solve each contact would
@@ -243,7 +227,7 @@ void solveTile(ContactTile& tile, SolverVelocity* velocities, bool soft,
     static_assert(F::kWidth == kContactLanes, "a tile is solved in one go");
     const std::int32_t* indexA = tile.indexA;
     const std::int32_t* indexB = tile.indexB;
-    ContactLanes<F> c = loadContacts<F>(tile);
+    const TileLanes<F, ContactTile> c(tile);
     Velocities<F> A = loadVelocities<F>(velocities, indexA);
     Velocities<F> B = loadVelocities<F>(velocities, indexB);
     solveFriction(c, A, B);
@@ -256,7 +240,6 @@ void solveTile(ContactTile& tile, SolverVelocity* velocities, bool soft,
         if (any(c.has2)) solveNormalBlock(c, A, B, c.has2);
         solveNormalPoints<false>(c, A, B, butNot(all, c.has2), softness);
     }
-    storeImpulses(c, tile);
     // No two lanes share a solver slot (a colour's contacts each have their own copy of a body
     // that never moves), so the order of these writes does not matter.
     storeVelocities(A, velocities, indexA, tile.contactCount);
@@ -266,17 +249,20 @@ void solveTile(ContactTile& tile, SolverVelocity* velocities, bool soft,
 // Last step's impulses applied to a tile's contacts (ContactSolver::warmStart).
 template <typename F>
 void warmStartTile(const ContactTile& tile, SolverVelocity* velocities) {
-    const ContactLanes<F> c = loadContacts<F>(tile);
+    using T = ContactTile;
+    const TileLanes<F, const ContactTile> c(tile);
     Velocities<F> A = loadVelocities<F>(velocities, tile.indexA);
     Velocities<F> B = loadVelocities<F>(velocities, tile.indexB);
-    const F tx = c.ny, ty = -c.nx;
+    const F nx = c.get(T::kNormalX), ny = c.get(T::kNormalY);
+    const F tx = ny, ty = -nx;
     for (int j = 0; j < 2; ++j) {
-        const PointLanes<F>& p = c.p[j];
-        const F active = j == 0 ? c.has1 : c.has2;
+        const F active = c.has(j);
         if (!any(active)) continue;
-        const F Px = p.normalImpulse * c.nx + p.tangentImpulse * tx;
-        const F Py = p.normalImpulse * c.ny + p.tangentImpulse * ty;
-        apply(A, B, c, p, Px, Py, active);
+        const F normalImpulse = c.get(j, T::kNormalImpulse);
+        const F tangentImpulse = c.get(j, T::kTangentImpulse);
+        const F Px = normalImpulse * nx + tangentImpulse * tx;
+        const F Py = normalImpulse * ny + tangentImpulse * ty;
+        apply(A, B, c, j, Px, Py, active);
     }
     storeVelocities(A, velocities, tile.indexA, tile.contactCount);
     storeVelocities(B, velocities, tile.indexB, tile.contactCount);
