@@ -10,10 +10,6 @@ namespace pivot {
 
 namespace {
 
-// Below this length a vector has no usable direction: the reference engine's threshold, kept so
-// that both engines fall back in exactly the same nearly-coincident cases.
-constexpr float kDirectionEpsilon = std::numeric_limits<float>::epsilon();
-
 // The unit vector along v, or v itself when v is too short to give a direction (the caller
 // then gets a tiny non-unit normal rather than a division blow-up, as in the reference).
 Vec2 normalizedOrUnchanged(Vec2 v) {

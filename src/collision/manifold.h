@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 
 #include "collision/geometry.h"
 #include "pivot/math.h"
@@ -90,6 +91,10 @@ void collideSegmentAndCapsule(Manifold& manifold, const EdgeSegment& segmentA, c
                               const ConvexPolygon& capsuleB, const Transform& xfB);
 void collideSegmentAndPolygon(Manifold& manifold, const EdgeSegment& segmentA, const Transform& xfA,
                               const ConvexPolygon& polygonB, const Transform& xfB);
+
+/// Below this length a vector has no usable direction: the reference engine's threshold, kept
+/// so that both engines fall back in exactly the same nearly-coincident cases.
+constexpr float kDirectionEpsilon = std::numeric_limits<float>::epsilon();
 
 WorldManifold computeWorldManifold(const Manifold& manifold, const Transform& xfA, float radiusA,
                                    const Transform& xfB, float radiusB);

@@ -11,10 +11,6 @@ namespace pivot {
 
 namespace {
 
-// Above this ratio of a two-point manifold's K entries the block solve is numerically unsafe
-// (the two points are nearly the same constraint) and only the first point is kept.
-constexpr float kMaxBlockConditionNumber = 1000.0f;
-
 // The body frame of a solver pose, q being Rot(p.a).
 Transform solverTransform(const SolverPose& p, Rot q, Vec2 localCenter) {
     Transform xf;
@@ -310,120 +306,142 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
                             const SlotPool<Contact>& pool, const SolverBodyInputs* inputs,
                             const StepContext& step, const SolverPose* positions,
                             const Rot* rotations) {
+    const PrepareInputs in{ids, pairs, pool, inputs, step, positions, rotations};
     // A tiled contact's constraint is assembled here and written field by field into its tile;
     // an untiled one's is built in place (a copy of one assembled here would read back, in wide
     // loads, fields just written narrow, which stalls each store-to-load forward). Every field
     // is written for every contact, so nothing is cleared first (clearing a constraint cost as
     // much as a tenth of this loop).
     ContactVelocityConstraint assembled;
-    for (int k = range.begin; k < range.end; ++k) {
+    for (int k = range.begin; k < range.end;) {
+        // A whole tile at once where the range holds one (contact_prepare_wide.cpp).
+        if (tiles_.isTileStart(k) && k + tiles_.tileAt(k).contactCount <= range.end &&
+            prepareTile(k, in)) {
+            k += tiles_.tileAt(k).contactCount;
+            continue;
+        }
         if (k + kContactsAhead < range.end) prefetchContact(pool[ids[k + kContactsAhead]]);
-        const std::int32_t contactIndex = ids[k];
-        const Contact& contact = pool[contactIndex];
-        const Manifold& manifold = contact.manifold;
-        const SolverBodyInputs& bodyA = inputs[pairs[k][0]];
-        const SolverBodyInputs& bodyB = inputs[pairs[k][1]];
-
-        const int slot = tiles_.slot(k);
-        ContactVelocityConstraint& c = slot >= 0 ? assembled : velocity_[k];
-        c.indexA = pairs[k][0];
-        c.indexB = pairs[k][1];
-        c.mA = bodyA.invMass;
-        c.mB = bodyB.invMass;
-        c.iA = bodyA.invInertia;
-        c.iB = bodyB.invInertia;
-        c.friction = contact.friction;
-        c.pointCount = manifold.pointCount;
-        c.K = Mat22{};
-        c.normalMass = Mat22{};
-        ContactRecord& record = records_[k];
-        record = ContactRecord{contactIndex, {0.0f, 0.0f}};
-
-        // Only NGS contacts keep one.
-        if (ngs_) {
-            ContactPositionConstraint& pc = position_[k];
-            pc.indexA = c.indexA;
-            pc.indexB = c.indexB;
-            pc.mA = c.mA;
-            pc.mB = c.mB;
-            pc.iA = c.iA;
-            pc.iB = c.iB;
-            pc.localCenterA = bodyA.localCenter;
-            pc.localCenterB = bodyB.localCenter;
-            pc.localNormal = manifold.localNormal;
-            pc.localPoint = manifold.localPoint;
-            pc.type = manifold.type;
-            pc.pointCount = manifold.pointCount;
-            pc.radiusA = contact.radiusA;
-            pc.radiusB = contact.radiusB;
-            for (int j = 0; j < manifold.pointCount; ++j) {
-                pc.localPoints[j] = manifold.points[j].localPoint;
-            }
-        }
-
-        const SolverPose& posA = positions[c.indexA];
-        const SolverPose& posB = positions[c.indexB];
-        const SolverVelocity& startA = bodyA.start;
-        const SolverVelocity& startB = bodyB.start;
-        const Rot qA = rotations ? rotations[c.indexA] : Rot(posA.a);
-        const Rot qB = rotations ? rotations[c.indexB] : Rot(posB.a);
-        WorldManifold wm = computeWorldManifold(
-            manifold, solverTransform(posA, qA, bodyA.localCenter), contact.radiusA,
-            solverTransform(posB, qB, bodyB.localCenter), contact.radiusB);
-        c.normal = wm.normal;
-        const Vec2 tangent = tangentOf(c.normal);
-
-        for (int j = 0; j < 2; ++j) {
-            ContactVelocityPoint& p = c.points[j];
-            if (j >= manifold.pointCount) {
-                p = ContactVelocityPoint{};  // the tile's lanes read it (writeTile)
-                continue;
-            }
-            const ManifoldPoint& mp = manifold.points[j];
-            p.normalImpulse = step.warmStarting ? step.dtRatio * mp.normalImpulse : 0.0f;
-            p.tangentImpulse = step.warmStarting ? step.dtRatio * mp.tangentImpulse : 0.0f;
-            p.rA = wm.points[j] - posA.c;
-            p.rB = wm.points[j] - posB.c;
-            p.normalMass = effectiveMass(c, p.rA, p.rB, c.normal);
-            p.tangentMass = effectiveMass(c, p.rA, p.rB, tangent);
-
-            // Bounce only off fast approaches, so resting contacts stay inelastic. The approach
-            // speed is the one the bodies collided with, at the start of the step: this step's
-            // gravity acts after the bounce. (Measuring after it would return the ball about
-            // one step's travel higher than it fell, v * h, 5% for a 2 m drop at 60 Hz.)
-            float vRel = dot(c.normal, relativeVelocity(startA, startB, p.rA, p.rB));
-            record.approachSpeeds[j] = -vRel;
-            p.velocityBias = vRel < -step.restitutionThreshold ? -contact.restitution * vRel : 0.0f;
-            p.softTarget = 0.0f;
-            p.baseSeparation = 0.0f;
-            if (baumgarte_) {
-                float push = -step.contactBiasFactor * step.invDt *
-                             std::min(0.0f, wm.separations[j] + kLinearSlop);
-                p.velocityBias = std::max(p.velocityBias, push);
-            } else if (soft_) {
-                p.softTarget = softTarget(wm.separations[j]);
-                p.baseSeparation = wm.separations[j] - dot(p.rB - p.rA, c.normal);
-            }
-        }
-
-        // Soft contacts solve their points one by one, as Box2D v3 does.
-        if (c.pointCount == 2 && !soft_) {
-            const ContactVelocityPoint& p1 = c.points[0];
-            const ContactVelocityPoint& p2 = c.points[1];
-            float rn1A = cross(p1.rA, c.normal), rn1B = cross(p1.rB, c.normal);
-            float rn2A = cross(p2.rA, c.normal), rn2B = cross(p2.rB, c.normal);
-            float k11 = c.mA + c.mB + c.iA * rn1A * rn1A + c.iB * rn1B * rn1B;
-            float k22 = c.mA + c.mB + c.iA * rn2A * rn2A + c.iB * rn2B * rn2B;
-            float k12 = c.mA + c.mB + c.iA * rn1A * rn2A + c.iB * rn1B * rn2B;
-            if (k11 * k11 < kMaxBlockConditionNumber * (k11 * k22 - k12 * k12)) {
-                c.K = {{k11, k12}, {k12, k22}};
-                c.normalMass = c.K.inverse();
-            } else {
-                c.pointCount = 1;
-            }
-        }
-        if (slot >= 0) writeTile(tiles_.tileOf(slot), slot % kContactLanes, c);
+        prepareOne(k, in, assembled);
+        ++k;
     }
+}
+
+void ContactSolver::writePositionConstraint(int k, const PrepareInputs& in) {
+    const Contact& contact = in.pool[in.ids[k]];
+    const Manifold& manifold = contact.manifold;
+    const SolverBodyInputs& bodyA = in.inputs[in.pairs[k][0]];
+    const SolverBodyInputs& bodyB = in.inputs[in.pairs[k][1]];
+    ContactPositionConstraint& pc = position_[k];
+    pc.indexA = in.pairs[k][0];
+    pc.indexB = in.pairs[k][1];
+    pc.mA = bodyA.invMass;
+    pc.mB = bodyB.invMass;
+    pc.iA = bodyA.invInertia;
+    pc.iB = bodyB.invInertia;
+    pc.localCenterA = bodyA.localCenter;
+    pc.localCenterB = bodyB.localCenter;
+    pc.localNormal = manifold.localNormal;
+    pc.localPoint = manifold.localPoint;
+    pc.type = manifold.type;
+    pc.pointCount = manifold.pointCount;
+    pc.radiusA = contact.radiusA;
+    pc.radiusB = contact.radiusB;
+    for (int j = 0; j < manifold.pointCount; ++j) {
+        pc.localPoints[j] = manifold.points[j].localPoint;
+    }
+}
+
+void ContactSolver::prepareOne(int k, const PrepareInputs& in,
+                               ContactVelocityConstraint& assembled) {
+    const BodyPair* pairs = in.pairs;
+    const StepContext& step = in.step;
+    const SolverPose* positions = in.positions;
+    const Rot* rotations = in.rotations;
+    const std::int32_t contactIndex = in.ids[k];
+    const Contact& contact = in.pool[contactIndex];
+    const Manifold& manifold = contact.manifold;
+    const SolverBodyInputs& bodyA = in.inputs[pairs[k][0]];
+    const SolverBodyInputs& bodyB = in.inputs[pairs[k][1]];
+
+    const int slot = tiles_.slot(k);
+    ContactVelocityConstraint& c = slot >= 0 ? assembled : velocity_[k];
+    c.indexA = pairs[k][0];
+    c.indexB = pairs[k][1];
+    c.mA = bodyA.invMass;
+    c.mB = bodyB.invMass;
+    c.iA = bodyA.invInertia;
+    c.iB = bodyB.invInertia;
+    c.friction = contact.friction;
+    c.pointCount = manifold.pointCount;
+    c.K = Mat22{};
+    c.normalMass = Mat22{};
+    ContactRecord& record = records_[k];
+    record = ContactRecord{contactIndex, {0.0f, 0.0f}};
+
+    if (ngs_) writePositionConstraint(k, in);  // only NGS contacts keep one
+
+    const SolverPose& posA = positions[c.indexA];
+    const SolverPose& posB = positions[c.indexB];
+    const SolverVelocity& startA = bodyA.start;
+    const SolverVelocity& startB = bodyB.start;
+    const Rot qA = rotations ? rotations[c.indexA] : Rot(posA.a);
+    const Rot qB = rotations ? rotations[c.indexB] : Rot(posB.a);
+    WorldManifold wm = computeWorldManifold(
+        manifold, solverTransform(posA, qA, bodyA.localCenter), contact.radiusA,
+        solverTransform(posB, qB, bodyB.localCenter), contact.radiusB);
+    c.normal = wm.normal;
+    const Vec2 tangent = tangentOf(c.normal);
+
+    for (int j = 0; j < 2; ++j) {
+        ContactVelocityPoint& p = c.points[j];
+        if (j >= manifold.pointCount) {
+            p = ContactVelocityPoint{};  // the tile's lanes read it (writeTile)
+            continue;
+        }
+        const ManifoldPoint& mp = manifold.points[j];
+        p.normalImpulse = step.warmStarting ? step.dtRatio * mp.normalImpulse : 0.0f;
+        p.tangentImpulse = step.warmStarting ? step.dtRatio * mp.tangentImpulse : 0.0f;
+        p.rA = wm.points[j] - posA.c;
+        p.rB = wm.points[j] - posB.c;
+        p.normalMass = effectiveMass(c, p.rA, p.rB, c.normal);
+        p.tangentMass = effectiveMass(c, p.rA, p.rB, tangent);
+
+        // Bounce only off fast approaches, so resting contacts stay inelastic. The approach
+        // speed is the one the bodies collided with, at the start of the step: this step's
+        // gravity acts after the bounce. (Measuring after it would return the ball about
+        // one step's travel higher than it fell, v * h, 5% for a 2 m drop at 60 Hz.)
+        float vRel = dot(c.normal, relativeVelocity(startA, startB, p.rA, p.rB));
+        record.approachSpeeds[j] = -vRel;
+        p.velocityBias = vRel < -step.restitutionThreshold ? -contact.restitution * vRel : 0.0f;
+        p.softTarget = 0.0f;
+        p.baseSeparation = 0.0f;
+        if (baumgarte_) {
+            float push = -step.contactBiasFactor * step.invDt *
+                         std::min(0.0f, wm.separations[j] + kLinearSlop);
+            p.velocityBias = std::max(p.velocityBias, push);
+        } else if (soft_) {
+            p.softTarget = softTarget(wm.separations[j]);
+            p.baseSeparation = wm.separations[j] - dot(p.rB - p.rA, c.normal);
+        }
+    }
+
+    // Soft contacts solve their points one by one, as Box2D v3 does.
+    if (c.pointCount == 2 && !soft_) {
+        const ContactVelocityPoint& p1 = c.points[0];
+        const ContactVelocityPoint& p2 = c.points[1];
+        float rn1A = cross(p1.rA, c.normal), rn1B = cross(p1.rB, c.normal);
+        float rn2A = cross(p2.rA, c.normal), rn2B = cross(p2.rB, c.normal);
+        float k11 = c.mA + c.mB + c.iA * rn1A * rn1A + c.iB * rn1B * rn1B;
+        float k22 = c.mA + c.mB + c.iA * rn2A * rn2A + c.iB * rn2B * rn2B;
+        float k12 = c.mA + c.mB + c.iA * rn1A * rn2A + c.iB * rn1B * rn2B;
+        if (k11 * k11 < kMaxBlockConditionNumber * (k11 * k22 - k12 * k12)) {
+            c.K = {{k11, k12}, {k12, k22}};
+            c.normalMass = c.K.inverse();
+        } else {
+            c.pointCount = 1;
+        }
+    }
+    if (slot >= 0) writeTile(tiles_.tileOf(slot), slot % kContactLanes, c);
 }
 
 void ContactSolver::updateSeparations(IndexRange range, const SolverMotion* motion) {

@@ -42,6 +42,10 @@
 
 namespace pivot {
 
+// Above this ratio of a two-point manifold's K entries the block solve is numerically unsafe
+// (the two points are nearly the same constraint) and only the first point is kept.
+constexpr float kMaxBlockConditionNumber = 1000.0f;
+
 struct ContactVelocityPoint {
     Vec2 rA;
     Vec2 rB;
@@ -173,6 +177,25 @@ public:
     }
 
 private:
+    /// prepare's arguments, as its helpers take them.
+    struct PrepareInputs {
+        const std::int32_t* ids;
+        const BodyPair* pairs;
+        const SlotPool<Contact>& pool;
+        const SolverBodyInputs* inputs;
+        const StepContext& step;
+        const SolverPose* positions;
+        const Rot* rotations;  // may be null
+    };
+    /// prepare for contact k alone; a tiled contact's constraint is assembled in `assembled`
+    /// (scratch) and written into its lane.
+    void prepareOne(int k, const PrepareInputs& in, ContactVelocityConstraint& assembled);
+    /// prepare for the whole tile that starts at contact k, its lanes side by side, to the bits
+    /// prepareOne would give (contact_prepare_wide.cpp). False, having written nothing, where a
+    /// lane needs what only prepareOne does (a block matrix whose products overflow).
+    bool prepareTile(int k, const PrepareInputs& in);
+    /// Contact k's NGS position constraint.
+    void writePositionConstraint(int k, const PrepareInputs& in);
     /// updateSeparations for the tile that starts at contact k.
     void updateTileSeparations(int k, const SolverMotion* motion);
     /// Likewise for the warm start.
