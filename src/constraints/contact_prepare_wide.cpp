@@ -108,29 +108,6 @@ F finiteL(F x) {
     return lessThan(x - x, F(1.0f));
 }
 
-// The NGS position tile of the contacts gathered in `g` (writePositionConstraint's lanes, a
-// field at a time); empty lanes get no points and lane 0's bodies.
-void writePositionTile(PositionTile& tile, const Gathered& g, int count, const BodyPair* pairs) {
-    using P = PositionTile;
-    const Gathered::Body& a = g.body[0];
-    const Gathered::Body& b = g.body[1];
-    const float* rows[P::kFields] = {
-        a.invMass, b.invMass, a.invInertia, b.invInertia, g.radiusA,   g.radiusB,
-        a.centerX, a.centerY, b.centerX,    b.centerY,    g.normalX,   g.normalY,
-        g.pointX,  g.pointY,  g.localX[0],  g.localY[0],  g.localX[1], g.localY[1]};
-    for (int f = 0; f < P::kFields; ++f) store(tile.values[f], F::load(rows[f]));
-    for (int lane = 0; lane < W; ++lane) {
-        const bool used = lane < count;
-        const ManifoldType type = g.circles[lane] ? ManifoldType::Circles
-                                  : g.faceA[lane] ? ManifoldType::FaceA
-                                                  : ManifoldType::FaceB;
-        tile.type[lane] = static_cast<std::int32_t>(type);
-        tile.pointCount[lane] = used ? g.pointCount[lane] : 0;
-        tile.indexA[lane] = pairs[used ? lane : 0][0];
-        tile.indexB[lane] = pairs[used ? lane : 0][1];
-    }
-}
-
 }  // namespace
 
 bool ContactSolver::prepareTile(int k, const PrepareInputs& in) {
@@ -371,9 +348,8 @@ bool ContactSolver::prepareTile(int k, const PrepareInputs& in) {
         for (int j = 0; j < 2; ++j) {
             record.approachSpeeds[j] = j < g.pointCount[lane] ? approach[j][lane] : 0.0f;
         }
-        if (ngs_) writePositionConstraint(at, in, false);
+        if (ngs_) writePositionConstraint(at, in);
     }
-    if (ngs_) writePositionTile(tiles_.positionTileOf(tiles_.slot(k)), g, count, in.pairs + k);
     return true;
 }
 

@@ -298,7 +298,7 @@ void ContactSolver::reset(int count, const StepContext& step, const std::vector<
     const std::size_t size = static_cast<std::size_t>(count);
     growBuffer(records_, size);
     growBuffer(velocity_, size);
-    tiles_.layOut(count, batches, wideSolving(), ngs_);
+    tiles_.layOut(count, batches, wideSolving());
     if (ngs_) growBuffer(position_, size);
 }
 
@@ -326,7 +326,7 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
     }
 }
 
-void ContactSolver::writePositionConstraint(int k, const PrepareInputs& in, bool tileLane) {
+void ContactSolver::writePositionConstraint(int k, const PrepareInputs& in) {
     const Contact& contact = in.pool[in.ids[k]];
     const Manifold& manifold = contact.manifold;
     const SolverBodyInputs& bodyA = in.inputs[in.pairs[k][0]];
@@ -348,41 +348,6 @@ void ContactSolver::writePositionConstraint(int k, const PrepareInputs& in, bool
     pc.radiusB = contact.radiusB;
     for (int j = 0; j < manifold.pointCount; ++j) {
         pc.localPoints[j] = manifold.points[j].localPoint;
-    }
-    const int slot = tiles_.slot(k);
-    if (!tileLane || slot < 0 || !tiles_.hasPositions()) return;
-    // Its lane of the position tile (a missing point's fields are read but never used).
-    using P = PositionTile;
-    PositionTile& tile = tiles_.positionTileOf(slot);
-    const int lane = slot % kContactLanes;
-    const float values[P::kFields] = {pc.mA,
-                                      pc.mB,
-                                      pc.iA,
-                                      pc.iB,
-                                      pc.radiusA,
-                                      pc.radiusB,
-                                      pc.localCenterA.x,
-                                      pc.localCenterA.y,
-                                      pc.localCenterB.x,
-                                      pc.localCenterB.y,
-                                      pc.localNormal.x,
-                                      pc.localNormal.y,
-                                      pc.localPoint.x,
-                                      pc.localPoint.y,
-                                      manifold.points[0].localPoint.x,
-                                      manifold.points[0].localPoint.y,
-                                      manifold.points[1].localPoint.x,
-                                      manifold.points[1].localPoint.y};
-    for (int f = 0; f < P::kFields; ++f) tile.values[f][lane] = values[f];
-    tile.type[lane] = static_cast<std::int32_t>(pc.type);
-    tile.pointCount[lane] = pc.pointCount;
-    tile.indexA[lane] = pc.indexA;
-    tile.indexB[lane] = pc.indexB;
-    if (lane == 0) {  // the empty lanes' bodies, as writeTile's
-        for (int empty = tiles_.tileOf(slot).contactCount; empty < kContactLanes; ++empty) {
-            tile.indexA[empty] = pc.indexA;
-            tile.indexB[empty] = pc.indexB;
-        }
     }
 }
 

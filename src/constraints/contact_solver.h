@@ -194,9 +194,8 @@ private:
     /// prepareOne would give (contact_prepare_wide.cpp). False, having written nothing, where a
     /// lane needs what only prepareOne does (a block matrix whose products overflow).
     bool prepareTile(int k, const PrepareInputs& in);
-    /// Contact k's NGS position constraint, and with `tileLane` its lane of its position tile
-    /// (if it has one).
-    void writePositionConstraint(int k, const PrepareInputs& in, bool tileLane = true);
+    /// Contact k's NGS position constraint.
+    void writePositionConstraint(int k, const PrepareInputs& in);
     /// updateSeparations for the tile that starts at contact k.
     void updateTileSeparations(int k, const SolverMotion* motion);
     /// Likewise for the warm start.

@@ -358,119 +358,57 @@ PoseLanes<F> loadPoses(SolverPose* const pose[]) {
 }
 
 template <typename F>
-void storePoses(const PoseLanes<F>& in, SolverPose* const pose[], int count) {
+void storePoses(const PoseLanes<F>& in, SolverPose* const pose[]) {
     float* rows[F::kWidth];
     for (int lane = 0; lane < F::kWidth; ++lane) rows[lane] = &pose[lane]->c.x;
-    storeColumns(rows, in.cx, in.cy, in.a, count);
+    storeColumns(rows, in.cx, in.cy, in.a, F::kWidth);
 }
 
-// Where positionLanes reads a run's constraints: F::kWidth position constraints, gathered lane
-// by lane (RecordLanes), or a position tile, a load per field (TileLanes); the same values.
+// One NGS sweep over contacts c[0 .. F::kWidth) whose bodies all move
+// (ContactSolver::positionSweep); writes each lane's separations, point by point, into
+// separations[point][lane].
 template <typename F>
-struct RecordLanes {
-    using P = PositionTile;
-    const ContactPositionConstraint* c;
-
-    int count() const { return F::kWidth; }
-    std::int32_t indexA(int lane) const { return c[lane].indexA; }
-    std::int32_t indexB(int lane) const { return c[lane].indexB; }
-    F get(P::Field f) const {
-        return F::gather([&](int i) { return fieldOf(c[i], f); });
-    }
-    F isType(ManifoldType type) const {
-        return maskEach<F>([this, type](int i) { return c[i].type == type; });
-    }
-    F hasPoint(int j) const {
-        return maskEach<F>([this, j](int i) { return c[i].pointCount > j; });
-    }
-    static float fieldOf(const ContactPositionConstraint& x, P::Field f) {
-        switch (f) {
-            case P::kMassA: return x.mA;
-            case P::kMassB: return x.mB;
-            case P::kInertiaA: return x.iA;
-            case P::kInertiaB: return x.iB;
-            case P::kRadiusA: return x.radiusA;
-            case P::kRadiusB: return x.radiusB;
-            case P::kCenterAx: return x.localCenterA.x;
-            case P::kCenterAy: return x.localCenterA.y;
-            case P::kCenterBx: return x.localCenterB.x;
-            case P::kCenterBy: return x.localCenterB.y;
-            case P::kNormalX: return x.localNormal.x;
-            case P::kNormalY: return x.localNormal.y;
-            case P::kPointX: return x.localPoint.x;
-            case P::kPointY: return x.localPoint.y;
-            case P::kLocal0x: return x.localPoints[0].x;
-            case P::kLocal0y: return x.localPoints[0].y;
-            case P::kLocal1x: return x.localPoints[1].x;
-            case P::kLocal1y: return x.localPoints[1].y;
-            case P::kFields: break;
-        }
-        return 0.0f;
-    }
-};
-
-template <typename F>
-struct PositionTileLanes {
-    const PositionTile& t;
-    int contacts;
-
-    int count() const { return contacts; }
-    std::int32_t indexA(int lane) const { return t.indexA[lane]; }
-    std::int32_t indexB(int lane) const { return t.indexB[lane]; }
-    F get(PositionTile::Field f) const { return F::load(t.lanes(f)); }
-    F isType(ManifoldType type) const {
-        // Circles 0, FaceA 1, FaceB 2 (an empty lane's 0 is never solved: it has no points)
-        const F aboveCircles = F::above(t.type, 0), aboveFaceA = F::above(t.type, 1);
-        if (type == ManifoldType::Circles) return butNot(F::allLanes(), aboveCircles);
-        if (type == ManifoldType::FaceA) return butNot(aboveCircles, aboveFaceA);
-        return aboveFaceA;
-    }
-    F hasPoint(int j) const { return F::above(t.pointCount, j); }
-};
-static_assert(static_cast<int>(ManifoldType::Circles) == 0 &&
-                  static_cast<int>(ManifoldType::FaceA) == 1 &&
-                  static_cast<int>(ManifoldType::FaceB) == 2,
-              "PositionTileLanes::isType");
-
-// One NGS sweep over a run of contacts (`source`: F::kWidth of them, or a position tile's) whose
-// bodies all move (ContactSolver::positionSweep); writes each lane's separations, point by
-// point, into separations[point][lane].
-template <typename F, typename Source>
-void positionLanes(const Source& c, SolverPose* positions, float bias,
+void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, float bias,
                    float separations[2][F::kWidth]) {
     constexpr int W = F::kWidth;
-    using P = PositionTile;
     SolverPose* poseA[W];
     SolverPose* poseB[W];
     for (int lane = 0; lane < W; ++lane) {
-        poseA[lane] = &positions[c.indexA(lane)];
-        poseB[lane] = &positions[c.indexB(lane)];
+        poseA[lane] = &positions[c[lane].indexA];
+        poseB[lane] = &positions[c[lane].indexB];
     }
+    auto field = [c](auto get) { return F::gather([&](int i) { return get(c[i]); }); };
+    using P = const ContactPositionConstraint&;
     PoseLanes<F> A = loadPoses<F>(poseA);
     PoseLanes<F> B = loadPoses<F>(poseB);
-    const F mA = c.get(P::kMassA);
-    const F mB = c.get(P::kMassB);
-    const F iA = c.get(P::kInertiaA);
-    const F iB = c.get(P::kInertiaB);
-    const F radiusA = c.get(P::kRadiusA);
-    const F radiusB = c.get(P::kRadiusB);
-    const VecLanes<F> centerA{c.get(P::kCenterAx), c.get(P::kCenterAy)};
-    const VecLanes<F> centerB{c.get(P::kCenterBx), c.get(P::kCenterBy)};
-    const VecLanes<F> localNormal{c.get(P::kNormalX), c.get(P::kNormalY)};
-    const VecLanes<F> localPoint{c.get(P::kPointX), c.get(P::kPointY)};
+    const F mA = field([](P x) { return x.mA; });
+    const F mB = field([](P x) { return x.mB; });
+    const F iA = field([](P x) { return x.iA; });
+    const F iB = field([](P x) { return x.iB; });
+    const F radiusA = field([](P x) { return x.radiusA; });
+    const F radiusB = field([](P x) { return x.radiusB; });
+    const VecLanes<F> centerA{field([](P x) { return x.localCenterA.x; }),
+                              field([](P x) { return x.localCenterA.y; })};
+    const VecLanes<F> centerB{field([](P x) { return x.localCenterB.x; }),
+                              field([](P x) { return x.localCenterB.y; })};
+    const VecLanes<F> localNormal{field([](P x) { return x.localNormal.x; }),
+                                  field([](P x) { return x.localNormal.y; })};
+    const VecLanes<F> localPoint{field([](P x) { return x.localPoint.x; }),
+                                 field([](P x) { return x.localPoint.y; })};
     // A circles manifold's centre on B (its only point, whichever point is being solved).
-    const VecLanes<F> first{c.get(P::kLocal0x), c.get(P::kLocal0y)};
-    const F circles = c.isType(ManifoldType::Circles);
-    const F faceA = c.isType(ManifoldType::FaceA);
-    const F faceB = c.isType(ManifoldType::FaceB);
+    const VecLanes<F> first{field([](P x) { return x.localPoints[0].x; }),
+                            field([](P x) { return x.localPoints[0].y; })};
+    const F circles = maskEach<F>([c](int i) { return c[i].type == ManifoldType::Circles; });
+    const F faceA = maskEach<F>([c](int i) { return c[i].type == ManifoldType::FaceA; });
+    const F faceB = maskEach<F>([c](int i) { return c[i].type == ManifoldType::FaceB; });
     const bool anyCircles = any(circles), anyFaceA = any(faceA), anyFaceB = any(faceB);
     const F zero(0.0f), one(1.0f), half(0.5f);
 
     for (int j = 0; j < 2; ++j) {
-        const F active = c.hasPoint(j);
+        const F active = maskEach<F>([c, j](int i) { return c[i].pointCount > j; });
         if (!any(active)) break;  // no lane has a second point
-        const VecLanes<F> local{c.get(j == 0 ? P::kLocal0x : P::kLocal1x),
-                                c.get(j == 0 ? P::kLocal0y : P::kLocal1y)};
+        const VecLanes<F> local{field([j](P x) { return x.localPoints[j].x; }),
+                                field([j](P x) { return x.localPoints[j].y; })};
         // solverTransform of each body: xf.p = c - rotate(q, localCenter).
         const RotLanes<F> qA = rotations(A.a), qB = rotations(B.a);
         const VecLanes<F> turnedA = rotateLanes(qA, centerA), turnedB = rotateLanes(qB, centerB);
@@ -533,9 +471,8 @@ void positionLanes(const Source& c, SolverPose* positions, float bias,
         B.cy = select(active, B.cy + mB * Py, B.cy);
         B.a = select(active, B.a + iB * (rB.x * Py - rB.y * Px), B.a);
     }
-    // An empty lane's bodies are lane 0's: only the run's own lanes are written.
-    storePoses(A, poseA, c.count());
-    storePoses(B, poseB, c.count());
+    storePoses(A, poseA);
+    storePoses(B, poseB);
 }
 
 #if PIVOT_LANES_8
@@ -550,7 +487,7 @@ int positionRun(int k, IndexRange range, const ContactPositionConstraint* constr
     constexpr int W = F::kWidth;
     for (; k + W <= range.end; k += W) {
         float separations[2][W];
-        positionLanes<F>(RecordLanes<F>{constraints + k}, positions, bias, separations);
+        positionLanes<F>(constraints + k, positions, bias, separations);
         // Folded in the order the one-by-one sweep meets them: contact by contact, point by
         // point (minSeparation's NaN rule makes the order matter).
         for (int lane = 0; lane < W; ++lane) {
@@ -610,23 +547,6 @@ int ContactSolver::positionSweepWide(IndexRange range, SolverPose* positions, fl
                                      float& smallest) const {
     int k = range.begin;
     if (!wideEnabled.load(std::memory_order_relaxed)) return k;
-    // The position tiles laid out beside the tiles, as solveWide walks those; then (where the
-    // range starts with none) runs of constraints gathered lane by lane.
-    if (tiles_.hasPositions()) {
-        for (; k < range.end && tiles_.isTileStart(k); k += tiles_.tileAt(k).contactCount) {
-            const int count = tiles_.tileAt(k).contactCount;
-            if (k + count > range.end) break;  // cut by the range's edge
-            float separations[2][kContactLanes];
-            const PositionTileLanes<ContactLanesF> tile{tiles_.positionTileAt(k), count};
-            positionLanes<ContactLanesF>(tile, positions, bias, separations);
-            // Folded as positionRun does.
-            for (int lane = 0; lane < count; ++lane) {
-                for (int j = 0; j < tile.t.pointCount[lane]; ++j) {
-                    smallest = ContactSolver::minSeparation(smallest, separations[j][lane]);
-                }
-            }
-        }
-    }
 #if PIVOT_LANES_8
     k = positionRun<F8>(k, range, position_.data(), positions, bias, smallest);
 #endif

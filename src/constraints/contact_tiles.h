@@ -90,47 +90,11 @@ struct ContactTile {
     std::int32_t contactCount;               // lanes in use, from lane 0
 };
 
-// The NGS position sweeps' constraints of a tile's contacts (contacts under NGS only), laid out
-// beside the velocity tiles, lane for lane: what ContactPositionConstraint holds, a field per row.
-// An empty lane has no points and lane 0's bodies.
-struct PositionTile {
-    enum Field : int {
-        kMassA,
-        kMassB,
-        kInertiaA,
-        kInertiaB,
-        kRadiusA,
-        kRadiusB,
-        kCenterAx,  // the bodies' local centres of mass
-        kCenterAy,
-        kCenterBx,
-        kCenterBy,
-        kNormalX,  // the manifold's localNormal, localPoint and points' localPoint
-        kNormalY,
-        kPointX,
-        kPointY,
-        kLocal0x,
-        kLocal0y,
-        kLocal1x,
-        kLocal1y,
-        kFields
-    };
-    float* lanes(Field f) { return values[f]; }
-    const float* lanes(Field f) const { return values[f]; }
-
-    float values[kFields][kContactLanes];
-    std::int32_t type[kContactLanes];  // ManifoldType
-    std::int32_t indexA[kContactLanes];
-    std::int32_t indexB[kContactLanes];
-    std::int32_t pointCount[kContactLanes];  // 0: empty
-};
-
 class ContactTiles {
 public:
     /// Lays out `count` contacts: tiles for the independent batches (those not `serial`) of
-    /// `batches` (none without batches, or when `enabled` is false), and with `positions` a
-    /// position tile beside each. Reuses the buffers.
-    void layOut(int count, const std::vector<Batch>* batches, bool enabled, bool positions) {
+    /// `batches` (none without batches, or when `enabled` is false). Reuses the buffers.
+    void layOut(int count, const std::vector<Batch>* batches, bool enabled) {
         growBuffer(slot_, static_cast<std::size_t>(count));
         std::fill(slot_.begin(), slot_.begin() + count, -1);
         std::size_t tiles = 0;
@@ -141,8 +105,6 @@ public:
         }
         // Every lane of a tile is written before it is read (by prepare, or cleared below).
         growBuffer(tiles_, tiles);
-        hasPositions_ = positions;
-        if (positions) growBuffer(positionTiles_, tiles);
         if (tiles == 0) return;
         int tile = 0;
         for (const Batch& batch : *batches) {
@@ -155,14 +117,6 @@ public:
                 ContactTile& t = tiles_[tile];
                 t.contactCount = contacts;
                 for (int lane = contacts; lane < kContactLanes; ++lane) clearLane(t, lane);
-                if (positions) {
-                    PositionTile& p = positionTiles_[tile];
-                    for (int lane = contacts; lane < kContactLanes; ++lane) {
-                        for (auto& field : p.values) field[lane] = 0.0f;
-                        p.pointCount[lane] = 0;
-                        p.type[lane] = 0;
-                    }
-                }
             }
         }
     }
@@ -170,7 +124,6 @@ public:
     void reserve(std::size_t count, std::size_t batches) {
         slot_.reserve(count);
         tiles_.reserve(count / kContactLanes + batches);
-        positionTiles_.reserve(count / kContactLanes + batches);
     }
 
     /// Contact k's place in the tiles (tile * kContactLanes + lane), or -1 if it has none.
@@ -182,13 +135,6 @@ public:
     const ContactTile& tileAt(int k) const { return tileOf(slot_[k]); }
     ContactTile& tileOf(int slot) { return tiles_[slot / kContactLanes]; }
     const ContactTile& tileOf(int slot) const { return tiles_[slot / kContactLanes]; }
-    /// Whether position tiles were laid out beside the tiles.
-    bool hasPositions() const { return hasPositions_; }
-    /// The position tile beside tileOf(slot), tileAt(k).
-    PositionTile& positionTileOf(int slot) { return positionTiles_[slot / kContactLanes]; }
-    const PositionTile& positionTileAt(int k) const {
-        return positionTiles_[slot_[k] / kContactLanes];
-    }
 
 private:
     static int tilesOf(const Batch& batch) {
@@ -202,8 +148,6 @@ private:
 
     std::vector<std::int32_t> slot_;
     std::vector<ContactTile> tiles_;
-    std::vector<PositionTile> positionTiles_;  // NGS only (hasPositions_)
-    bool hasPositions_ = false;
 };
 
 }  // namespace pivot
