@@ -108,6 +108,24 @@ F finiteL(F x) {
     return lessThan(x - x, F(1.0f));
 }
 
+// A face manifold's points where `mask` holds, computeWorldManifold's FaceA (onA) or FaceB:
+// the reference face's normal n and plane point, the incident points local[j] in the other
+// body's frame; each point is the midpoint between the two surfaces, its separation measured
+// along n from the reference surface. The sums keep computeWorldManifold's order (A's first).
+template <bool onA>
+void facePoints(F mask, V2 n, V2 planePoint, const FrameL& incident, const V2 local[2],
+                F radiusReference, F radiusIncident, V2 points[2], F separations[2]) {
+    const F half(0.5f);
+    for (int j = 0; j < 2; ++j) {
+        const V2 p = transformL(incident, local[j]);
+        const V2 reference = p + (radiusReference - dotL(p - planePoint, n)) * n;
+        const V2 incidentSurface = p - radiusIncident * n;
+        const V2 sum = onA ? reference + incidentSurface : incidentSurface + reference;
+        points[j] = selectL(mask, half * sum, points[j]);
+        separations[j] = select(mask, dotL(incidentSurface - reference, n), separations[j]);
+    }
+}
+
 }  // namespace
 
 bool ContactSolver::prepareTile(int k, const PrepareInputs& in) {
@@ -203,27 +221,15 @@ bool ContactSolver::prepareTile(int k, const PrepareInputs& in) {
     }
     if (any(faceA)) {
         const V2 n = rotateL(xfA.q, localNormal);
-        const V2 planePoint = transformL(xfA, localPoint);
-        for (int j = 0; j < 2; ++j) {
-            const V2 p = transformL(xfB, local[j]);
-            const V2 surfaceA = p + (radiusA - dotL(p - planePoint, n)) * n;
-            const V2 surfaceB = p - radiusB * n;
-            points[j] = selectL(faceA, half * (surfaceA + surfaceB), points[j]);
-            separations[j] = select(faceA, dotL(surfaceB - surfaceA, n), separations[j]);
-        }
+        facePoints<true>(faceA, n, transformL(xfA, localPoint), xfB, local, radiusA, radiusB,
+                         points, separations);
         normal = selectL(faceA, n, normal);
     }
     const F faceB = butNot(butNot(F::allLanes(), circles), faceA);
     if (any(faceB)) {
         const V2 normalB = rotateL(xfB.q, localNormal);
-        const V2 planePoint = transformL(xfB, localPoint);
-        for (int j = 0; j < 2; ++j) {
-            const V2 p = transformL(xfA, local[j]);
-            const V2 surfaceB = p + (radiusB - dotL(p - planePoint, normalB)) * normalB;
-            const V2 surfaceA = p - radiusA * normalB;
-            points[j] = selectL(faceB, half * (surfaceA + surfaceB), points[j]);
-            separations[j] = select(faceB, dotL(surfaceA - surfaceB, normalB), separations[j]);
-        }
+        facePoints<false>(faceB, normalB, transformL(xfB, localPoint), xfA, local, radiusB, radiusA,
+                          points, separations);
         normal = selectL(faceB, {-normalB.x, -normalB.y}, normal);
     }
 
