@@ -118,7 +118,8 @@ public:
     /// from `inputs` (by solver slot); writes no velocity. Restitution measures the approach
     /// speed from the bodies' velocities before this step's forces (`inputs`' start).
     /// `rotations`, if given, holds Rot(positions[i].a) for every slot (computed once per body
-    /// rather than once per contact).
+    /// rather than once per contact). A tile wholly inside the range is built at once
+    /// (prepareTile), the rest one contact at a time, to the same bits.
     void prepare(IndexRange range, const std::int32_t* ids, const BodyPair* pairs,
                  const SlotPool<Contact>& pool, const SolverBodyInputs* inputs,
                  const StepContext& step, const SolverPose* positions,

@@ -203,7 +203,8 @@ void usage(const std::vector<EngineKind>& kinds) {
            "  left out, as Box2D v3's benchmark app does) with ratios: x 2.4.1 = Box2D 2.4.1's\n"
            "  ms / this row's, x v3 = Box2D v3's ms on as many threads / this row's (above 1:\n"
            "  this row is faster). Each engine runs on one thread and, where it can, on\n"
-           "  --workers threads (default: the machine's hardware threads).\n"
+           "  --workers threads (default: the machine's hardware threads). Box2D 2.4.1 takes\n"
+           "  minutes a run on spinner (its continuous collision); --engines leaves it out.\n"
            "  Engines here: "
         << engineNames(kinds)
         << "\n"
