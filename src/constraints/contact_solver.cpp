@@ -307,11 +307,7 @@ void ContactSolver::prepare(IndexRange range, const std::int32_t* ids, const Bod
                             const StepContext& step, const SolverPose* positions,
                             const Rot* rotations) {
     const PrepareInputs in{ids, pairs, pool, inputs, step, positions, rotations};
-    // A tiled contact's constraint is assembled here and written field by field into its tile;
-    // an untiled one's is built in place (a copy of one assembled here would read back, in wide
-    // loads, fields just written narrow, which stalls each store-to-load forward). Every field
-    // is written for every contact, so nothing is cleared first (clearing a constraint cost as
-    // much as a tenth of this loop).
+    // prepareOne's scratch for a tiled contact, out of the loop.
     ContactVelocityConstraint assembled;
     for (int k = range.begin; k < range.end;) {
         // A whole tile at once where the range holds one (contact_prepare_wide.cpp).
@@ -363,6 +359,11 @@ void ContactSolver::prepareOne(int k, const PrepareInputs& in,
     const SolverBodyInputs& bodyA = in.inputs[pairs[k][0]];
     const SolverBodyInputs& bodyB = in.inputs[pairs[k][1]];
 
+    // A tiled contact's constraint is assembled in `assembled` and written field by field into
+    // its tile; an untiled one's is built in place (a copy of one assembled here would read
+    // back, in wide loads, fields just written narrow, which stalls each store-to-load
+    // forward). Every field is written for every contact, so nothing is cleared first
+    // (clearing a constraint cost as much as a tenth of this loop).
     const int slot = tiles_.slot(k);
     ContactVelocityConstraint& c = slot >= 0 ? assembled : velocity_[k];
     c.indexA = pairs[k][0];
