@@ -13,8 +13,9 @@
 // computes both sides and keeps its own: the tile holds the same bits either way
 // (WideContacts tests). Gathering the inputs and the records stay scalar.
 //
-// Measured on large_pyramid (soft step, one thread): prepare with its world manifolds was
-// about 17% of the step's samples, three times Box2D v3's set-up; see docs/performance.md.
+// Measured on large_pyramid (soft step, one thread): the set-up one contact at a time, with
+// its world manifolds, was about 17% of the step's samples, three times Box2D v3's; a tile at
+// a time, about 9% (docs/performance.md).
 #include <cstring>
 
 #include "constraints/contact_solver.h"
