@@ -197,8 +197,9 @@ private:
         bool needed = false;
         SweepReach reach = SweepReach::None;  // its body's sweepReach, for the move in turn
     };
-    std::vector<ShapeMove> shapeMoves_;  // per shape slot, for synchronizeSolvedBodies
-    int movingStopperShapes_ = 0;        // countMovingStoppers
+    std::vector<ShapeMove> shapeMoves_;    // per shape slot, for synchronizeSolvedBodies
+    std::vector<std::uint8_t> bodyMoves_;  // per solved body: a shape of it needs a move
+    int movingStopperShapes_ = 0;          // countMovingStoppers
 
     PreSolveCallback preSolve_;
     CustomFilterCallback customFilter_;
