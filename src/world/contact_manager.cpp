@@ -166,32 +166,8 @@ void ContactManager::updateContacts() {
     reserveBuffer(endEvents_, 2 * contactSlots);
     reserveBuffer(sensorBeginEvents_, contactSlots);
     reserveBuffer(sensorEndEvents_, contactSlots);
-    // The contacts and the census stream, but the bodies and shapes they name are scattered:
-    // a contact's bodies are asked for ahead, and its shapes (several cache lines each) once
-    // those bodies have arrived and say the contact will be updated.
-    constexpr int kBodiesAhead = 16;
-    constexpr int kShapesAhead = 8;
-    const auto active = [this](std::int32_t body) {
-        const Body& b = bodies_[body];
-        return b.awake && b.type != BodyType::Static;
-    };
     pool_.parallelFor(contacts_.capacity(), 1024, [&](int begin, int end, int) {
         for (std::int32_t index = begin; index < end; ++index) {
-            if (index + kBodiesAhead < end) {
-                const ContactSummary& ahead = census_[index + kBodiesAhead];
-                if (ahead.alive()) {
-                    prefetch(&bodies_[ahead.bodies[0]], sizeof(Body));
-                    prefetch(&bodies_[ahead.bodies[1]], sizeof(Body));
-                }
-            }
-            if (index + kShapesAhead < end) {
-                const ContactSummary& ahead = census_[index + kShapesAhead];
-                if (ahead.alive() && (active(ahead.bodies[0]) || active(ahead.bodies[1]))) {
-                    const Contact& c = contacts_[index + kShapesAhead];
-                    prefetch(&shapes_[c.shapeA], sizeof(Shape));
-                    prefetch(&shapes_[c.shapeB], sizeof(Shape));
-                }
-            }
             std::uint8_t& outcome = contactOutcomes_[index];
             outcome = kKeep;
             // The census first: a contact whose bodies both sleep (or are static), with no
@@ -200,8 +176,8 @@ void ContactManager::updateContacts() {
             if (!summary.alive()) continue;
             const Body& bodyA = bodies_[summary.bodies[0]];
             const Body& bodyB = bodies_[summary.bodies[1]];
-            const bool activeA = active(summary.bodies[0]);
-            const bool activeB = active(summary.bodies[1]);
+            const bool activeA = bodyA.awake && bodyA.type != BodyType::Static;
+            const bool activeB = bodyB.awake && bodyB.type != BodyType::Static;
             if (!activeA && !activeB && !summary.needsFiltering()) continue;
             Contact& contact = contacts_[index];
             if (contact.needsFiltering) {
