@@ -14,19 +14,36 @@
 
 namespace pivot {
 
-/// Gravity, forces and damping over one substep on a dynamic body's solver velocity
-/// (semi-implicit Euler: velocities first, positions later from the new velocities).
-inline void integrateVelocity(const Body& b, SolverVelocity& velocity, const StepContext& step) {
+/// What gravity, forces and damping do to a dynamic body's velocity over one substep, the same
+/// at every substep of a step: worked out once, when the island loads its bodies, so that later
+/// substeps need not read the body again.
+struct VelocityDrive {
+    Vec2 dv;  // h / m (gravity's force + the applied force)
+    float dw = 0.0f;
+    float linearFactor = 1.0f;  // 1 / (1 + h c), the damping's
+    float angularFactor = 1.0f;
+    bool dynamic = false;  // only dynamic bodies are driven
+};
+
+inline VelocityDrive velocityDrive(const Body& b, const StepContext& step) {
+    if (b.type != BodyType::Dynamic) return VelocityDrive{};
     const float h = step.dt;
-    Vec2 v = velocity.v;
-    float w = velocity.w;
-    v += h * b.invMass * (b.gravityScale * b.mass * step.gravity + b.force);
-    w += h * b.invInertia * b.torque;
+    VelocityDrive d;
+    d.dv = h * b.invMass * (b.gravityScale * b.mass * step.gravity + b.force);
+    d.dw = h * b.invInertia * b.torque;
     // Damping, dv/dt = -c v, integrated with the Pade approximation
     // exp(-c h) ~ 1 / (1 + c h): stable for any c h >= 0.
-    v *= 1.0f / (1.0f + h * b.linearDamping);
-    w *= 1.0f / (1.0f + h * b.angularDamping);
-    velocity = {v, w};
+    d.linearFactor = 1.0f / (1.0f + h * b.linearDamping);
+    d.angularFactor = 1.0f / (1.0f + h * b.angularDamping);
+    d.dynamic = true;
+    return d;
+}
+
+/// Gravity, forces and damping over one substep on a solver velocity (semi-implicit Euler:
+/// velocities first, positions later from the new velocities).
+inline void integrateVelocity(const VelocityDrive& d, SolverVelocity& velocity) {
+    if (!d.dynamic) return;
+    velocity = {(velocity.v + d.dv) * d.linearFactor, (velocity.w + d.dw) * d.angularFactor};
 }
 
 /// How far a body may move in one substep: its share of the step's limit (kMaxTranslation,

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/buffer.h"
+#include "core/prefetch.h"
 #include "islands/graph_coloring.h"
 #include "pivot/constants.h"
 #include "solver/body_motion.h"
@@ -46,16 +47,23 @@ int jointMember(const IslandSchedule& schedule, std::size_t at) {
 // (nothing integrates them, so a copy is simply the body's own state); with `keepStart`, the
 // poses also into stepStart.
 void loadBodies(const Team& team, const IslandView& island, IslandWorkspace& work,
-                const SlotPool<Body>& bodies, bool keepStart) {
+                const SlotPool<Body>& bodies, const StepContext& step, bool keepStart) {
     const auto load = [&](std::size_t slot, const Body& b) {
         work.positions[slot] = {b.center, b.angle};
         work.velocities[slot] = {b.linearVelocity, b.angularVelocity};
         work.bodyInputs[slot] = {b.localCenter, b.invMass, b.invInertia, work.velocities[slot]};
         if (keepStart) work.stepStart[slot] = work.positions[slot];
     };
+    // The bodies are scattered over their pool: each is asked for a few bodies ahead.
+    constexpr int kBodiesAhead = 8;
     team.forBlocks(island.bodyCount, [&](IndexRange mine) {
         for (int i = mine.begin; i < mine.end; ++i) {
-            load(static_cast<std::size_t>(i), bodies[island.bodies[i]]);
+            if (i + kBodiesAhead < mine.end) {
+                prefetch(&bodies[island.bodies[i + kBodiesAhead]], sizeof(Body));
+            }
+            const Body& b = bodies[island.bodies[i]];
+            load(static_cast<std::size_t>(i), b);
+            work.drives[static_cast<std::size_t>(i)] = velocityDrive(b, step);
         }
     });
     const std::vector<std::int32_t>& copies = work.schedule.fixedCopies;
@@ -87,12 +95,10 @@ void measureRotations(const Team& team, IslandWorkspace& work) {
 
 // Gravity, forces and damping over one substep, on the dynamic bodies' solver velocities
 // (semi-implicit Euler: velocities first, positions later from the new velocities).
-void integrateVelocities(const Team& team, const IslandView& island, IslandWorkspace& work,
-                         const SlotPool<Body>& bodies, const StepContext& step) {
+void integrateVelocities(const Team& team, const IslandView& island, IslandWorkspace& work) {
     team.forBlocks(island.bodyCount, [&](IndexRange mine) {
         for (int i = mine.begin; i < mine.end; ++i) {
-            const Body& b = bodies[island.bodies[i]];
-            if (b.type == BodyType::Dynamic) integrateVelocity(b, work.velocities[i], step);
+            integrateVelocity(work.drives[static_cast<std::size_t>(i)], work.velocities[i]);
         }
     });
 }
@@ -324,7 +330,7 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
     const bool jointsRemeasure =
         !firstSubstep && laterSubstepsRemeasure(step) && 2 * island.jointCount >= island.bodyCount;
     bool rotationsMeasured = false;
-    integrateVelocities(team, island, work, bodies, step);
+    integrateVelocities(team, island, work);
     if (contactsBuilt) {
         measureMotion(team, work);
     } else if (island.contactCount > 0) {
@@ -426,6 +432,7 @@ void reserveWorkspace(IslandWorkspace& work, const BufferBounds& bound) {
     work.velocities.reserve(bound.bodies);
     work.positions.reserve(bound.bodies);
     work.bodyInputs.reserve(bound.bodies);
+    work.drives.reserve(bound.bodies);
     work.stepStart.reserve(bound.bodies);
     work.motion.reserve(bound.bodies);
     work.rotations.reserve(bound.bodies);
@@ -457,6 +464,7 @@ void planIsland(const IslandSet& set, int first, int count, IslandWorkspace& wor
     resizeBuffer(work.velocities, slots);
     resizeBuffer(work.positions, slots);
     resizeBuffer(work.bodyInputs, slots);
+    resizeBuffer(work.drives, slots);
     resizeBuffer(work.stepStart, slots);
     resizeBuffer(work.motion, slots);
     resizeBuffer(work.rotations, slots);
@@ -481,7 +489,7 @@ void solveIslands(const Team& team, const IslandSet& set, int first, int count,
     // Zeroed by planIsland: a member that joins late, or not at all, adds nothing.
     IslandReport* mine = work.memberReports.data() + team.member() * count;
 
-    loadBodies(team, island, work, bodies,
+    loadBodies(team, island, work, bodies, step,
                work.contactSolver.builtOncePerStep() && step.substepCount > 1);
     team.sync();
     // Later substeps warm-start from the substep before, of the same length.
@@ -533,9 +541,10 @@ IslandReport solveLoneBody(const IslandSet& set, int index, SlotPool<Body>& bodi
     SolverPose pose{b.center, b.angle};
     SolverVelocity velocity{b.linearVelocity, b.angularVelocity};
     const MotionLimits limits(step);
+    const VelocityDrive drive = velocityDrive(b, step);
     IslandReport report;
     for (int substep = 0; substep < step.substepCount; ++substep) {
-        if (b.type == BodyType::Dynamic) integrateVelocity(b, velocity, step);
+        integrateVelocity(drive, velocity);
         integratePosition(velocity, pose, step.dt, limits, report);
     }
     if (b.type != BodyType::Static) writeBackBody(b, pose, velocity, report);

@@ -21,6 +21,7 @@
 #include "model/body.h"
 #include "model/contact.h"
 #include "model/shape.h"
+#include "solver/body_motion.h"
 #include "solver/island_report.h"
 #include "strategies/joint_groups.h"
 #include "strategies/position_phase.h"
@@ -42,6 +43,7 @@ struct IslandWorkspace {
     std::vector<SolverVelocity> velocities;  // one per solver slot
     std::vector<SolverPose> positions;
     std::vector<SolverBodyInputs> bodyInputs;  // loaded with the bodies, for the contacts' set-up
+    std::vector<VelocityDrive> drives;  // loaded with the bodies, for every substep's integration
     // Contacts built once a step (soft): the poses the step started from, and each slot's
     // motion since, measured at every later substep.
     std::vector<SolverPose> stepStart;
