@@ -5,6 +5,7 @@
 
 #include "core/buffer.h"
 #include "core/prefetch.h"
+#include "core/sine_cosine.h"
 #include "pivot/constants.h"
 
 namespace pivot {
@@ -19,8 +20,12 @@ Transform solverTransform(const SolverPose& p, Rot q, Vec2 localCenter) {
     return xf;
 }
 
-Transform solverTransform(const SolverPose& p, Vec2 localCenter) {
-    return solverTransform(p, Rot(p.a), localCenter);
+// libm's Rot(a), or the polynomial's (ContactSolver::reset).
+Rot rotationOf(float a, bool polynomial) {
+    if (!polynomial) return Rot(a);
+    Rot q;
+    sineCosine(a, q.s, q.c);
+    return q;
 }
 
 Vec2 tangentOf(Vec2 normal) {
@@ -282,8 +287,10 @@ void ContactSolver::putImpulses(int k, const ContactVelocityConstraint& c) {
     }
 }
 
-void ContactSolver::reset(int count, const StepContext& step, const std::vector<Batch>* batches) {
+void ContactSolver::reset(int count, const StepContext& step, const std::vector<Batch>* batches,
+                          bool polynomialRotations) {
     positionBias_ = step.contactBiasFactor;
+    polynomialRotations_ = polynomialRotations;
     baumgarte_ = step.contactCorrection == ContactCorrection::Baumgarte;
     soft_ = step.contactCorrection == ContactCorrection::Soft;
     if (soft_) {
@@ -591,8 +598,9 @@ float ContactSolver::positionSweep(IndexRange range, SolverPose* positions, floa
         const float mB = movesB ? pc.mB : 0.0f;
         const float iB = movesB ? pc.iB : 0.0f;
         for (int j = 0; j < pc.pointCount; ++j) {
-            MeasuredPoint m = measure(pc, solverTransform(A, pc.localCenterA),
-                                      solverTransform(B, pc.localCenterB), j);
+            MeasuredPoint m = measure(
+                pc, solverTransform(A, rotationOf(A.a, polynomialRotations_), pc.localCenterA),
+                solverTransform(B, rotationOf(B.a, polynomialRotations_), pc.localCenterB), j);
             Vec2 rA = m.point - A.c;
             Vec2 rB = m.point - B.c;
             smallest = minSeparation(smallest, m.separation);

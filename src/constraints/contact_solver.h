@@ -103,8 +103,11 @@ class ContactSolver {
 public:
     /// Sizes the arrays for `count` contacts, and lays out tiles for the wide sweeps over the
     /// independent ones among `batches` (the batches the sweeps will be given; none without).
-    /// On one thread, before prepare.
-    void reset(int count, const StepContext& step, const std::vector<Batch>* batches = nullptr);
+    /// On one thread, before prepare. With `polynomialRotations` (a coloured island's contacts),
+    /// the NGS sweeps take the bodies' sines and cosines from core/sine_cosine.h instead of
+    /// libm, in the wide and the one-by-one sweeps alike.
+    void reset(int count, const StepContext& step, const std::vector<Batch>* batches = nullptr,
+               bool polynomialRotations = false);
     /// Room for `count` contacts in at most `batches` batches, so that reset does not allocate
     /// up to that many.
     void reserve(std::size_t count, std::size_t batches) {
@@ -232,6 +235,7 @@ private:
     ContactTiles tiles_;  // the wide sweeps' constraints (a tiled contact's only copy)
     std::vector<ContactPositionConstraint> position_;  // NGS contacts' only
     bool ngs_ = false;
+    bool polynomialRotations_ = false;
     float positionBias_ = 0.0f;
     bool baumgarte_ = false;
     bool soft_ = false;

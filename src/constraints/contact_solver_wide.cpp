@@ -17,12 +17,14 @@
 // clamped by friction * normal impulse, the two points of a manifold solved together as a 2x2
 // complementarity problem (the first of its four cases that holds), or point by point; and the
 // NGS sweep's -K^-1 C per point, from the separation re-measured at the current poses (the
-// sines and cosines of those poses stay libm's, lane by lane).
+// sines and cosines of those poses from core/sine_cosine.h's polynomial in a coloured island,
+// else libm's, lane by lane).
 #include <atomic>
 #include <utility>
 
 #include "constraints/contact_solver.h"
 #include "constraints/lanes.h"
+#include "core/sine_cosine.h"
 
 namespace pivot {
 
@@ -322,17 +324,27 @@ struct VecLanes {
     F x, y;
 };
 
-// The rotation of each lane's angle, by the scalar Rot (libm's sine and cosine: no wide
-// routine rounds as they do).
+// The rotation of each lane's angle: the polynomial of core/sine_cosine.h (a coloured
+// island's, ContactSolver::reset), all lanes at once where it covers them all; otherwise lane
+// by lane, as the one-by-one sweep does (libm's Rot, or sineCosine with its fallback).
 template <typename F>
-RotLanes<F> rotations(F angles) {
+RotLanes<F> rotations(F angles, bool polynomial) {
+    RotLanes<F> q;
+    if (polynomial && all(coveredAngles(angles))) {
+        polynomialSineCosine(angles, q.s, q.c);
+        return q;
+    }
     constexpr int W = F::kWidth;
     float a[W], s[W], c[W];
     store(a, angles);
     for (int lane = 0; lane < W; ++lane) {
-        const Rot q(a[lane]);
-        s[lane] = q.s;
-        c[lane] = q.c;
+        if (polynomial) {
+            sineCosine(a[lane], s[lane], c[lane]);
+        } else {
+            const Rot one(a[lane]);
+            s[lane] = one.s;
+            c[lane] = one.c;
+        }
     }
     return {F::load(s), F::load(c)};
 }
@@ -369,7 +381,7 @@ void storePoses(const PoseLanes<F>& in, SolverPose* const pose[]) {
 // separations[point][lane].
 template <typename F>
 void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, float bias,
-                   float separations[2][F::kWidth]) {
+                   bool polynomial, float separations[2][F::kWidth]) {
     constexpr int W = F::kWidth;
     SolverPose* poseA[W];
     SolverPose* poseB[W];
@@ -410,7 +422,7 @@ void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, fl
         const VecLanes<F> local{field([j](P x) { return x.localPoints[j].x; }),
                                 field([j](P x) { return x.localPoints[j].y; })};
         // solverTransform of each body: xf.p = c - rotate(q, localCenter).
-        const RotLanes<F> qA = rotations(A.a), qB = rotations(B.a);
+        const RotLanes<F> qA = rotations(A.a, polynomial), qB = rotations(B.a, polynomial);
         const VecLanes<F> turnedA = rotateLanes(qA, centerA), turnedB = rotateLanes(qB, centerB);
         const VecLanes<F> pA{A.cx - turnedA.x, A.cy - turnedA.y};
         const VecLanes<F> pB{B.cx - turnedB.x, B.cy - turnedB.y};
@@ -483,11 +495,11 @@ using ContactLanesF = F4;
 
 template <typename F>
 int positionRun(int k, IndexRange range, const ContactPositionConstraint* constraints,
-                SolverPose* positions, float bias, float& smallest) {
+                SolverPose* positions, float bias, bool polynomial, float& smallest) {
     constexpr int W = F::kWidth;
     for (; k + W <= range.end; k += W) {
         float separations[2][W];
-        positionLanes<F>(constraints + k, positions, bias, separations);
+        positionLanes<F>(constraints + k, positions, bias, polynomial, separations);
         // Folded in the order the one-by-one sweep meets them: contact by contact, point by
         // point (minSeparation's NaN rule makes the order matter).
         for (int lane = 0; lane < W; ++lane) {
@@ -548,9 +560,11 @@ int ContactSolver::positionSweepWide(IndexRange range, SolverPose* positions, fl
     int k = range.begin;
     if (!wideEnabled.load(std::memory_order_relaxed)) return k;
 #if PIVOT_LANES_8
-    k = positionRun<F8>(k, range, position_.data(), positions, bias, smallest);
+    k = positionRun<F8>(k, range, position_.data(), positions, bias, polynomialRotations_,
+                        smallest);
 #endif
-    return positionRun<F4>(k, range, position_.data(), positions, bias, smallest);
+    return positionRun<F4>(k, range, position_.data(), positions, bias, polynomialRotations_,
+                           smallest);
 }
 
 #else

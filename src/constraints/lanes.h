@@ -93,6 +93,9 @@ inline F4 select(F4 mask, F4 a, F4 b) {
 inline bool any(F4 mask) {
     return _mm_movemask_ps(mask.v) != 0;
 }
+inline bool all(F4 mask) {
+    return _mm_movemask_ps(mask.v) == 0xf;
+}
 
 /// Lane i of x, y, z, w: the four floats at rows[i] (a transpose: one vector load per row
 /// instead of four scalar ones). Any of the rows may be the same.
@@ -186,6 +189,9 @@ inline F8 select(F8 mask, F8 a, F8 b) {
 }
 inline bool any(F8 mask) {
     return _mm256_movemask_ps(mask.v) != 0;
+}
+inline bool all(F8 mask) {
+    return _mm256_movemask_ps(mask.v) == 0xff;
 }
 
 /// As for F4, eight rows.

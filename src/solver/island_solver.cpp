@@ -470,7 +470,8 @@ void planIsland(const IslandSet& set, int first, int count, IslandWorkspace& wor
     resizeBuffer(work.rotations, slots);
     work.groups.resize(schedule.groupStart);
     resizeBuffer(work.jointLetGo, schedule.jointIds.size());
-    work.contactSolver.reset(island.contactCount, step, &schedule.contactBatches);
+    work.contactSolver.reset(island.contactCount, step, &schedule.contactBatches,
+                             schedule.contactsColored);
     resizeBuffer(work.mouseConstraints, static_cast<std::size_t>(island.mouseCount));
     resizeBuffer(work.positionScratch.pseudo, slots);
     resizeBuffer(work.positionScratch.xpbdStart, slots);
