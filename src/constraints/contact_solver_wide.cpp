@@ -324,16 +324,10 @@ struct VecLanes {
     F x, y;
 };
 
-// The rotation of each lane's angle: the polynomial of core/sine_cosine.h (a coloured
-// island's, ContactSolver::reset), all lanes at once where it covers them all; otherwise lane
-// by lane, as the one-by-one sweep does (libm's Rot, or sineCosine with its fallback).
+// The rotation of each lane's angle, one lane at a time, as the one-by-one sweep computes it
+// (libm's Rot, or sineCosine with its fallback).
 template <typename F>
-RotLanes<F> rotations(F angles, bool polynomial) {
-    RotLanes<F> q;
-    if (polynomial && all(coveredAngles(angles))) {
-        polynomialSineCosine(angles, q.s, q.c);
-        return q;
-    }
+RotLanes<F> rotationsLaneByLane(F angles, bool polynomial) {
     constexpr int W = F::kWidth;
     float a[W], s[W], c[W];
     store(a, angles);
@@ -347,6 +341,19 @@ RotLanes<F> rotations(F angles, bool polynomial) {
         }
     }
     return {F::load(s), F::load(c)};
+}
+
+// The rotation of each lane's angle: the polynomial of core/sine_cosine.h (a coloured
+// island's, ContactSolver::reset), all lanes at once where it covers them all, inlined so
+// that the sweep keeps its registers; otherwise lane by lane.
+template <typename F>
+PIVOT_LANES_INLINE RotLanes<F> rotations(F angles, bool polynomial) {
+    if (polynomial && all(coveredAngles(angles))) {
+        RotLanes<F> q;
+        polynomialSineCosine(angles, q.s, q.c);
+        return q;
+    }
+    return rotationsLaneByLane(angles, polynomial);
 }
 
 // rotate(q, v) and transformPoint({p, q}, v).

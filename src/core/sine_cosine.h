@@ -47,10 +47,18 @@ inline float select(bool mask, float a, float b) {
 }
 }  // namespace sine_cosine_ops
 
+// Always inlined: called out of line, the eight-lane form cost the NGS sweep its registers
+// around each call, as libm's did.
+#if defined(__GNUC__) || defined(__clang__)
+#define PIVOT_SINE_COSINE_INLINE inline __attribute__((always_inline))
+#else
+#define PIVOT_SINE_COSINE_INLINE inline
+#endif
+
 /// s = sin(a), c = cos(a) for |a| < kLargestAngle. F is float or a lanes type; each step is one
 /// IEEE-rounded operation (the build never fuses a*b+c), so every width gives the same bits.
 template <typename F>
-void polynomialSineCosine(F a, F& s, F& c) {
+PIVOT_SINE_COSINE_INLINE void polynomialSineCosine(F a, F& s, F& c) {
     using namespace sine_cosine_ops;
     // Adding and taking away 1.5 * 2^23 rounds a float below 2^22 to an integer (to even).
     const F magic(12582912.0f);
