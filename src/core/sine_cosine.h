@@ -18,7 +18,7 @@
 // Accuracy, against double precision over (-kLargestAngle, kLargestAngle): 7.8e-8 at worst
 // (about one unit in the last place of a float just below 1; libm's sinf and cosf, 3.3e-8),
 // measured over every thousandth of a radian; tests/engine/sine_cosine_test.cpp holds it within
-// 2^-22. One difference of sign: the polynomial's sine of -0 is +0, libm's -0.
+// 2^-23. One difference of sign: the polynomial's sine of -0 is +0, libm's -0.
 #pragma once
 
 #include <cmath>
