@@ -20,14 +20,6 @@ Transform solverTransform(const SolverPose& p, Rot q, Vec2 localCenter) {
     return xf;
 }
 
-// libm's Rot(a), or the polynomial's (ContactSolver::reset).
-Rot rotationOf(float a, bool polynomial) {
-    if (!polynomial) return Rot(a);
-    Rot q;
-    sineCosine(a, q.s, q.c);
-    return q;
-}
-
 Vec2 tangentOf(Vec2 normal) {
     return cross(normal, 1.0f);
 }

@@ -325,20 +325,16 @@ struct VecLanes {
 };
 
 // The rotation of each lane's angle, one lane at a time, as the one-by-one sweep computes it
-// (libm's Rot, or sineCosine with its fallback).
+// (rotationOf).
 template <typename F>
 RotLanes<F> rotationsLaneByLane(F angles, bool polynomial) {
     constexpr int W = F::kWidth;
     float a[W], s[W], c[W];
     store(a, angles);
     for (int lane = 0; lane < W; ++lane) {
-        if (polynomial) {
-            sineCosine(a[lane], s[lane], c[lane]);
-        } else {
-            const Rot one(a[lane]);
-            s[lane] = one.s;
-            c[lane] = one.c;
-        }
+        const Rot one = rotationOf(a[lane], polynomial);
+        s[lane] = one.s;
+        c[lane] = one.c;
     }
     return {F::load(s), F::load(c)};
 }

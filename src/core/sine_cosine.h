@@ -23,6 +23,8 @@
 
 #include <cmath>
 
+#include "pivot/math.h"
+
 namespace pivot {
 
 /// Angles (radians) at least this far from zero go to libm (the reduction's exactness ends).
@@ -103,6 +105,15 @@ inline void sineCosine(float a, float& s, float& c) {
         return;
     }
     polynomialSineCosine(a, s, c);
+}
+
+/// A body's rotation as an NGS contact sweep takes it: libm's Rot(a), or with `polynomial` (a
+/// coloured island's contacts) sineCosine's. The one-by-one and the wide sweeps both call this.
+inline Rot rotationOf(float a, bool polynomial) {
+    if (!polynomial) return Rot(a);
+    Rot q;
+    sineCosine(a, q.s, q.c);
+    return q;
 }
 
 }  // namespace pivot
