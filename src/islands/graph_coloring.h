@@ -9,6 +9,7 @@
 // First fit makes the first colours the biggest, which is what splits best.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -27,26 +28,39 @@ public:
     /// `order`, colour by colour and in their original order within a colour, and one batch per
     /// non-empty colour to `batches`, numbered from `base` (the position in the constraint array of
     /// the first item appended). Allocates only while its scratch grows.
+    ///
+    /// With `regions` (per item, below kRegions), each colour lists its items region by region
+    /// (in their original order within a region); the overflow keeps its order, since it is
+    /// solved in sequence. Constraints of one colour share no movable body, so their order
+    /// within the colour changes no result: the regions only decide which member of a team
+    /// solves which (Team deals a batch out in consecutive segments, member by member).
+    static constexpr int kRegions = 16;
     template <typename Pairs>
     void color(const std::int32_t* items, int count, const Pairs& pairs, const std::uint8_t* fixed,
                int bodyCount, std::vector<std::int32_t>& order, std::vector<Batch>& batches,
-               std::int32_t base);
+               std::int32_t base, const std::uint8_t* regions = nullptr);
 
 private:
     std::vector<std::uint64_t> masks_;  // per body: colours already used by its constraints
-    std::vector<std::uint8_t> colorOf_;
+    std::vector<std::uint16_t> binOf_;  // per item
 };
 
 template <typename Pairs>
 void GraphColoring::color(const std::int32_t* items, int count, const Pairs& pairs,
                           const std::uint8_t* fixed, int bodyCount,
                           std::vector<std::int32_t>& order, std::vector<Batch>& batches,
-                          std::int32_t base) {
+                          std::int32_t base, const std::uint8_t* regions) {
     constexpr std::uint64_t kAllColors = (std::uint64_t{1} << kMaxColors) - 1;
     if (masks_.size() < static_cast<std::size_t>(bodyCount)) {
         resizeBuffer(masks_, static_cast<std::size_t>(bodyCount), std::uint64_t{0});
     }
-    resizeBuffer(colorOf_, static_cast<std::size_t>(count));
+    resizeBuffer(binOf_, static_cast<std::size_t>(count));
+    // Bin (colour, region): the bins in order make the colours' batches; the overflow's bin is
+    // the last, whole.
+    const int regionCount = regions ? kRegions : 1;
+    const int overflowBin = kMaxColors * regionCount;
+    std::int32_t next[kMaxColors * kRegions + 1];
+    std::fill(next, next + overflowBin + 1, 0);
     std::int32_t sizes[kMaxColors + 1] = {};
 
     for (int i = 0; i < count; ++i) {
@@ -57,28 +71,34 @@ void GraphColoring::color(const std::int32_t* items, int count, const Pairs& pai
         }
         std::uint64_t free = ~used & kAllColors;
         int color = kMaxColors;  // overflow
+        int bin = overflowBin;
         if (free != 0) {
             color = __builtin_ctzll(free);
             const std::uint64_t bit = std::uint64_t{1} << color;
             for (const std::int32_t body : pairs[items[i]]) {
                 if (movable(body)) masks_[body] |= bit;
             }
+            bin = color * regionCount + (regions ? regions[i] : 0);
         }
-        colorOf_[i] = static_cast<std::uint8_t>(color);
+        binOf_[i] = static_cast<std::uint16_t>(bin);
+        ++next[bin];
         ++sizes[color];
     }
 
-    // Colour c occupies [next[c], next[c] + sizes[c]) of what is appended.
-    std::int32_t next[kMaxColors + 1];
     std::int32_t at = 0;
     for (int c = 0; c <= kMaxColors; ++c) {
-        next[c] = at;
         if (sizes[c] > 0) batches.push_back({base + at, base + at + sizes[c], c == kMaxColors});
         at += sizes[c];
     }
+    at = 0;
+    for (int bin = 0; bin <= overflowBin; ++bin) {
+        const std::int32_t size = next[bin];
+        next[bin] = at;
+        at += size;
+    }
     const std::size_t first = order.size();
     resizeBuffer(order, first + static_cast<std::size_t>(count));
-    for (int i = 0; i < count; ++i) order[first + next[colorOf_[i]]++] = items[i];
+    for (int i = 0; i < count; ++i) order[first + next[binOf_[i]]++] = items[i];
 
     // Leave the masks zeroed for the next call.
     for (int i = 0; i < count; ++i) {

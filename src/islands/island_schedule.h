@@ -107,18 +107,19 @@ struct IslandSchedule {
 class IslandScheduler {
 public:
     /// Plans `island` into `schedule`. Allocates only while its buffers grow.
+    /// `contactSlots`: the contact pool's capacity (which slots a worker updates, planContacts).
     void plan(const IslandView& island, const SlotPool<Body>& bodies, const SlotPool<Joint>& joints,
-              IslandSchedule& schedule) {
+              std::int32_t contactSlots, IslandSchedule& schedule) {
         const IslandSet::Range whole{0, island.bodyCount,  0, island.contactCount,
                                      0, island.jointCount, 0, island.mouseCount};
-        plan(island, &whole, 1, bodies, joints, schedule);
+        plan(island, &whole, 1, bodies, joints, contactSlots, schedule);
     }
     /// Plans the bundle of islands `members[0..count)` (their ranges in one IslandSet, which
     /// `island` spans) into `schedule`. A bundle of more than one island has no mouse joint
     /// and is not coloured, whatever its size.
     void plan(const IslandView& island, const IslandSet::Range* members, int count,
               const SlotPool<Body>& bodies, const SlotPool<Joint>& joints,
-              IslandSchedule& schedule);
+              std::int32_t contactSlots, IslandSchedule& schedule);
     /// Room to plan an island holding every body, joint and contact of the world.
     void reserve(const BufferBounds& bound) {
         fixed_.reserve(bound.bodies);
@@ -126,6 +127,7 @@ public:
         jointMembers_.reserve(bound.joints);
         items_.reserve(std::max(bound.joints, bound.contacts));
         order_.reserve(std::max(bound.joints, bound.contacts));
+        regions_.reserve(bound.contacts);
     }
 
 private:
@@ -135,7 +137,7 @@ private:
     void planJoints(const IslandView& island, const IslandSet::Range* members,
                     const SlotPool<Joint>& joints, IslandSchedule& schedule);
     void planContacts(const IslandView& island, const IslandSet::Range* members,
-                      IslandSchedule& schedule);
+                      std::int32_t contactSlots, IslandSchedule& schedule);
     /// Appends the joints of items_ (one group's, island by island) to order_, dealt out in
     /// turn among the bundle's islands.
     void dealOut(int memberCount);
@@ -147,6 +149,7 @@ private:
     std::vector<std::uint8_t> fixed_;  // per island body: never moves
     std::vector<std::int32_t> items_;
     std::vector<std::int32_t> order_;
+    std::vector<std::uint8_t> regions_;       // per island contact: its stretch of the pool
     std::vector<std::uint8_t> jointGroups_;   // per island joint: its group, read once
     std::vector<std::uint8_t> jointMembers_;  // bundles: per island joint, its island
     std::array<std::int32_t, kMostBundleMembers + 1> memberItems_{};  // one group's, per island

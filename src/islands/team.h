@@ -75,6 +75,28 @@ public:
         forBlocks(count, batch.serial ? count : kMinBlock, shifted, kBatchAlignment);
     }
 
+    /// A stage over the constraints of `batches` (consecutive, batch after batch) in which a
+    /// member's own blocks are, in every batch, the share that forBlocks(batch) gives it first:
+    /// a pass over the whole array (a set-up, a store) then touches the constraints, and the
+    /// bodies, that the member's colour-by-colour sweeps touch, on its own core. Any batch is
+    /// cut this way, a serial one too (for work that is independent per constraint).
+    template <typename F>
+    void forBatchShares(const std::vector<Batch>& batches, F&& f) const {
+        if (batches.empty()) return;
+        if (size_ == 1) {
+            f(IndexRange{batches.front().begin, batches.back().end});
+            return;
+        }
+        const int batchCount = static_cast<int>(batches.size());
+        claimBlocks(size_ * batchCount, [&](int b) {
+            const Batch& batch = batches[static_cast<std::size_t>(b % batchCount)];
+            const IndexRange share = shareOf(batch.end - batch.begin, b / batchCount);
+            if (share.begin < share.end) {
+                f(IndexRange{batch.begin + share.begin, batch.begin + share.end});
+            }
+        });
+    }
+
     /// Work for one member (whichever gets there first), as a stage of one block.
     template <typename F>
     void once(F&& f) const {
@@ -96,6 +118,22 @@ private:
         std::uint32_t number;
         int blocks;
     };
+
+    /// The part of [0, count) that forBlocks(count, kMinBlock, f, kBatchAlignment) deals to
+    /// `member`'s own segment (StageBoard::claim), empty for a member without one.
+    IndexRange shareOf(int count, int member) const {
+        const int blocks = std::clamp(count / kMinBlock, 1,
+                                      std::min(kBlocksPerMember * size_, StageBoard::kMaxBlocks));
+        const int segments = std::clamp(size_, 1, std::min(StageBoard::kMaxSegments, blocks));
+        if (member >= segments) return {0, 0};
+        const auto at = [&](int k) {
+            if (k == blocks) return count;
+            const auto even = static_cast<int>(static_cast<std::int64_t>(count) * k / blocks);
+            return even / kBatchAlignment * kBatchAlignment;
+        };
+        return {at(shareStart(blocks, member, segments)),
+                at(shareStart(blocks, member + 1, segments))};
+    }
 
     template <typename Run>
     void claimBlocks(int blocks, Run&& run) const {

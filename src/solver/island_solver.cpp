@@ -342,7 +342,7 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
         rotationsMeasured = true;
     }
     team.sync();
-    team.forBlocks(island.contactCount, [&](IndexRange range) {
+    team.forBatchShares(schedule.contactBatches, [&](IndexRange range) {
         if (contactsBuilt) {
             work.contactSolver.updateSeparations(range, work.motion.data());
         } else {
@@ -403,7 +403,7 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
     // once a step keep them until its end, where they also keep the first substep's approach.
     const bool builtOnce = work.contactSolver.builtOncePerStep();
     if (!builtOnce || lastSubstep) {
-        team.forBlocks(island.contactCount, [&](IndexRange range) {
+        team.forBatchShares(schedule.contactBatches, [&](IndexRange range) {
             work.contactSolver.storeImpulses(range, storage.contacts, builtOnce || firstSubstep);
         });
     }
@@ -455,7 +455,7 @@ void planIsland(const IslandSet& set, int first, int count, IslandWorkspace& wor
                          work.plannedCount == count;
     if (!planned) {
         work.scheduler.plan(island, &set.ranges[static_cast<std::size_t>(first)], count,
-                            storage.bodies, storage.joints, schedule);
+                            storage.bodies, storage.joints, storage.contacts.capacity(), schedule);
         work.plannedIsland = first;
         work.plannedCount = count;
         work.plannedAt = islandRevision;

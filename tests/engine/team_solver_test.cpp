@@ -78,6 +78,57 @@ TEST(GraphColoring, NoColourTouchesAMovableBodyTwiceAndEveryConstraintAppearsOnc
     }
 }
 
+TEST(GraphColoring, RegionsOrderEachColourAndChangeNoColour) {
+    // With regions, a colour lists its constraints region by region, each region's in their
+    // original order; the colours themselves, and the serial overflow's order, are those
+    // found without regions.
+    std::mt19937 random(11);
+    const int bodies = 120;
+    std::vector<std::uint8_t> fixed(bodies, 0);
+    std::uniform_int_distribution<int> pick(0, bodies - 1);
+    std::vector<BodyPair> pairs;
+    while (pairs.size() < 3000) {  // dense enough to overflow
+        int a = pick(random), b = pick(random);
+        if (a != b) pairs.push_back({a, b});
+    }
+    std::vector<std::int32_t> items(pairs.size());
+    std::vector<std::uint8_t> regions(pairs.size());
+    std::uniform_int_distribution<int> region(0, GraphColoring::kRegions - 1);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        items[i] = static_cast<std::int32_t>(i);
+        regions[i] = static_cast<std::uint8_t>(region(random));
+    }
+    const Coloring plain = colorAll(pairs, fixed);
+    GraphColoring coloring;
+    Coloring zoned;
+    coloring.color(items.data(), static_cast<int>(items.size()), pairs.data(), fixed.data(), bodies,
+                   zoned.order, zoned.batches, 0, regions.data());
+    ASSERT_EQ(zoned.batches.size(), plain.batches.size());
+    ASSERT_TRUE(plain.batches.back().serial);
+    for (std::size_t k = 0; k < plain.batches.size(); ++k) {
+        const Batch& batch = zoned.batches[k];
+        EXPECT_EQ(batch.begin, plain.batches[k].begin);
+        EXPECT_EQ(batch.end, plain.batches[k].end);
+        EXPECT_EQ(batch.serial, plain.batches[k].serial);
+        std::vector<std::int32_t> mine(zoned.order.begin() + batch.begin,
+                                       zoned.order.begin() + batch.end);
+        std::vector<std::int32_t> theirs(plain.order.begin() + batch.begin,
+                                         plain.order.begin() + batch.end);
+        if (batch.serial) {
+            EXPECT_EQ(mine, theirs);
+            continue;
+        }
+        for (std::size_t at = 1; at < mine.size(); ++at) {
+            const int before = regions[static_cast<std::size_t>(mine[at - 1])];
+            const int here = regions[static_cast<std::size_t>(mine[at])];
+            EXPECT_TRUE(before < here || (before == here && mine[at - 1] < mine[at]))
+                << "colour " << k;
+        }
+        std::sort(mine.begin(), mine.end());
+        EXPECT_EQ(mine, theirs) << "colour " << k;
+    }
+}
+
 TEST(GraphColoring, ABodyWithMoreConstraintsThanColoursSpillsIntoASerialBatch) {
     const int spokes = GraphColoring::kMaxColors + 8;
     std::vector<std::uint8_t> fixed(spokes + 1, 0);
@@ -457,6 +508,38 @@ TEST(TeamSolver, AnIndependentBatchIsCutWhereTheContactTilesStart) {
                     << workers << " workers, " << size << ", item " << i;
             }
         }
+    }
+}
+
+TEST(TeamSolver, BatchSharesCoverEveryConstraintOnceWhereTheTilesStart) {
+    // forBatchShares cuts each batch into members' shares (serial ones too) at multiples of
+    // kBatchAlignment from the batch's start, on any team size, covering every constraint once.
+    const std::vector<Batch> batches{{0, 1000, false},
+                                     {1000, 1007, false},
+                                     {1007, 1100, false},
+                                     {1100, 3333, false},
+                                     {3333, 3400, true}};
+    for (int workers : {1, 2, 3}) {
+        TaskPool pool(workers);
+        std::vector<std::atomic<int>> done(static_cast<std::size_t>(batches.back().end));
+        std::atomic<int> misaligned{0};
+        pool.region([&](int member) {
+            const Team team(pool, member);
+            team.forBatchShares(batches, [&](IndexRange r) {
+                const bool atTile =
+                    std::any_of(batches.begin(), batches.end(), [&](const Batch& b) {
+                        return r.begin >= b.begin && r.end <= b.end &&
+                               (r.begin - b.begin) % kBatchAlignment == 0;
+                    });
+                if (!atTile && workers > 1) ++misaligned;
+                for (int i = r.begin; i < r.end; ++i) ++done[static_cast<std::size_t>(i)];
+            });
+            team.sync();
+        });
+        EXPECT_EQ(misaligned.load(), 0) << workers << " workers";
+        int wrong = 0;
+        for (const std::atomic<int>& d : done) wrong += d.load() != 1;
+        EXPECT_EQ(wrong, 0) << workers << " workers";
     }
 }
 
