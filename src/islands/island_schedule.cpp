@@ -170,15 +170,16 @@ void IslandScheduler::planContacts(const IslandView& island, const IslandSet::Ra
     // The contact update shares the pool out among the workers in consecutive stretches of
     // slots (TaskPool::parallelFor). Each colour lists its contacts by stretch of the pool
     // (a region), so the member that solves a contact is mostly the worker that updated it, and
-    // the contact's cache lines stay on one core. Dealt out at random, a line crossed cores
-    // twice a step, at up to 250 ns each on the machine measured (docs/performance.md).
-    // Regions of a power of two slots, as few as make at most kRegions (a shift, not a
-    // division per contact: this runs on one thread).
+    // the contact's cache lines stay on one core. Listed in island order, a contact's lines
+    // crossed cores about twice a step, at up to 250 ns each on the machine measured
+    // (docs/performance.md). Regions of a power of two slots, as few as make at most kRegions
+    // (a shift, not a division per contact: this runs on one thread).
     int shift = 0;
     while ((std::int64_t{GraphColoring::kRegions} << shift) < contactSlots) ++shift;
     resizeBuffer(regions_, static_cast<std::size_t>(count));
     for (int k = 0; k < count; ++k) {
-        regions_[k] = static_cast<std::uint8_t>(island.contacts[k] >> shift);
+        regions_[k] = static_cast<std::uint8_t>(
+            std::min(island.contacts[k] >> shift, GraphColoring::kRegions - 1));
     }
     order_.clear();
     coloring_.color(items_.data(), count, island.contactBodies, fixed_.data(), island.bodyCount,

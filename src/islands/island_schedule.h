@@ -8,10 +8,11 @@
 //
 // An island with at least kColoringThreshold constraints is coloured (graph_coloring.h): within
 // each group, and among the contacts, constraints are reordered colour by colour, one batch
-// per colour, so a team can share it out. Every constraint that acts on a body that never
-// moves (static or kinematic) then gets a private copy of that body in an extra solver slot,
-// so no two members ever write one slot (a constraint's write to such a body adds zero, so a
-// copy behaves exactly as the original).
+// per colour, so a team can share it out (within a colour, contacts by region of the contact
+// pool, so each stays on the core that updates it: planContacts). Every constraint that acts
+// on a body that never moves (static or kinematic) then gets a private copy of that body in an
+// extra solver slot, so no two members ever write one slot (a constraint's write to such a
+// body adds zero, so a copy behaves exactly as the original).
 //
 // A smaller island with at least kWideContactThreshold contacts has its contacts coloured
 // likewise (its joints keep the island's order, and their bodies their own slots): one thread
