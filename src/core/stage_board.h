@@ -62,16 +62,24 @@ public:
     int claim(std::uint32_t stage, int blocks, int member, int members) {
         Slot& slot = slots_[stage % kSlots];
         const std::uint64_t tag = std::uint64_t{stage} << 32;
-        const int segments = std::clamp(members, 1, std::min(kMaxSegments, blocks));
+        const int segments = segmentCount(blocks, members);
         for (int k = 0; k < segments; ++k) {
             const int segment = (member + k) % segments;
-            const int begin = shareStart(blocks, segment, segments);
-            const int end = shareStart(blocks, segment + 1, segments);
-            const int block = claimIn(slot.segments[segment].word, tag, end - begin);
+            const IndexRange own = segmentBlocks(blocks, segment, segments);
+            const int block = claimIn(slot.segments[segment].word, tag, own.end - own.begin);
             if (block == kLongAgo) return -1;
-            if (block >= 0) return begin + block;
+            if (block >= 0) return own.begin + block;
         }
         return -1;
+    }
+
+    /// How many segments `blocks` blocks are dealt into for `members` members, and the blocks
+    /// of segment `segment` (member `segment`'s own, claimed first).
+    static int segmentCount(int blocks, int members) {
+        return std::clamp(members, 1, std::min(kMaxSegments, blocks));
+    }
+    static IndexRange segmentBlocks(int blocks, int segment, int segments) {
+        return {shareStart(blocks, segment, segments), shareStart(blocks, segment + 1, segments)};
     }
 
     /// A block of `stage` is done: what it wrote is visible to whoever sees the stage finished.

@@ -46,15 +46,10 @@ public:
             f(IndexRange{0, count});
             return;
         }
-        const int blocks = std::clamp(count / std::max(minBlock, 1), 1,
-                                      std::min(kBlocksPerMember * size_, StageBoard::kMaxBlocks));
+        const int blocks = blockCount(count, minBlock);
         claimBlocks(blocks, [&](int b) {
-            const auto at = [&](int k) {
-                if (k == blocks) return count;
-                const auto even = static_cast<int>(static_cast<std::int64_t>(count) * k / blocks);
-                return even / alignment * alignment;
-            };
-            f(IndexRange{at(b), at(b + 1)});
+            f(IndexRange{blockStart(count, blocks, b, alignment),
+                         blockStart(count, blocks, b + 1, alignment)});
         });
     }
 
@@ -119,20 +114,27 @@ private:
         int blocks;
     };
 
+    /// forBlocks' cut of [0, count): how many blocks, and where block k starts (each but the
+    /// first at a multiple of `alignment`; k == blocks gives the end).
+    int blockCount(int count, int minBlock) const {
+        return std::clamp(count / std::max(minBlock, 1), 1,
+                          std::min(kBlocksPerMember * size_, StageBoard::kMaxBlocks));
+    }
+    static int blockStart(int count, int blocks, int k, int alignment) {
+        if (k == blocks) return count;
+        const auto even = static_cast<int>(static_cast<std::int64_t>(count) * k / blocks);
+        return even / alignment * alignment;
+    }
+
     /// The part of [0, count) that forBlocks(count, kMinBlock, f, kBatchAlignment) deals to
     /// `member`'s own segment (StageBoard::claim), empty for a member without one.
     IndexRange shareOf(int count, int member) const {
-        const int blocks = std::clamp(count / kMinBlock, 1,
-                                      std::min(kBlocksPerMember * size_, StageBoard::kMaxBlocks));
-        const int segments = std::clamp(size_, 1, std::min(StageBoard::kMaxSegments, blocks));
+        const int blocks = blockCount(count, kMinBlock);
+        const int segments = StageBoard::segmentCount(blocks, size_);
         if (member >= segments) return {0, 0};
-        const auto at = [&](int k) {
-            if (k == blocks) return count;
-            const auto even = static_cast<int>(static_cast<std::int64_t>(count) * k / blocks);
-            return even / kBatchAlignment * kBatchAlignment;
-        };
-        return {at(shareStart(blocks, member, segments)),
-                at(shareStart(blocks, member + 1, segments))};
+        const IndexRange own = StageBoard::segmentBlocks(blocks, member, segments);
+        return {blockStart(count, blocks, own.begin, kBatchAlignment),
+                blockStart(count, blocks, own.end, kBatchAlignment)};
     }
 
     template <typename Run>
