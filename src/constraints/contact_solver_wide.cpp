@@ -444,29 +444,28 @@ void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, fl
             point = {half * (centreA.x + centreB.x), half * (centreA.y + centreB.y)};
             separation = ((d.x * normal.x + d.y * normal.y) - radiusA) - radiusB;
         }
-        if (anyFaceA) {  // A's face, B's point
-            const VecLanes<F> normalA = rotateLanes(qA, localNormal);
-            const VecLanes<F> planeA = transformLanes(qA, pA, localPoint);
-            const VecLanes<F> pointOnB = transformLanes(qB, pB, local);
+        if (anyFaceA || anyFaceB) {
+            // One body's face and the other's point: A's face and B's point (FaceA), or the
+            // other way round with the normal turned to point from A to B (FaceB). The lanes
+            // pick their face's body first, so one measure serves both types, each lane's
+            // the same operations on the same values as its own type's.
+            const RotLanes<F> qFace{select(faceB, qB.s, qA.s), select(faceB, qB.c, qA.c)};
+            const RotLanes<F> qPoint{select(faceB, qA.s, qB.s), select(faceB, qA.c, qB.c)};
+            const VecLanes<F> pFace{select(faceB, pB.x, pA.x), select(faceB, pB.y, pA.y)};
+            const VecLanes<F> pPoint{select(faceB, pA.x, pB.x), select(faceB, pA.y, pB.y)};
+            const VecLanes<F> faceNormal = rotateLanes(qFace, localNormal);
+            const VecLanes<F> plane = transformLanes(qFace, pFace, localPoint);
+            const VecLanes<F> onPoint = transformLanes(qPoint, pPoint, local);
             const F s =
-                (((pointOnB.x - planeA.x) * normalA.x + (pointOnB.y - planeA.y) * normalA.y) -
+                (((onPoint.x - plane.x) * faceNormal.x + (onPoint.y - plane.y) * faceNormal.y) -
                  radiusA) -
                 radiusB;
-            normal = {select(faceA, normalA.x, normal.x), select(faceA, normalA.y, normal.y)};
-            point = {select(faceA, pointOnB.x, point.x), select(faceA, pointOnB.y, point.y)};
-            separation = select(faceA, s, separation);
-        }
-        if (anyFaceB) {  // B's face, A's point, the normal turned to point from A to B
-            const VecLanes<F> normalB = rotateLanes(qB, localNormal);
-            const VecLanes<F> planeB = transformLanes(qB, pB, localPoint);
-            const VecLanes<F> pointOnA = transformLanes(qA, pA, local);
-            const F s =
-                (((pointOnA.x - planeB.x) * normalB.x + (pointOnA.y - planeB.y) * normalB.y) -
-                 radiusA) -
-                radiusB;
-            normal = {select(faceB, -normalB.x, normal.x), select(faceB, -normalB.y, normal.y)};
-            point = {select(faceB, pointOnA.x, point.x), select(faceB, pointOnA.y, point.y)};
-            separation = select(faceB, s, separation);
+            const F face = either(faceA, faceB);
+            const VecLanes<F> turned{select(faceB, -faceNormal.x, faceNormal.x),
+                                     select(faceB, -faceNormal.y, faceNormal.y)};
+            normal = {select(face, turned.x, normal.x), select(face, turned.y, normal.y)};
+            point = {select(face, onPoint.x, point.x), select(face, onPoint.y, point.y)};
+            separation = select(face, s, separation);
         }
         store(separations[j], separation);
 
