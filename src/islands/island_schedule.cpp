@@ -173,17 +173,22 @@ void IslandScheduler::planContacts(const IslandView& island, const IslandSet::Ra
     // the contact's cache lines stay on one core. Listed in island order, a contact's lines
     // crossed cores about twice a step, at up to 250 ns each on the machine measured
     // (docs/performance.md). Regions of a power of two slots, as few as make at most kRegions
-    // (a shift, not a division per contact: this runs on one thread).
-    int shift = 0;
-    while ((std::int64_t{GraphColoring::kRegions} << shift) < contactSlots) ++shift;
-    resizeBuffer(regions_, static_cast<std::size_t>(count));
-    for (int k = 0; k < count; ++k) {
-        regions_[k] = static_cast<std::uint8_t>(
-            std::min(island.contacts[k] >> shift, GraphColoring::kRegions - 1));
+    // (a shift, not a division per contact: this runs on one thread). Only a coloured island
+    // is shared by a team; one whose contacts alone are coloured is solved whole by one worker.
+    const std::uint8_t* regions = nullptr;
+    if (schedule.colored) {
+        int shift = 0;
+        while ((std::int64_t{GraphColoring::kRegions} << shift) < contactSlots) ++shift;
+        resizeBuffer(regions_, static_cast<std::size_t>(count));
+        for (int k = 0; k < count; ++k) {
+            regions_[k] = static_cast<std::uint8_t>(
+                std::min(island.contacts[k] >> shift, GraphColoring::kRegions - 1));
+        }
+        regions = regions_.data();
     }
     order_.clear();
     coloring_.color(items_.data(), count, island.contactBodies, fixed_.data(), island.bodyCount,
-                    order_, schedule.contactBatches, 0, regions_.data());
+                    order_, schedule.contactBatches, 0, regions);
     for (int k = 0; k < count; ++k) {
         schedule.contactIds[k] = island.contacts[order_[k]];
         schedule.contactPairs[k] = island.contactBodies[order_[k]];
