@@ -20,10 +20,10 @@ void solvePseudoVelocityPass(const Team& team, JointGroups& groups, const Island
     });
 
     const float invH = 1.0f / h;
-    groups.forEachGroup([&](auto strategy, auto& group, int) {
+    groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
         if constexpr (S::kPseudoVelocityPass) {
-            team.forBlocks(static_cast<int>(group.size()), [&](IndexRange mine) {
+            team.forBatchShares(schedule.jointBatches[g], [&](IndexRange mine) {
                 for (int k = mine.begin; k < mine.end; ++k) S::beginPass(group[k], poses, invH);
             });
         }
@@ -102,10 +102,10 @@ void solveXpbdSweeps(const Team& team, JointGroups& groups, const IslandSchedule
         });
     }
     const float invH = 1.0f / h;
-    groups.forEachGroup([&](auto strategy, auto& group, int) {
+    groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
         if constexpr (S::kXpbdSweeps) {
-            team.forBlocks(static_cast<int>(group.size()), [&](IndexRange mine) {
+            team.forBatchShares(schedule.jointBatches[g], [&](IndexRange mine) {
                 for (int k = mine.begin; k < mine.end; ++k) group[k].takeXpbdReactions(invH);
             });
         }
@@ -207,10 +207,10 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
         return result;
     }
 
-    groups.forEachGroup([&](auto strategy, auto& group, int) {
+    groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
         if constexpr (S::kNgsSweeps) {
-            team.forBlocks(static_cast<int>(group.size()), [&](IndexRange mine) {
+            team.forBatchShares(schedule.jointBatches[g], [&](IndexRange mine) {
                 for (int k = mine.begin; k < mine.end; ++k) S::beginSweeps(group[k], poses);
             });
         }
