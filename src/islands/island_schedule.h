@@ -128,7 +128,7 @@ public:
         jointMembers_.reserve(bound.joints);
         items_.reserve(std::max(bound.joints, bound.contacts));
         order_.reserve(std::max(bound.joints, bound.contacts));
-        regions_.reserve(bound.contacts);
+        regions_.reserve(std::max(bound.joints, bound.contacts));
     }
 
 private:
@@ -142,6 +142,9 @@ private:
     /// Appends the joints of items_ (one group's, island by island) to order_, dealt out in
     /// turn among the bundle's islands.
     void dealOut(int memberCount);
+    /// regions_[i] for the joints items_[0..count) of a coloured island: which stretch of the
+    /// island's bodies each moves (bodyRegions in the .cpp says why).
+    void bodyRegions(const IslandView& island, int count);
     /// For the constraints of the coloured arrays: the contacts, and the joints if `joints`.
     void giveFixedBodiesPrivateSlots(const IslandView& island, IslandSchedule& schedule,
                                      bool joints);
@@ -150,7 +153,7 @@ private:
     std::vector<std::uint8_t> fixed_;  // per island body: never moves
     std::vector<std::int32_t> items_;
     std::vector<std::int32_t> order_;
-    std::vector<std::uint8_t> regions_;       // per island contact: its stretch of the pool
+    std::vector<std::uint8_t> regions_;  // per contact or joint: its stretch of the pool or bodies
     std::vector<std::uint8_t> jointGroups_;   // per island joint: its group, read once
     std::vector<std::uint8_t> jointMembers_;  // bundles: per island joint, its island
     std::array<std::int32_t, kMostBundleMembers + 1> memberItems_{};  // one group's, per island
