@@ -128,11 +128,17 @@ void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>
     const IslandSchedule& schedule = work.schedule;
     const bool remeasure = !firstSubstep && laterSubstepsRemeasure(step);
     const SolverPose* poses = work.positions.data();
+    // The joints are read from their pool in colour order, scattered: each is asked for a few
+    // joints ahead (a joint is several cache lines, and the set-up between two is long).
+    constexpr int kJointsAhead = 4;
     work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
         team.forBatchShares(schedule.jointBatches[g], [&](IndexRange mine) {
             for (int k = mine.begin; k < mine.end; ++k) {
                 const std::size_t at = static_cast<std::size_t>(schedule.groupStart[g] + k);
+                if (!remeasure && k + kJointsAhead < mine.end) {
+                    prefetch(&joints[schedule.jointIds[at + kJointsAhead]], sizeof(Joint));
+                }
                 const std::int32_t jointIndex = schedule.jointIds[at];
                 auto& joint = joints[jointIndex];
                 auto& c = group[k];
