@@ -110,6 +110,18 @@ void BroadPhase::rebuildChanged() {
     static_.rebuildChanged();  // only after a static body was moved by hand
 }
 
+void BroadPhase::rebuildChanged(TaskPool& pool) {
+    // The rebuild is work the caller did alone while the other workers waited: on two workers,
+    // sharing the subtrees took a third of it off the caller (`spinner` and `smash` soft step,
+    // whose blade or flying bricks reach the root every step; docs/performance.md).
+    moving_.rebuildChanged([&](int count, const auto& build) {
+        pool.parallelFor(count, 1, [&](int begin, int end, int) {
+            for (int i = begin; i < end; ++i) build(i);
+        });
+    });
+    static_.rebuildChanged();
+}
+
 void BroadPhase::markBuffered(std::uint8_t value) {
     if (buffered_.size() < static_cast<std::size_t>(moving_.idBound())) {
         buffered_.resize(static_cast<std::size_t>(moving_.idBound()), 0);

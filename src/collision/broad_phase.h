@@ -183,6 +183,8 @@ private:
     template <typename Emit>
     void querySweep(const Sweep& sweep, Emit&& emit) const;
     void rebuildChanged();
+    /// The same, the moving tree's subtrees built by the pool's workers (the same tree).
+    void rebuildChanged(TaskPool& pool);
     template <typename AddPair>
     void reportSortedPairs(AddPair&& addPair);
     void markBuffered(std::uint8_t value);
@@ -314,7 +316,7 @@ void BroadPhase::updatePairs(TaskPool& pool, MayQuery&& mayQuery, MayPair&& mayP
         std::any_of(sweeps_.begin(), sweeps_.end(), [&](const Sweep& sweep) {
             return sweep.proxy != kNullProxy && mayQuery(userData(sweep.proxy));
         });
-    if (anyQuery) rebuildChanged();
+    if (anyQuery) rebuildChanged(pool);
     markBuffered(1);
     pool.parallelFor(static_cast<int>(moveBuffer_.size()), 256,
                      [&](int begin, int end, int worker) {

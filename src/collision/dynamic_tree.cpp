@@ -325,51 +325,105 @@ bool DynamicTree::refitProxy(std::int32_t proxyId, const AABB& tightBox) {
     return true;
 }
 
-void DynamicTree::rebuildChanged() {
-    if (root_ == kNullNode || !changed_[root_]) return;
+int DynamicTree::beginRebuild() {
+    if (root_ == kNullNode || !changed_[root_]) return 0;
     // A rebuild takes apart at most every internal node (one fewer than the leaves), which
     // leaves at most one part a leaf; the tasks pending and the nodes built are as few. Room
     // for that many, so a warm step never allocates here, however much of the tree it takes
     // apart.
     const auto most = static_cast<std::size_t>(proxyCount_) + 1;
     if (parts_.capacity() < most) parts_.reserve(most);
-    if (buildTasks_.capacity() < most) buildTasks_.reserve(most);
-    if (builtNodes_.capacity() < most) builtNodes_.reserve(most);
+    // Grown, never shrunk: its tasks are written before they are read.
+    if (buildTasks_.size() < most) buildTasks_.resize(most);
+    if (buildIds_.capacity() < most) buildIds_.reserve(most);
     const AABB centres = collectParts();
+    const auto count = static_cast<std::int32_t>(parts_.size());
 
-    builtNodes_.clear();
-    buildTasks_.push_back({0, static_cast<std::int32_t>(parts_.size()), kNullNode, centres});
-    while (!buildTasks_.empty()) {
-        BuildTask task = buildTasks_.back();
-        buildTasks_.pop_back();
+    // collectParts freed the count - 1 internal nodes above the parts, and they head the free
+    // list: the new nodes are taken from it here, all of them, in the order a depth-first
+    // build takes them, so that building the subtrees in any order gives the same ids.
+    buildIds_.clear();
+    for (std::int32_t k = 0; k + 1 < count; ++k) buildIds_.push_back(allocateNode());
+
+    // The first levels, depth first; each task at the last of them (or of a single part) is a
+    // subtree. At most one pending task per level, and one more.
+    const int levels = count >= kMinPartsToShare ? kRebuildLevels : 0;
+    struct Pending {
+        BuildTask task;
+        int depth;
+    };
+    Pending pending[kRebuildLevels + 1];
+    int size = 0;
+    pending[size++] = {{0, count, kNullNode, 0, centres, false}, 0};
+    subtreeCount_ = 0;
+    topCount_ = 0;
+    while (size > 0) {
+        const Pending top = pending[--size];
+        const BuildTask& task = top.task;
+        if (top.depth == levels || task.end - task.begin == 1) {
+            subtrees_[static_cast<std::size_t>(subtreeCount_++)] = task;
+            continue;
+        }
+        const std::int32_t nodeId = buildIds_[static_cast<std::size_t>(task.first)];
+        link(nodeId, task);
+        topNodes_[static_cast<std::size_t>(topCount_++)] = nodeId;
+        AABB halves[2];
+        const std::int32_t middle = splitParts(task, halves);
+        const std::int32_t firstHalfNodes = middle - task.begin - 1;
+        pending[size++] = {
+            {middle, task.end, nodeId, task.first + 1 + firstHalfNodes, halves[1], true},
+            top.depth + 1};
+        pending[size++] = {{task.begin, middle, nodeId, task.first + 1, halves[0], false},
+                           top.depth + 1};
+    }
+    return subtreeCount_;
+}
+
+void DynamicTree::buildSubtree(int index) {
+    const BuildTask& root = subtrees_[static_cast<std::size_t>(index)];
+    // The second halves wait in the subtree's own stretch of buildTasks_: each holds at least
+    // one of its parts, and they hold different ones.
+    BuildTask* pending = buildTasks_.data() + root.begin;
+    int size = 0;
+    pending[size++] = root;
+    while (size > 0) {
+        BuildTask task = pending[--size];
         // Down the first halves without the stack (pushing a task and popping it again at once
-        // was half of this loop's time); the second halves wait on it.
+        // was half of this loop's time).
         for (;;) {
-            const bool single = task.end - task.begin == 1;
-            std::int32_t nodeId;
-            if (single) {
-                nodeId = parts_[task.begin].node;
-            } else {
-                nodeId = allocateNode();
-                builtNodes_.push_back(nodeId);
+            if (task.end - task.begin == 1) {
+                link(parts_[static_cast<std::size_t>(task.begin)].node, task);
+                break;
             }
-            nodes_[nodeId].parent = task.parent;
-            if (task.parent == kNullNode) {
-                root_ = nodeId;
-            } else if (nodes_[task.parent].child1 == kNullNode) {
-                nodes_[task.parent].child1 = nodeId;
-            } else {
-                nodes_[task.parent].child2 = nodeId;
-            }
-            if (single) break;
+            const std::int32_t nodeId = buildIds_[static_cast<std::size_t>(task.first)];
+            link(nodeId, task);
             AABB halves[2];
             const std::int32_t middle = splitParts(task, halves);
-            buildTasks_.push_back({middle, task.end, nodeId, halves[1]});
-            task = {task.begin, middle, nodeId, halves[0]};
+            const std::int32_t firstHalfNodes = middle - task.begin - 1;
+            pending[size++] = {middle,    task.end, nodeId, task.first + 1 + firstHalfNodes,
+                               halves[1], true};
+            task = {task.begin, middle, nodeId, task.first + 1, halves[0], false};
         }
     }
-    // A node was made before its children: boxes and heights are set in reverse.
-    for (auto it = builtNodes_.rbegin(); it != builtNodes_.rend(); ++it) refitNode(*it);
+    // A node's id comes before its children's: boxes and heights are set in reverse.
+    for (std::int32_t k = root.first + (root.end - root.begin - 1) - 1; k >= root.first; --k) {
+        refitNode(buildIds_[static_cast<std::size_t>(k)]);
+    }
+}
+
+void DynamicTree::endRebuild() {
+    for (int k = topCount_ - 1; k >= 0; --k) refitNode(topNodes_[static_cast<std::size_t>(k)]);
+}
+
+void DynamicTree::link(std::int32_t nodeId, const BuildTask& task) {
+    nodes_[nodeId].parent = task.parent;
+    if (task.parent == kNullNode) {
+        root_ = nodeId;
+    } else if (task.second) {
+        nodes_[task.parent].child2 = nodeId;
+    } else {
+        nodes_[task.parent].child1 = nodeId;
+    }
 }
 
 // Takes the changed nodes apart from the root down (freeing them, which also clears their
@@ -377,13 +431,15 @@ void DynamicTree::rebuildChanged() {
 // centres on the way.
 AABB DynamicTree::collectParts() {
     parts_.clear();
-    buildTasks_.clear();
-    buildTasks_.push_back({root_, 0, kNullNode, {}});
+    // The second children waiting, in buildIds_ (free until the new ids are taken).
+    std::vector<std::int32_t>& pending = buildIds_;
+    pending.clear();
+    pending.push_back(root_);
     constexpr float kInf = std::numeric_limits<float>::infinity();
     AABB centres{{kInf, kInf}, {-kInf, -kInf}};
-    while (!buildTasks_.empty()) {
-        std::int32_t nodeId = buildTasks_.back().begin;
-        buildTasks_.pop_back();
+    while (!pending.empty()) {
+        std::int32_t nodeId = pending.back();
+        pending.pop_back();
         // Down the first children without the stack; the second ones wait on it.
         for (;;) {
             const Node& node = nodes_[nodeId];
@@ -394,7 +450,7 @@ AABB DynamicTree::collectParts() {
                 break;
             }
             const std::int32_t child1 = node.child1;
-            buildTasks_.push_back({node.child2, 0, kNullNode, {}});
+            pending.push_back(node.child2);
             freeNode(nodeId);
             nodeId = child1;
         }

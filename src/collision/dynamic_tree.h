@@ -120,7 +120,23 @@ public:
     /// the longer side of their centres. Proxy ids, boxes and user data are kept; only
     /// the tree's shape changes (so the order queries visit proxies in). The same tree and
     /// moves give the same result. Nothing to do when nothing grew.
-    void rebuildChanged();
+    void rebuildChanged() {
+        rebuildChanged([](int count, const auto& build) {
+            for (int i = 0; i < count; ++i) build(i);
+        });
+    }
+    /// The same, with the subtrees below the rebuild's first kRebuildLevels levels built by
+    /// `runTasks(count, build)`, which must call build(i) once for each i in [0, count), in any
+    /// order, on any threads, and return when all have returned. Every new node's id is taken
+    /// before they start, in the order the one-thread build takes them, so the tree is the same
+    /// whoever builds which subtree.
+    template <typename RunTasks>
+    void rebuildChanged(RunTasks&& runTasks) {
+        const int subtrees = beginRebuild();
+        if (subtrees == 0) return;
+        runTasks(subtrees, [this](int i) { buildSubtree(i); });
+        endRebuild();
+    }
 
     /// How much larger than needed (in margins, per side) a stored box may be before it is
     /// shrunk: enough slack that a shape wandering about a little never causes a re-insert.
@@ -223,8 +239,22 @@ private:
         std::int32_t begin;
         std::int32_t end;
         std::int32_t parent;  ///< kNullNode for the root
+        std::int32_t first;   ///< where its new nodes' ids start in buildIds_
         AABB centres;         ///< the bounds of the parts' centres
+        bool second;          ///< it hangs as its parent's child2 (else child1)
     };
+    // The first levels of a rebuild of at least kMinPartsToShare parts are built before the
+    // rest, which is up to 2^kRebuildLevels subtrees, built by runTasks.
+    static constexpr int kRebuildLevels = 3;
+    static constexpr std::int32_t kMinPartsToShare = 1024;
+    /// Takes the changed nodes apart, takes the new nodes' ids and builds the first levels;
+    /// returns how many subtrees are left to build (0: nothing to rebuild).
+    int beginRebuild();
+    void buildSubtree(int index);
+    /// Refits the first levels' nodes, once their subtrees are built.
+    void endRebuild();
+    /// Hangs `nodeId` where `task` says (its parent's child, or the root).
+    void link(std::int32_t nodeId, const BuildTask& task);
     /// Returns the bounds of the parts' centres.
     AABB collectParts();
     /// Returns where the second half starts; `halves` gets the two halves' centre bounds.
@@ -235,9 +265,15 @@ private:
     // (so the marks are a subtree at the top). Saved with the tree.
     std::vector<std::uint8_t> changed_;
     // rebuildChanged's scratch, kept for its capacity.
-    std::vector<Part> parts_;  // the centres copied, so the splits read them in order
-    std::vector<BuildTask> buildTasks_;
-    std::vector<std::int32_t> builtNodes_;
+    std::vector<Part> parts_;            // the centres copied, so the splits read them in order
+    std::vector<BuildTask> buildTasks_;  // a subtree's pending halves in its stretch of parts
+    // The new nodes' ids, in the order a depth-first build, first halves first, makes them: a
+    // node's subtree of n parts takes the n - 1 ids from its own.
+    std::vector<std::int32_t> buildIds_;
+    std::array<BuildTask, std::size_t{1} << kRebuildLevels> subtrees_{};
+    std::array<std::int32_t, (std::size_t{1} << kRebuildLevels) - 1> topNodes_{};
+    int subtreeCount_ = 0;
+    int topCount_ = 0;
     std::int32_t root_ = kNullNode;
     std::int32_t freeList_ = kNullNode;
     std::int32_t proxyCount_ = 0;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "collision/dynamic_tree.h"
@@ -436,6 +437,56 @@ TEST(DynamicTree, ARebuildRegroupsLeavesThatTravelled) {
     EXPECT_LE(tree.height(), 3 * heightBound(500));
     for (std::size_t i = 0; i < ids.size(); ++i)
         EXPECT_TRUE(contains(tree.fatBox(ids[i]), tight[i]));
+}
+
+// A rebuild whose subtrees are built by other threads, in another order, must make the tree the
+// one-thread rebuild makes, node for node: the broad phase shares it out among a world's
+// workers, and a world's results may not depend on how many it has.
+TEST(DynamicTree, ASharedRebuildMakesTheTreeTheOneThreadRebuildMakes) {
+    for (const int count : {300, 3000, 20000}) {
+        std::mt19937 rng(static_cast<std::uint32_t>(count));
+        DynamicTree alone;
+        DynamicTree shared;
+        std::vector<std::int32_t> ids;
+        std::vector<AABB> tight;
+        for (int i = 0; i < count; ++i) {
+            tight.push_back(randomBox(rng, 200.0f, 0.5f));
+            ids.push_back(alone.createProxy(tight.back(), i));
+            ASSERT_EQ(shared.createProxy(tight.back(), i), ids.back());
+        }
+        for (int round = 0; round < 3; ++round) {
+            // Some leaves jump far, most stay: the rebuild keeps the subtrees they left alone.
+            std::uniform_int_distribution<int> jump(0, 3);
+            for (std::size_t i = 0; i < ids.size(); ++i) {
+                if (jump(rng) != 0) continue;
+                tight[i] = randomBox(rng, 200.0f, 0.5f);
+                ASSERT_EQ(alone.refitProxy(ids[i], tight[i]), shared.refitProxy(ids[i], tight[i]));
+            }
+            alone.rebuildChanged();
+            int subtrees = 0;
+            shared.rebuildChanged([&](int n, const auto& build) {
+                subtrees = n;
+                // Last first, the odd ones on another thread.
+                std::thread other([&] {
+                    for (int i = n - 1; i >= 0; i -= 2) build(i);
+                });
+                for (int i = n - 2; i >= 0; i -= 2) build(i);
+                other.join();
+            });
+            // Big rebuilds are shared out; small ones stay whole.
+            if (count >= 3000) {
+                EXPECT_GT(subtrees, 1) << count;
+            } else {
+                EXPECT_EQ(subtrees, 1) << count;
+            }
+            ASSERT_TRUE(shared.isValid());
+            SnapshotWriter a;
+            SnapshotWriter b;
+            alone.save(a);
+            shared.save(b);
+            ASSERT_EQ(a.bytes(), b.bytes()) << count << " round " << round;
+        }
+    }
 }
 
 TEST(DynamicTree, ALeafMovingInsideItsGroupsBoxLeavesTheTreeAsItWas) {
