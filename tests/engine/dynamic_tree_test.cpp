@@ -1,5 +1,5 @@
 // The dynamic AABB tree: structure after random edits, queries against brute force, balance,
-// fat boxes and re-insertion on move, node reuse.
+// fat boxes and re-insertion on move, node reuse, rebuilds shared among threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -466,7 +466,7 @@ TEST(DynamicTree, ASharedRebuildMakesTheTreeTheOneThreadRebuildMakes) {
             int subtrees = 0;
             shared.rebuildChanged([&](int n, const auto& build) {
                 subtrees = n;
-                // Last first, the odd ones on another thread.
+                // Last first: every second subtree from the last on another thread, the rest here.
                 std::thread other([&] {
                     for (int i = n - 1; i >= 0; i -= 2) build(i);
                 });
