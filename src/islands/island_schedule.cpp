@@ -135,7 +135,10 @@ void IslandScheduler::planJoints(const IslandView& island, const IslandSet::Rang
 // first movable body, kRegions regions), so the cuts of all colours fall near the same body.
 void IslandScheduler::bodyRegions(const IslandView& island, int count) {
     resizeBuffer(regions_, static_cast<std::size_t>(count));
-    const std::int64_t bodies = std::max(island.bodyCount, 1);
+    // kRegions / bodyCount in 32.32 fixed point: a multiply per joint, not a division (this
+    // runs on one thread, at every step where the island changed).
+    const std::uint64_t scale = (std::uint64_t{GraphColoring::kRegions} << 32) /
+                                static_cast<std::uint64_t>(std::max(island.bodyCount, 1));
     for (int i = 0; i < count; ++i) {
         std::int32_t slot = 0;
         for (const std::int32_t body : island.jointBodies[items_[static_cast<std::size_t>(i)]]) {
@@ -144,8 +147,9 @@ void IslandScheduler::bodyRegions(const IslandView& island, int count) {
                 break;
             }
         }
+        const std::uint64_t region = (static_cast<std::uint64_t>(slot) * scale) >> 32;
         regions_[static_cast<std::size_t>(i)] =
-            static_cast<std::uint8_t>(slot * GraphColoring::kRegions / bodies);
+            static_cast<std::uint8_t>(std::min<std::uint64_t>(region, GraphColoring::kRegions - 1));
     }
 }
 
