@@ -367,14 +367,10 @@ int DynamicTree::beginRebuild() {
         const std::int32_t nodeId = buildIds_[static_cast<std::size_t>(task.first)];
         link(nodeId, task);
         topNodes_[static_cast<std::size_t>(topCount_++)] = nodeId;
-        AABB halves[2];
-        const std::int32_t middle = splitParts(task, halves);
-        const std::int32_t firstHalfNodes = middle - task.begin - 1;
-        pending[size++] = {
-            {middle, task.end, nodeId, task.first + 1 + firstHalfNodes, halves[1], true},
-            top.depth + 1};
-        pending[size++] = {{task.begin, middle, nodeId, task.first + 1, halves[0], false},
-                           top.depth + 1};
+        BuildTask halves[2];
+        halve(task, nodeId, halves);
+        pending[size++] = {halves[1], top.depth + 1};
+        pending[size++] = {halves[0], top.depth + 1};
     }
     return subtreeCount_;
 }
@@ -397,18 +393,25 @@ void DynamicTree::buildSubtree(int index) {
             }
             const std::int32_t nodeId = buildIds_[static_cast<std::size_t>(task.first)];
             link(nodeId, task);
-            AABB halves[2];
-            const std::int32_t middle = splitParts(task, halves);
-            const std::int32_t firstHalfNodes = middle - task.begin - 1;
-            pending[size++] = {middle,    task.end, nodeId, task.first + 1 + firstHalfNodes,
-                               halves[1], true};
-            task = {task.begin, middle, nodeId, task.first + 1, halves[0], false};
+            BuildTask halves[2];
+            halve(task, nodeId, halves);
+            pending[size++] = halves[1];
+            task = halves[0];
         }
     }
     // A node's id comes before its children's: boxes and heights are set in reverse.
     for (std::int32_t k = root.first + (root.end - root.begin - 1) - 1; k >= root.first; --k) {
         refitNode(buildIds_[static_cast<std::size_t>(k)]);
     }
+}
+
+void DynamicTree::halve(const BuildTask& task, std::int32_t nodeId, BuildTask (&halves)[2]) {
+    AABB centres[2];
+    const std::int32_t middle = splitParts(task, centres);
+    // Depth first, first halves first: the node's id, then the first half's, then the second's.
+    const std::int32_t firstHalfNodes = middle - task.begin - 1;
+    halves[0] = {task.begin, middle, nodeId, task.first + 1, centres[0], false};
+    halves[1] = {middle, task.end, nodeId, task.first + 1 + firstHalfNodes, centres[1], true};
 }
 
 void DynamicTree::endRebuild() {

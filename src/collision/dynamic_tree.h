@@ -253,6 +253,8 @@ private:
     void buildSubtree(int index);
     /// Refits the first levels' nodes, once their subtrees are built.
     void endRebuild();
+    /// Splits `task`, whose node is `nodeId`, into its two halves' tasks.
+    void halve(const BuildTask& task, std::int32_t nodeId, BuildTask (&halves)[2]);
     /// Hangs `nodeId` where `task` says (its parent's child, or the root).
     void link(std::int32_t nodeId, const BuildTask& task);
     /// Returns the bounds of the parts' centres.
