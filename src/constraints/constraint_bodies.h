@@ -4,7 +4,6 @@
 #include <cstdint>
 
 #include "constraints/solver_body.h"
-#include "model/body.h"
 
 namespace pivot {
 
@@ -19,8 +18,10 @@ struct ConstraintBodies {
     bool fixedRotation() const { return iA + iB == 0.0f; }
 };
 
-/// The constraint's view of bodies a and b, in solver slots slots[0] and slots[1].
-inline ConstraintBodies constraintBodies(const JointSlots& slots, const Body& a, const Body& b) {
+/// The constraint's view of bodies a and b, in solver slots slots[0] and slots[1] (their
+/// inputs are the solver's copy, read in slot order, where the bodies are scattered in their pool).
+inline ConstraintBodies constraintBodies(const JointSlots& slots, const SolverBodyInputs& a,
+                                         const SolverBodyInputs& b) {
     ConstraintBodies bodies;
     bodies.indexA = slots[0];
     bodies.indexB = slots[1];

@@ -32,10 +32,8 @@
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "constraints/xpbd_rows.h"
-#include "core/slot_pool.h"
 #include "joints/gear_joint.h"
 #include "joints/joint.h"
-#include "model/body.h"
 #include "pivot/constants.h"
 
 namespace pivot {
@@ -79,14 +77,15 @@ struct GearConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the stored impulse.
     /// Returns C^2.
-    float prepare(const Joint& joint, std::int32_t jointAt, const SlotPool<Body>& pool,
+    float prepare(const Joint& joint, std::int32_t jointAt, const SolverBodyInputs* inputs,
                   const JointSlots& slots, const SolverPose* poses, const StepContext&) {
         const GearJoint& gear = std::get<GearJoint>(joint.data);
         jointIndex = jointAt;
         biasFactor = joint.biasFactor();
         index = slots;
-        const Body* bodies[4] = {&pool[joint.bodyA()], &pool[joint.bodyB()], &pool[gear.side1.base],
-                                 &pool[gear.side2.base]};
+        // Slots 2 and 3 are the bases (island_builder.cpp: Joint::extraBodies, in side order).
+        const SolverBodyInputs* bodies[4] = {&inputs[slots[0]], &inputs[slots[1]],
+                                             &inputs[slots[2]], &inputs[slots[3]]};
         for (int n = 0; n < 4; ++n) {
             m[n] = bodies[n]->invMass;
             i[n] = bodies[n]->invInertia;

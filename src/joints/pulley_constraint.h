@@ -10,10 +10,8 @@
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "constraints/xpbd_rows.h"
-#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/pulley_joint.h"
-#include "model/body.h"
 
 namespace pivot {
 
@@ -31,10 +29,10 @@ struct PulleyConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the stored impulse.
     /// Returns the joint's separation squared, C^2.
-    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+    float prepare(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
                   const JointSlots& slots, const SolverPose* poses, const StepContext&) {
-        const Body& a = pool[joint.bodyA()];
-        const Body& b = pool[joint.bodyB()];
+        const SolverBodyInputs& a = inputs[slots[0]];
+        const SolverBodyInputs& b = inputs[slots[1]];
         const PulleyJoint& p = std::get<PulleyJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();

@@ -26,10 +26,8 @@
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "constraints/xpbd_rows.h"
-#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/revolute_joint.h"
-#include "model/body.h"
 
 namespace pivot {
 
@@ -46,10 +44,10 @@ struct RevoluteConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
     /// stored (unscaled: see startImpulses). Returns the anchors' separation squared, m^2.
-    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+    float prepare(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
                   const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
-        const Body& a = pool[joint.bodyA()];
-        const Body& b = pool[joint.bodyB()];
+        const SolverBodyInputs& a = inputs[slots[0]];
+        const SolverBodyInputs& b = inputs[slots[1]];
         const RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();

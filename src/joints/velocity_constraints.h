@@ -22,10 +22,8 @@
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "constraints/xpbd_rows.h"
-#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/velocity_joints.h"
-#include "model/body.h"
 
 namespace pivot {
 
@@ -142,8 +140,8 @@ struct ClampedVelocityRows {
     }
 
 protected:
-    void prepareBodies(std::int32_t index, const Joint& joint, const Body& a, const Body& b,
-                       const JointSlots& slots) {
+    void prepareBodies(std::int32_t index, const Joint& joint, const SolverBodyInputs& a,
+                       const SolverBodyInputs& b, const JointSlots& slots) {
         jointIndex = index;
         biasFactor = joint.biasFactor();
         bodies = constraintBodies(slots, a, b);
@@ -153,10 +151,10 @@ protected:
 struct FrictionConstraint : ClampedVelocityRows {
     using Storage = FrictionJoint;
 
-    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+    float prepare(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
                   const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
-        const Body& a = pool[joint.bodyA()];
-        const Body& b = pool[joint.bodyB()];
+        const SolverBodyInputs& a = inputs[slots[0]];
+        const SolverBodyInputs& b = inputs[slots[1]];
         const FrictionJoint& f = std::get<FrictionJoint>(joint.data);
         prepareBodies(index, joint, a, b, slots);
         rA = rotate(Rot(poses[bodies.indexA].a), joint.localAnchorA - a.localCenter);
@@ -182,10 +180,10 @@ struct FrictionConstraint : ClampedVelocityRows {
 struct MotorConstraint : ClampedVelocityRows {
     using Storage = MotorJoint;
 
-    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+    float prepare(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
                   const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
-        const Body& a = pool[joint.bodyA()];
-        const Body& b = pool[joint.bodyB()];
+        const SolverBodyInputs& a = inputs[slots[0]];
+        const SolverBodyInputs& b = inputs[slots[1]];
         const MotorJoint& m = std::get<MotorJoint>(joint.data);
         prepareBodies(index, joint, a, b, slots);
         const SolverPose& A = poses[bodies.indexA];

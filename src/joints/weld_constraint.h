@@ -29,10 +29,8 @@
 #include "constraints/step_context.h"
 #include "constraints/xpbd_rows.h"
 #include "core/mat33.h"
-#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/weld_joint.h"
-#include "model/body.h"
 
 namespace pivot {
 
@@ -71,10 +69,10 @@ struct WeldConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulse as
     /// stored. Returns the joint's separation squared, m^2 (WeldJoint::separation).
-    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+    float prepare(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
                   const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
-        const Body& a = pool[joint.bodyA()];
-        const Body& b = pool[joint.bodyB()];
+        const SolverBodyInputs& a = inputs[slots[0]];
+        const SolverBodyInputs& b = inputs[slots[1]];
         const WeldJoint& w = std::get<WeldJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();

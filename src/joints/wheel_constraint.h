@@ -25,10 +25,8 @@
 #include "constraints/solver_body.h"
 #include "constraints/step_context.h"
 #include "constraints/xpbd_rows.h"
-#include "core/slot_pool.h"
 #include "joints/joint.h"
 #include "joints/wheel_joint.h"
-#include "model/body.h"
 
 namespace pivot {
 
@@ -63,10 +61,10 @@ struct WheelConstraint {
 
     /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
     /// stored. Returns the joint's separation squared, m^2 (WheelJoint::separation).
-    float prepare(const Joint& joint, std::int32_t index, const SlotPool<Body>& pool,
+    float prepare(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
                   const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
-        const Body& a = pool[joint.bodyA()];
-        const Body& b = pool[joint.bodyB()];
+        const SolverBodyInputs& a = inputs[slots[0]];
+        const SolverBodyInputs& b = inputs[slots[1]];
         const WheelJoint& w = std::get<WheelJoint>(joint.data);
         jointIndex = index;
         biasFactor = joint.biasFactor();

@@ -112,74 +112,107 @@ bool beyondLetGoSeparation(const Joint& joint, float separationSquared, const St
     return limit > 0.0f && !(separationSquared <= limit * limit);
 }
 
+// Whether constraints of type C under strategy S are kept from one substep to the next and
+// measured again at the current poses (the same values as a rebuild, without reading the joint
+// and its bodies again), instead of rebuilt.
+template <typename S, typename C>
+constexpr bool keptAcrossSubsteps() {
+    return S::kKeptAcrossSubsteps && CanRemeasure<C>::value;
+}
+
+// A kept constraint at a later substep: measured at the current poses (or left inert if its
+// joint was let go: work.jointLetGo says which, so the joint is not read), its bias from them.
+template <typename S, typename C>
+void remeasureKept(C& c, bool letGo, const SolverPose* poses, const Rot* rotations,
+                   const StepContext& step) {
+    if (letGo) {
+        c.makeInert();
+    } else if constexpr (RemeasuresWithRotations<C>::value) {
+        if (rotations) {
+            c.remeasure(poses, rotations, step);
+        } else {
+            c.remeasure(poses, step);
+        }
+    } else {
+        c.remeasure(poses, step);
+    }
+    S::prepareBias(c, poses, step.invDt);
+}
+
 // Build each joint's solver constraint in its group (no velocity is touched: the warm start
 // comes after, in warmStartJoints). The first substep of a step lets go of the joints beyond
 // their let-go separation; later substeps rebuild each constraint at the current poses from the
-// impulses the substep before stored, or re-measure it where it already holds those
-// (kKeptAcrossSubsteps: the same values without reading the joint and its bodies again), and
-// keep a let-go joint inert (work.jointLetGo says which, so a re-measured joint is not read).
+// impulses the substep before stored, except the kept ones (keptAcrossSubsteps), which the warm
+// start re-measures (warmStartRemeasuring).
 // Each member prepares the share of every colour that its sweeps solve first (forBatchShares),
 // so a constraint's lines stay on one core: cut by forBlocks instead, the set-up wrote half of
 // the constraints on the other core, and `joint_grid`'s soft step on two workers was 15% slower
 // (the same holds for the joints' other passes over a whole group).
-void prepareJoints(const Team& team, IslandWorkspace& work, const SlotPool<Body>& bodies,
-                   SlotPool<Joint>& joints, const StepContext& step, bool firstSubstep,
-                   const Rot* rotations, IslandReport* reports) {
+void prepareJoints(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
+                   const StepContext& step, bool firstSubstep, IslandReport* reports) {
     const IslandSchedule& schedule = work.schedule;
     const bool remeasure = !firstSubstep && laterSubstepsRemeasure(step);
     const SolverPose* poses = work.positions.data();
+    const SolverBodyInputs* inputs = work.bodyInputs.data();
     // The joints are read from their pool in colour order, scattered: each is asked for a few
     // joints ahead (a joint is several cache lines, and the set-up between two is long).
     constexpr int kJointsAhead = 4;
     work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
         using S = decltype(strategy);
+        using C = typename std::decay_t<decltype(group)>::value_type;
+        if constexpr (keptAcrossSubsteps<S, C>()) {
+            if (remeasure) return;  // warmStartRemeasuring's
+        }
         team.forBatchShares(schedule.jointBatches[g], [&](IndexRange mine) {
             for (int k = mine.begin; k < mine.end; ++k) {
                 const std::size_t at = static_cast<std::size_t>(schedule.groupStart[g] + k);
-                if (!remeasure && k + kJointsAhead < mine.end) {
+                if (k + kJointsAhead < mine.end) {
                     prefetch(&joints[schedule.jointIds[at + kJointsAhead]], sizeof(Joint));
                 }
                 const std::int32_t jointIndex = schedule.jointIds[at];
                 auto& joint = joints[jointIndex];
-                auto& c = group[k];
-                using C = std::decay_t<decltype(c)>;
-                bool remeasured = false;
-                if constexpr (S::kKeptAcrossSubsteps && CanRemeasure<C>::value) {
-                    if (remeasure) {
-                        if (work.jointLetGo[at]) {
-                            c.makeInert();
-                        } else if constexpr (RemeasuresWithRotations<C>::value) {
-                            if (rotations) {
-                                c.remeasure(poses, rotations, step);
-                            } else {
-                                c.remeasure(poses, step);
-                            }
-                        } else {
-                            c.remeasure(poses, step);
-                        }
-                        remeasured = true;
-                    }
+                C& c = group[k];
+                c = {};
+                const float separationSquared =
+                    c.prepare(joint, jointIndex, inputs, schedule.jointPairs[at], poses, step);
+                S::prepareSoftness(c, joint, step);
+                if (!firstSubstep && joint.letGo) {
+                    c.makeInert();
+                } else if (firstSubstep && beyondLetGoSeparation(joint, separationSquared, step)) {
+                    joint.letGoFor(JointLetGoReason::Separation, std::sqrt(separationSquared));
+                    ++reports[jointMember(schedule, at)].letGoJoints;
+                    c.makeInert();
+                } else {
+                    const bool warm = S::kWarmStart || isVelocityOnly<C>();
+                    c.startImpulses(joint, step.warmStarting && warm, step.dtRatio);
                 }
-                if (!remeasured) {
-                    c = {};
-                    const float separationSquared =
-                        c.prepare(joint, jointIndex, bodies, schedule.jointPairs[at], poses, step);
-                    S::prepareSoftness(c, joint, step);
-                    if (!firstSubstep && joint.letGo) {
-                        c.makeInert();
-                    } else if (firstSubstep &&
-                               beyondLetGoSeparation(joint, separationSquared, step)) {
-                        joint.letGoFor(JointLetGoReason::Separation, std::sqrt(separationSquared));
-                        ++reports[jointMember(schedule, at)].letGoJoints;
-                        c.makeInert();
-                    } else {
-                        const bool warm = S::kWarmStart || isVelocityOnly<C>();
-                        c.startImpulses(joint, step.warmStarting && warm, step.dtRatio);
-                    }
-                    work.jointLetGo[at] = joint.letGo ? 1 : 0;
-                }
+                work.jointLetGo[at] = joint.letGo ? 1 : 0;
                 // The strategy's bias from the error at these poses (the constraint's own).
                 S::prepareBias(c, poses, step.invDt);
+            }
+        });
+    });
+}
+
+// The warm start of a later substep whose kept constraints re-measure (prepareJoints left them):
+// each is measured in the block that warm-starts it, so its lines and its bodies' are read once
+// for both. The re-measure reads the poses only, which nothing in between writes (the contacts'
+// warm start writes velocities), so the values are prepareJoints' own. Done in a pass of their
+// own, the re-measures were more than half of the joints' set-up time in `joint_grid`'s soft step.
+void warmStartRemeasuring(const Team& team, IslandWorkspace& work, const StepContext& step,
+                          const Rot* rotations, SolverVelocity* velocities) {
+    const IslandSchedule& schedule = work.schedule;
+    const SolverPose* poses = work.positions.data();
+    work.groups.forEachGroup([&](auto strategy, auto& group, int g) {
+        using S = decltype(strategy);
+        using C = typename std::decay_t<decltype(group)>::value_type;
+        const std::uint8_t* letGo = work.jointLetGo.data() + schedule.groupStart[g];
+        forEachBatch(team, schedule.jointBatches[g], [&](IndexRange range) {
+            for (int k = range.begin; k < range.end; ++k) {
+                if constexpr (keptAcrossSubsteps<S, C>()) {
+                    remeasureKept<S>(group[k], letGo[k] != 0, poses, rotations, step);
+                }
+                group[k].warmStart(velocities);
             }
         });
     });
@@ -361,8 +394,7 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
                 work.bodyInputs.data(), step, work.positions.data(), work.rotations.data());
         }
     });
-    prepareJoints(team, work, bodies, storage.joints, step, firstSubstep,
-                  rotationsMeasured ? work.rotations.data() : nullptr, mine);
+    prepareJoints(team, work, storage.joints, step, firstSubstep, mine);
     team.sync();
 
     // Warm start: contacts, then joints, then mouse joints; each velocity sweep then solves
@@ -371,7 +403,12 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
     forEachBatchSaying(team, schedule.contactBatches, [&](IndexRange range, bool independent) {
         work.contactSolver.warmStart(range, velocities, independent);
     });
-    warmStartJoints(team, work.groups, schedule, velocities);
+    if (!firstSubstep && laterSubstepsRemeasure(step)) {
+        warmStartRemeasuring(team, work, step, rotationsMeasured ? work.rotations.data() : nullptr,
+                             velocities);
+    } else {
+        warmStartJoints(team, work.groups, schedule, velocities);
+    }
     const bool hasMouse = island.mouseCount > 0;
     if (hasMouse) {
         team.once([&] { prepareMouseJoints(island, work, bodies, storage.mouseJoints, step); });
