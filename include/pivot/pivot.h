@@ -5,6 +5,7 @@
 #include "pivot/body.h"
 #include "pivot/broad_phase_boxes.h"
 #include "pivot/constants.h"
+#include "pivot/continuous_collision.h"
 #include "pivot/debug_draw.h"
 #include "pivot/error.h"
 #include "pivot/id.h"

@@ -18,6 +18,7 @@
 #include "pivot/body.h"
 #include "pivot/broad_phase_boxes.h"
 #include "pivot/constants.h"
+#include "pivot/continuous_collision.h"
 #include "pivot/debug_draw.h"
 #include "pivot/id.h"
 #include "pivot/joint.h"
@@ -53,12 +54,16 @@ struct WorldDef {
     float hitEventThreshold = kDefaultHitEventThreshold;
     /// Let islands that have come to rest sleep (see BodyDef::allowSleep).
     bool enableSleep = true;
-    /// Continuous collision, as Box2D 2.4.1 has it: after each step, a dynamic body that passed
-    /// into or through static or kinematic geometry (or, for a bullet, any body) is taken back
-    /// to the moment it touched and stepped on from there, so fast bodies do not tunnel.
-    /// BodyDef::continuous and BodyDef::bullet choose per body; docs/contacts.md says what it
-    /// costs and where it differs from a smaller time step.
+    /// Continuous collision: after each step, a dynamic body that passed into or through
+    /// static geometry (under Substeps kinematic too; a bullet: any body) is taken back to the
+    /// moment it touched, so fast bodies do not tunnel; continuousCollision says how.
+    /// BodyDef::continuous and BodyDef::bullet choose per body; docs/contacts.md says what it costs
+    /// and where it differs from a smaller time step.
     bool enableContinuous = true;
+    /// Which continuous collision runs (when enableContinuous): Substeps, Box2D 2.4.1's, the
+    /// default; or FastBodies, Box2D v3's, which sweeps only the bodies that moved far in the step
+    /// (continuous_collision.h).
+    ContinuousCollision continuousCollision = ContinuousCollision::Substeps;
     /// Threads that step the world, the caller's included, in [1, 64]. Independent islands,
     /// contact updates and broad-phase queries are shared among them; results are bit-for-bit
     /// the same for every count.
@@ -240,6 +245,9 @@ public:
     /// WorldDef::enableContinuous; takes effect at the next step.
     void setContinuousEnabled(bool enabled);
     bool isContinuousEnabled() const;
+    /// WorldDef::continuousCollision; takes effect at the next step (a snapshot carries it).
+    void setContinuousCollision(ContinuousCollision policy);
+    ContinuousCollision continuousCollision() const;
     /// WorldDef::hitEventThreshold; takes effect at the next step.
     float hitEventThreshold() const;
     void setHitEventThreshold(float speed);
@@ -735,7 +743,7 @@ public:
     /// contacts with their manifolds and impulses, the broad phase, and the last step's events
     /// and statistics. Not in it: the worker count, the task system and the callbacks, which
     /// belong to the world a snapshot is restored into. The bytes are read by the same pivot2d
-    /// version (format version 1), on a machine of the same float behaviour as stateHash needs.
+    /// version (format version 4), on a machine of the same float behaviour as stateHash needs.
     std::vector<std::uint8_t> snapshot() const;
     /// Replaces this world's state with a snapshot's, so that stepping on gives, bit for bit,
     /// what stepping the snapshotted world gives (the same stateHash at once and after any

@@ -81,6 +81,11 @@ public:
     /// gets proxy ids and returns false to stop.
     template <typename Visit>
     void query(const AABB& box, Visit&& visit) const;
+    /// query over the proxies of static bodies only: the static tree under Compact; under
+    /// Predictive, which keeps every proxy in one tree, that tree (`visit` then meets the
+    /// moving proxies too, and tells them apart by their bodies).
+    template <typename Visit>
+    void queryStaticBodies(const AABB& box, Visit&& visit) const;
     /// DynamicTree::rayCast over every tree, the fraction one tree's visits shortened the
     /// segment to carried into the next.
     template <typename Visit>
@@ -199,6 +204,15 @@ void BroadPhase::query(const AABB& box, Visit&& visit) const {
     });
     if (stopped) return;
     static_.query(box, [&](std::int32_t node) { return visit(node | kStaticTag); });
+}
+
+template <typename Visit>
+void BroadPhase::queryStaticBodies(const AABB& box, Visit&& visit) const {
+    if (boxes_ == BroadPhaseBoxes::Compact) {
+        static_.query(box, [&](std::int32_t node) { return visit(node | kStaticTag); });
+    } else {
+        moving_.query(box, visit);
+    }
 }
 
 template <typename Visit>

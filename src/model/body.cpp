@@ -1,5 +1,6 @@
 #include "model/body.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pivot {
@@ -41,6 +42,8 @@ Body bodyAfterMassChange(const Body& before, const SlotPool<Shape>& shapes,
     body.inertia = 0.0f;
     body.invInertia = 0.0f;
     body.localCenter = Vec2{};
+    body.minExtent = 0.0f;
+    body.maxExtent = 0.0f;
 
     if (body.type != BodyType::Dynamic) {
         // Without mass the centre is the origin. When it moves there (a dynamic body made
@@ -100,6 +103,14 @@ Body bodyAfterMassChange(const Body& before, const SlotPool<Shape>& shapes,
             body.inertia = 0.0f;  // no area to turn: the body does not rotate
         }
     }
+
+    bool first = true;
+    forEachShapeAfter(before, shapes, change, [&](const Shape& shape) {
+        const ShapeExtent extent = shapeExtent(shape, body.localCenter);
+        body.minExtent = first ? extent.min : std::min(body.minExtent, extent.min);
+        body.maxExtent = std::max(body.maxExtent, extent.max);
+        first = false;
+    });
 
     Vec2 oldCenter = body.center;
     body.center = transformPoint(body.xf, body.localCenter);

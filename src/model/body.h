@@ -45,6 +45,10 @@ struct Body {
     float alpha0 = 0.0f;
     bool bullet = false;     // kept from tunnelling through dynamic bodies too
     bool continuous = true;  // takes part in continuous collision at all
+    // The smallest ShapeExtent::min and largest ShapeExtent::max of a dynamic body's shapes
+    // about its centre of mass (0 for other bodies), kept with the mass: what FastBodies asks.
+    float minExtent = 0.0f;
+    float maxExtent = 0.0f;
 
     std::int32_t shapeList = -1;    // head of the body's shape list
     std::int32_t jointList = -1;    // head of the body's joint edge list (see body_edge.h)

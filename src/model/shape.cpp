@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/validation.h"
 
@@ -188,6 +189,25 @@ MassData computeMass(const Capsule& capsule, float density) {
     if (!problem.empty()) fail(call, problem);
     requireDensity(call, "density", density);
     return aboutCentroid(capsuleMassAboutOrigin(checked, density));
+}
+
+ShapeExtent shapeExtent(const Shape& shape, Vec2 localCenter) {
+    if (shape.type == ShapeType::Circle) {
+        return {shape.circle.radius,
+                length(shape.circle.center - localCenter) + shape.circle.radius};
+    }
+    const ConvexPolygon& p = shape.polygon;
+    const float radius = collisionRadius(shape);
+    // A segment is as thin as its skin: any motion may carry it through something.
+    float inner = isSegmentLike(shape.type) ? 0.0f : std::numeric_limits<float>::max();
+    float outer = 0.0f;
+    for (int i = 0; i < p.count; ++i) {
+        if (!isSegmentLike(shape.type)) {
+            inner = std::min(inner, dot(p.normals[i], p.vertices[i] - p.centroid));
+        }
+        outer = std::max(outer, length(p.vertices[i] - localCenter));
+    }
+    return {isSegmentLike(shape.type) ? 0.0f : inner + radius, outer + radius};
 }
 
 AABB computeShapeBox(const Shape& shape, const Transform& xf) {

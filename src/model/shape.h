@@ -73,6 +73,17 @@ inline float collisionRadius(const Shape& shape) {
 /// The shape as GJK and the time of impact see it in contacts: its core and collision radius.
 DistanceProxy contactProxy(const Shape& shape);
 
+/// How far a shape reaches from a body's centre of mass (`localCenter`, in the body frame):
+/// `min` is the depth of its thinnest part measured from its centroid (a circle's radius, a
+/// box's half width, 0 for a segment), `max` the distance of its farthest point from the
+/// centre. Continuous collision's FastBodies takes a body as fast when it moved more than half
+/// its shapes' smallest `min` in a step (continuous_collision.h).
+struct ShapeExtent {
+    float min = 0.0f;
+    float max = 0.0f;
+};
+ShapeExtent shapeExtent(const Shape& shape, Vec2 localCenter);
+
 /// The shape's bounding box at a transform, including its collision radius.
 AABB computeShapeBox(const Shape& shape, const Transform& xf);
 

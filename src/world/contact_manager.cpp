@@ -97,6 +97,13 @@ bool ContactManager::askCustomFilter(std::int32_t shapeA, std::int32_t shapeB) {
     return allow;
 }
 
+bool ContactManager::solidShapesMayCollide(std::int32_t shapeA, std::int32_t shapeB) {
+    const Shape& a = shapes_[shapeA];
+    const Shape& b = shapes_[shapeB];
+    return a.body != b.body && !a.sensor && !b.sensor && filtersAllowContact(a.filter, b.filter) &&
+           bodiesMayCollide(a.body, b.body) && askCustomFilter(shapeA, shapeB);
+}
+
 void ContactManager::addPair(std::int32_t shapeA, std::int32_t shapeB) {
     const Shape& a = shapes_[shapeA];
     const Shape& b = shapes_[shapeB];

@@ -38,6 +38,11 @@ public:
     /// Counts the changes to the islands (touch events, pre-solve answers, wakings).
     IslandRevision& islandRevision() { return islandRevision_; }
 
+    /// Whether two solid shapes could stop each other: on different bodies, their filters, the
+    /// joints between their bodies and the custom filter allowing a contact (what addPair asks
+    /// of a pair, sensors aside). For continuous collision's sweeps, which meet shapes without a
+    /// contact.
+    bool solidShapesMayCollide(std::int32_t shapeA, std::int32_t shapeB);
     BroadPhase& broadPhase() { return broadPhase_; }
     const BroadPhase& broadPhase() const { return broadPhase_; }
 

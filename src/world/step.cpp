@@ -80,7 +80,7 @@ void World::Impl::recordHitAndMoveEvents() {
         }
         if (fastest >= 0) record(index, fastest, speed);
     }
-    if (enableContinuous) {
+    if (enableContinuous && continuousCollision == ContinuousCollision::Substeps) {
         // Impacts: the bodies met within the step; their contact may have touched before.
         for (const ContinuousSolver::Impact& impact : continuous.impacts()) {
             if (impact.approachSpeed > hitEventThreshold) {
@@ -146,8 +146,14 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
         }
     }
 
-    contactManager.afterSolve(islands.bodies, enableContinuous);
-    if (enableContinuous) {
+    // Only Substeps pairs the sweeps of shapes that moved past their margin: FastBodies
+    // searches the trees itself, for the few bodies that moved far.
+    const bool substepped =
+        enableContinuous && continuousCollision == ContinuousCollision::Substeps;
+    contactManager.afterSolve(islands.bodies, substepped);
+    if (enableContinuous && !substepped) {
+        stats.impactCount = fastBodies.solve(islands.bodies, bodies, shapes, contactManager);
+    } else if (substepped) {
         stats.impactCount =
             continuous.solve(bodies, shapes, contacts, contactManager, pool, context);
         for (std::int32_t index : continuous.bodiesHeldAtEdge()) {

@@ -37,6 +37,7 @@ World::Impl::Impl(const WorldDef& def)
       restitutionThreshold(def.restitutionThreshold),
       enableSleep(def.enableSleep),
       enableContinuous(def.enableContinuous),
+      continuousCollision(def.continuousCollision),
       jointLetGoSeparation(def.jointLetGoSeparation),
       substepCount(def.substepCount),
       hitEventThreshold(def.hitEventThreshold),
@@ -79,6 +80,7 @@ World::World(const WorldDef& def) {
     requireNonNegative(call, "def.jointLetGoSeparation", def.jointLetGoSeparation);
     checkSubstepCount(call, "def.substepCount", def.substepCount);
     checkBroadPhaseBoxes(call, "def.broadPhaseBoxes", def.broadPhaseBoxes);
+    checkContinuousCollision(call, "def.continuousCollision", def.continuousCollision);
     if (def.workerCount < 1 || def.workerCount > 64) {
         fail(call,
              "def.workerCount must be in [1, 64] (got " + std::to_string(def.workerCount) + ")");
@@ -197,6 +199,17 @@ void World::setContinuousEnabled(bool enabled) {
 
 bool World::isContinuousEnabled() const {
     return impl_->enableContinuous;
+}
+
+void World::setContinuousCollision(ContinuousCollision policy) {
+    const char* call = "World::setContinuousCollision";
+    impl_->requireNotInCallback(call);
+    checkContinuousCollision(call, "policy", policy);
+    impl_->continuousCollision = policy;
+}
+
+ContinuousCollision World::continuousCollision() const {
+    return impl_->continuousCollision;
 }
 
 float World::hitEventThreshold() const {

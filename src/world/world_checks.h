@@ -50,6 +50,15 @@ inline void checkBroadPhaseBoxes(const char* call, const char* field, BroadPhase
     }
 }
 
+inline void checkContinuousCollision(const char* call, const char* field,
+                                     ContinuousCollision policy) {
+    int value = static_cast<int>(policy);
+    if (value < 0 || value > static_cast<int>(ContinuousCollision::FastBodies)) {
+        fail(call, std::string(field) + " is not a ContinuousCollision (got " +
+                       std::to_string(value) + ")");
+    }
+}
+
 inline void checkLimit(const char* call, const std::string& field, const JointLimit& limit) {
     requireMagnitude(call, (field + ".lower").c_str(), limit.lower);
     requireMagnitude(call, (field + ".upper").c_str(), limit.upper);

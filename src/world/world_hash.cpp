@@ -155,6 +155,9 @@ std::uint64_t World::stateHash() const {
         h.add(static_cast<std::int32_t>(w.contactManager.broadPhase().boxes()));
     }
     if (w.hitEventThreshold != kDefaultHitEventThreshold) h.add(w.hitEventThreshold);
+    if (w.continuousCollision != ContinuousCollision::Substeps) {
+        h.add(static_cast<std::int32_t>(w.continuousCollision));
+    }
     if (w.contactHertz != kDefaultContactHertz ||
         w.contactDampingRatio != kDefaultContactDampingRatio ||
         w.contactPushSpeed != kDefaultContactPushSpeed) {

@@ -26,6 +26,7 @@
 #include "solver/stepper.h"
 #include "world/contact_manager.h"
 #include "world/continuous_solver.h"
+#include "world/fast_body_sweeps.h"
 
 namespace pivot {
 
@@ -44,6 +45,7 @@ struct World::Impl {
     float restitutionThreshold;
     bool enableSleep;
     bool enableContinuous;
+    ContinuousCollision continuousCollision;
     float jointLetGoSeparation;  // m; 0: never
     int substepCount;            // [1, kMaxSubsteps]
     float hitEventThreshold;     // m/s
@@ -60,6 +62,7 @@ struct World::Impl {
     ContactManager contactManager;
     Stepper stepper;
     ContinuousSolver continuous;
+    FastBodySweeps fastBodies;  // ContinuousCollision::FastBodies' continuous collision
 
     std::vector<JointLetGoEvent> letGoEvents;  // joints let go by the last step
     std::vector<WorldEdgeEvent> edgeEvents;    // bodies held at the world's edge by it

@@ -26,7 +26,7 @@ namespace pivot {
 namespace {
 
 constexpr std::uint8_t kMagic[8] = {'P', 'I', 'V', 'O', 'T', '2', 'D', 'S'};
-constexpr std::uint32_t kFormatVersion = 3;
+constexpr std::uint32_t kFormatVersion = 4;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8;
 constexpr std::size_t kChecksumSize = 8;
 constexpr int kBodyTypes = 3;
@@ -35,6 +35,7 @@ constexpr int kJointTypes = 9;
 constexpr int kLetGoReasons = 4;
 constexpr int kContactCorrections = 3;
 constexpr int kManifoldTypes = 3;
+constexpr int kContinuousCollisions = 2;
 
 // --- field lists: B is the type or the const type (writing) ----------------------------------
 
@@ -63,6 +64,8 @@ void describeBody(Io& io, B& b) {
     io.value(b.alpha0);
     io.value(b.bullet);
     io.value(b.continuous);
+    io.value(b.minExtent);
+    io.value(b.maxExtent);
     io.value(b.shapeList);
     io.value(b.jointList);
     io.value(b.contactList);
@@ -361,6 +364,7 @@ struct WorldState {
     float restitutionThreshold = 0.0f;
     bool enableSleep = true;
     bool enableContinuous = true;
+    ContinuousCollision continuousCollision = ContinuousCollision::Substeps;
     float jointLetGoSeparation = 0.0f;
     int substepCount = 1;
     float hitEventThreshold = 0.0f;
@@ -392,6 +396,7 @@ void describeWorld(Io& io, W& w, std::uint32_t worldId) {
     io.value(w.restitutionThreshold);
     io.value(w.enableSleep);
     io.value(w.enableContinuous);
+    io.enumValue(w.continuousCollision, kContinuousCollisions);
     io.value(w.jointLetGoSeparation);
     io.value(w.substepCount);
     io.value(w.hitEventThreshold);
@@ -649,6 +654,7 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     w.restitutionThreshold = state.restitutionThreshold;
     w.enableSleep = state.enableSleep;
     w.enableContinuous = state.enableContinuous;
+    w.continuousCollision = state.continuousCollision;
     w.jointLetGoSeparation = state.jointLetGoSeparation;
     w.substepCount = state.substepCount;
     w.hitEventThreshold = state.hitEventThreshold;

@@ -35,6 +35,8 @@ struct Options {
     int workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     bool workersGiven = false;  // --workers on the command line (--profile then uses it)
     bool continuous = true;
+    // --continuous substeps|fast: every pivot2d set-up's policy (unset: each its own).
+    std::optional<ContinuousCollision> continuousCollision;
     bool predictiveBoxes = false;      // --boxes predictive: pivot2d's worlds use Box2D 2.4.1's
     bool sharedTasks = false;          // --pivot-workers tasks: pivot2d's on the bench's pool
     bool adaptWorkers = true;          // --adapt off: pivot2d's worlds on all workers every step
@@ -67,6 +69,7 @@ public:
         settings.threads = threads;
         settings.sleep = scene.sleep;
         settings.continuous = options.continuous;
+        settings.continuousCollision = options.continuousCollision;
         settings.predictiveBoxes = options.predictiveBoxes;
         settings.sharedTasks = options.sharedTasks;
         settings.adaptWorkers = options.adaptWorkers;
@@ -194,7 +197,7 @@ int profileRun(const Options& options, const std::vector<EngineKind>& kinds) {
 void usage(const std::vector<EngineKind>& kinds) {
     std::cerr
         << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] [--scene NAME]\n"
-           "                   [--engines A,B,...] [--continuous on|off]\n"
+           "                   [--engines A,B,...] [--continuous on|off|substeps|fast]\n"
            "                   [--boxes compact|predictive] [--pivot-workers own|tasks]\n"
            "                   [--adapt on|off] [--list]\n"
            "                   [--profile ENGINE STEPS]\n"
@@ -212,7 +215,11 @@ void usage(const std::vector<EngineKind>& kinds) {
            "  --csv      print scene,engine,threads,ms,vs_box2d_2.4.1,vs_box2d_v3 lines (a\n"
            "             ratio is empty when its engine did not run), then the memory table\n"
            "  --engines  only these engines (the ratios need their engine in the run)\n"
-           "  --continuous off  continuous collision off in every engine\n"
+           "  --continuous off  continuous collision off in every engine; on (the default):\n"
+           "             each engine's own, and each pivot2d set-up that of the engine it is\n"
+           "             like for like with (full_ngs and baumgarte Box2D 2.4.1's, soft_step\n"
+           "             Box2D v3's: WorldDef::continuousCollision); substeps or fast: every\n"
+           "             pivot2d set-up Box2D 2.4.1's (Substeps) or Box2D v3's (FastBodies)\n"
            "  --boxes predictive  pivot2d's worlds use BroadPhaseBoxes::Predictive (Box2D\n"
            "             2.4.1's boxes) instead of the default, Compact (Box2D v3's)\n"
            "  --pivot-workers tasks  pivot2d's helpers run as tasks on the bench's pool of\n"
@@ -250,8 +257,12 @@ int main(int argc, char** argv) {
         } else if (arg == "--engines" && i + 1 < argc) {
             options.engines = splitCommas(argv[++i]);
         } else if (arg == "--continuous" && i + 1 < argc &&
-                   (std::string(argv[i + 1]) == "on" || std::string(argv[i + 1]) == "off")) {
-            options.continuous = std::string(argv[++i]) == "on";
+                   (std::string(argv[i + 1]) == "on" || std::string(argv[i + 1]) == "off" ||
+                    std::string(argv[i + 1]) == "substeps" || std::string(argv[i + 1]) == "fast")) {
+            const std::string value = argv[++i];
+            options.continuous = value != "off";
+            if (value == "substeps") options.continuousCollision = ContinuousCollision::Substeps;
+            if (value == "fast") options.continuousCollision = ContinuousCollision::FastBodies;
         } else if (arg == "--boxes" && i + 1 < argc &&
                    (std::string(argv[i + 1]) == "predictive" ||
                     std::string(argv[i + 1]) == "compact")) {
@@ -356,7 +367,12 @@ int main(int argc, char** argv) {
         "%s: median ms per step over %d run%s (first step left out); continuous collision "
         "%s; pivot2d's broad-phase boxes %s; pivot2d's helpers on %s%s.\n",
         options.quick ? "quick smoke run" : "pivot-bench", options.repeats,
-        options.repeats == 1 ? "" : "s", options.continuous ? "on" : "off",
+        options.repeats == 1 ? "" : "s",
+        !options.continuous            ? "off"
+        : !options.continuousCollision ? "on (pivot2d: each set-up's own)"
+        : *options.continuousCollision == ContinuousCollision::Substeps
+            ? "on (pivot2d: Box2D 2.4.1's in every set-up)"
+            : "on (pivot2d: Box2D v3's in every set-up)",
         options.predictiveBoxes ? "predictive" : "compact",
         options.sharedTasks ? "the bench's pool of threads (tasks)" : "threads of their own",
         options.adaptWorkers ? "" : ", all of them at every step");

@@ -131,6 +131,7 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
     def.workerCount = options.workerCount;
     def.substepCount = options.substepCount;
     def.broadPhaseBoxes = options.broadPhaseBoxes;
+    def.continuousCollision = options.continuousCollision;
     scene.world = std::make_unique<World>(def);
     info.build(scene, options);
     if (options.continuous) scene.world->setContinuousEnabled(*options.continuous);

@@ -25,6 +25,8 @@ struct SceneOptions {
     int workerCount = 1;                                         ///< WorldDef::workerCount
     int substepCount = 1;                                        ///< WorldDef::substepCount
     BroadPhaseBoxes broadPhaseBoxes = BroadPhaseBoxes::Compact;  ///< WorldDef's
+    /// WorldDef's continuous collision policy (the default: Substeps, Box2D 2.4.1's).
+    ContinuousCollision continuousCollision = ContinuousCollision::Substeps;
     /// Continuous collision switched on or off after the scene is built; unset: as the scene
     /// has it (on, unless the scene calls keepContinuousOffForJoints).
     std::optional<bool> continuous;

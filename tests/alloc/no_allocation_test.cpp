@@ -56,6 +56,14 @@ TEST_P(EveryScene, StepsWithoutAllocatingOnceWarmUnderPredictiveBoxes) {
     EXPECT_EQ(warmStepAllocations(options, std::get<0>(GetParam())), 0) << std::get<0>(GetParam());
 }
 
+// Under Box2D v3's continuous collision (FastBodies: the bullets scene's fast bodies swept).
+TEST_P(EveryScene, StepsWithoutAllocatingOnceWarmUnderFastBodies) {
+    SceneOptions options;
+    options.workerCount = std::get<1>(GetParam());
+    options.continuousCollision = ContinuousCollision::FastBodies;
+    EXPECT_EQ(warmStepAllocations(options, std::get<0>(GetParam())), 0) << std::get<0>(GetParam());
+}
+
 namespace {
 std::vector<std::string> sceneNames() {
     std::vector<std::string> names;

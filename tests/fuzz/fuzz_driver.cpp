@@ -2062,6 +2062,14 @@ private:
                 trace("setContinuousEnabled " + std::to_string(on));
                 attempt("World::setContinuousEnabled", Verdict::Valid,
                         [&] { journal_.setContinuousEnabled(on); });
+                if (random_.chance(0.5f)) {
+                    const ContinuousCollision policy = random_.chance(0.5f)
+                                                           ? ContinuousCollision::FastBodies
+                                                           : ContinuousCollision::Substeps;
+                    trace("setContinuousCollision " + std::to_string(static_cast<int>(policy)));
+                    attempt("World::setContinuousCollision", Verdict::Valid,
+                            [&] { journal_.setContinuousCollision(policy); });
+                }
                 break;
             }
         }

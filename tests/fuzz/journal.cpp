@@ -501,6 +501,10 @@ void Journal::setContinuousEnabled(bool enabled) {
     world_->setContinuousEnabled(enabled);
     lines_.push_back("continuous " + num(enabled));
 }
+void Journal::setContinuousCollision(ContinuousCollision policy) {
+    world_->setContinuousCollision(policy);
+    lines_.push_back("ccd " + num(static_cast<int>(policy)));
+}
 void Journal::setHitEventThreshold(float speed) {
     world_->setHitEventThreshold(speed);
     lines_.push_back("hitThreshold " + num(speed));
@@ -1240,6 +1244,9 @@ ReplayResult replay(std::istream& in) {
         } else if (command == "continuous") {
             bool on = f.b();
             call = [&w, on] { w.setContinuousEnabled(on); };
+        } else if (command == "ccd") {
+            auto policy = static_cast<ContinuousCollision>(f.i());
+            call = [&w, policy] { w.setContinuousCollision(policy); };
         } else if (command == "hitThreshold") {
             const float v = f.f();
             call = [&w, v] { w.setHitEventThreshold(v); };

@@ -105,6 +105,7 @@ public:
     void setSubstepCount(int count);
     void setSleepEnabled(bool enabled);
     void setContinuousEnabled(bool enabled);
+    void setContinuousCollision(ContinuousCollision policy);
     void setHitEventThreshold(float speed);
     void setShapeHitEvents(ShapeId id, bool enabled);
     void setShapePreSolve(ShapeId id, bool enabled);

@@ -4,10 +4,12 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/suite/builder.h"
+#include "pivot/continuous_collision.h"
 
 namespace pivot::bench {
 
@@ -17,8 +19,11 @@ constexpr float kTimeStep = 1.0f / 60.0f;
 /// What a scene asks of the world it is built into.
 struct WorldSettings {
     int threads = 1;
-    bool sleep = false;            ///< bodies may sleep
-    bool continuous = true;        ///< continuous collision
+    bool sleep = false;      ///< bodies may sleep
+    bool continuous = true;  ///< continuous collision
+    /// pivot2d: continuous collision's policy for every set-up; unset, each set-up's own
+    /// (Box2D 2.4.1's for those like for like with it, Box2D v3's for soft step).
+    std::optional<ContinuousCollision> continuousCollision;
     bool predictiveBoxes = false;  ///< pivot2d: BroadPhaseBoxes::Predictive (others ignore it)
     /// pivot2d: its helpers run as tasks on the bench's pool of threads (engines/task_pool.h,
     /// the one Box2D v3 is given), through WorldDef::enqueueTask, not on threads of its own.

@@ -22,15 +22,22 @@ struct PivotSetup {
     int substeps;
     int velocityIterations;
     int positionIterations;
+    // Each set-up's continuous collision is that of the engine it is like for like with.
+    ContinuousCollision continuous;
 };
 
 constexpr PivotSetup kSetups[] = {
-    {"full_ngs", "pivot2d, FullNGS joints, NGS contacts, 8/3 (the default)",
-     PositionSolver::FullNGS, ContactCorrection::NGS, 1, 8, 3},
-    {"baumgarte", "pivot2d, Baumgarte joints, NGS contacts, 8/3", PositionSolver::Baumgarte,
-     ContactCorrection::NGS, 1, 8, 3},
-    {"soft_step", "pivot2d, soft-step joints, soft contacts, 4 substeps of 1/1",
-     PositionSolver::SoftStep, ContactCorrection::Soft, 4, 1, 1},
+    {"full_ngs",
+     "pivot2d, FullNGS joints, NGS contacts, 8/3, Box2D 2.4.1's continuous collision (the "
+     "defaults)",
+     PositionSolver::FullNGS, ContactCorrection::NGS, 1, 8, 3, ContinuousCollision::Substeps},
+    {"baumgarte",
+     "pivot2d, Baumgarte joints, NGS contacts, 8/3, Box2D 2.4.1's continuous collision",
+     PositionSolver::Baumgarte, ContactCorrection::NGS, 1, 8, 3, ContinuousCollision::Substeps},
+    {"soft_step",
+     "pivot2d, soft-step joints, soft contacts, 4 substeps of 1/1, Box2D v3's continuous "
+     "collision (fast bodies)",
+     PositionSolver::SoftStep, ContactCorrection::Soft, 4, 1, 1, ContinuousCollision::FastBodies},
 };
 
 class PivotEngine final : public Engine {
@@ -39,6 +46,7 @@ public:
         WorldDef def;
         def.enableSleep = settings.sleep;
         def.enableContinuous = settings.continuous;
+        def.continuousCollision = settings.continuousCollision.value_or(setup.continuous);
         def.defaultPositionSolver = setup.solver;
         def.contactCorrection = setup.contacts;
         def.substepCount = setup.substeps;

@@ -1,0 +1,209 @@
+// Continuous collision's FastBodies policy (world/fast_body_sweeps.h, Box2D v3's): fast bodies
+// stop at thin walls (and tunnel with continuous collision off, so each check could fail), slow
+// ones are left to the discrete step, a body sliding fast along a wall is not held by it,
+// bullets stop at dynamic bodies that others pass through, and the policy is checked, switched,
+// kept by snapshots and worker-count independent.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "pivot/pivot.h"
+
+using namespace pivot;
+
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+
+WorldDef fastBodiesWorld(BroadPhaseBoxes boxes = BroadPhaseBoxes::Compact) {
+    WorldDef def;
+    def.gravity = {0.0f, 0.0f};
+    def.continuousCollision = ContinuousCollision::FastBodies;
+    def.broadPhaseBoxes = boxes;
+    return def;
+}
+
+BodyId staticBox(World& world, Vec2 at, float halfWidth, float halfHeight) {
+    BodyDef def;
+    def.position = at;
+    BodyId body = world.createBody(def);
+    ShapeDef shape;
+    shape.density = 0.0f;
+    world.createShape(body, shape, Polygon::box(halfWidth, halfHeight));
+    return body;
+}
+
+BodyId ball(World& world, Vec2 at, Vec2 velocity, float radius, bool bullet = false) {
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    def.position = at;
+    def.linearVelocity = velocity;
+    def.bullet = bullet;
+    BodyId body = world.createBody(def);
+    world.createShape(body, ShapeDef{}, Circle{{0.0f, 0.0f}, radius});
+    return body;
+}
+
+struct Shot {
+    float furthest = -1e9f;  // the ball's largest x
+    int impacts = 0;
+};
+
+// A ball of radius 0.1 m from x = `from` at `speed` towards a static wall 0.05 m thick at
+// x = 0, stepped 30 times.
+Shot shootAtThinWall(const WorldDef& def, float speed, float from = -3.0f) {
+    World world(def);
+    staticBox(world, {0.0f, 0.0f}, 0.025f, 2.0f);
+    const BodyId shot = ball(world, {from, 0.0f}, {speed, 0.0f}, 0.1f);
+    Shot result;
+    for (int i = 0; i < 30; ++i) {
+        world.step(kDt);
+        result.furthest = std::max(result.furthest, world.bodyPosition(shot).x);
+        result.impacts += world.lastStepStats().impactCount;
+    }
+    return result;
+}
+
+}  // namespace
+
+TEST(FastBodies, AFastBallStopsAtAThinWallUnderEitherBoxes) {
+    for (BroadPhaseBoxes boxes : {BroadPhaseBoxes::Compact, BroadPhaseBoxes::Predictive}) {
+        const Shot on = shootAtThinWall(fastBodiesWorld(boxes), 500.0f);
+        EXPECT_LT(on.furthest, -0.025f) << "the ball's centre passed the wall's near face";
+        EXPECT_GE(on.impacts, 1);
+        WorldDef off = fastBodiesWorld(boxes);
+        off.enableContinuous = false;
+        const Shot through = shootAtThinWall(off, 500.0f);
+        EXPECT_GT(through.furthest, 0.5f) << "the check above could not fail";
+        EXPECT_EQ(through.impacts, 0);
+    }
+}
+
+TEST(FastBodies, ASlowBallIsLeftToTheDiscreteStep) {
+    // 2.4 m/s moves the ball 0.04 m a step, less than half its radius: not fast, never swept,
+    // and its contact with the wall stops it all the same.
+    const Shot slow = shootAtThinWall(fastBodiesWorld(), 2.4f, -0.8f);
+    EXPECT_EQ(slow.impacts, 0);
+    EXPECT_LT(slow.furthest, -0.1f);
+    EXPECT_GT(slow.furthest, -0.2f) << "it reached the wall";
+}
+
+TEST(FastBodies, ABodyOptedOutTunnels) {
+    World world(fastBodiesWorld());
+    staticBox(world, {0.0f, 0.0f}, 0.025f, 2.0f);
+    const BodyId shot = ball(world, {-3.0f, 0.0f}, {500.0f, 0.0f}, 0.1f);
+    world.setBodyContinuous(shot, false);
+    for (int i = 0; i < 30; ++i) world.step(kDt);
+    EXPECT_GT(world.bodyPosition(shot).x, 0.5f);
+}
+
+TEST(FastBodies, ABallSlidingFastAlongAWallIsNotHeldByIt) {
+    // The ball touches the floor's top at the start of every step (a time of impact of 0):
+    // its centre's small circle, a quarter of its radius, does not, so it keeps its motion.
+    World world(fastBodiesWorld());
+    staticBox(world, {0.0f, -0.5f}, 100.0f, 0.5f);
+    const BodyId slider = ball(world, {-50.0f, 0.1f}, {120.0f, 0.0f}, 0.1f);
+    for (int i = 0; i < 10; ++i) {
+        world.step(kDt);
+        EXPECT_EQ(world.lastStepStats().impactCount, 0) << "step " << i;
+    }
+    EXPECT_NEAR(world.bodyPosition(slider).x, -50.0f + 10.0f * 120.0f * kDt, 0.05f);
+}
+
+TEST(FastBodies, ABulletStopsAtADynamicBoxThatAnotherBallPassesThrough) {
+    for (bool bullet : {true, false}) {
+        World world(fastBodiesWorld());
+        BodyDef def;
+        def.type = BodyType::Dynamic;
+        def.position = {1.0f, 0.0f};
+        const BodyId box = world.createBody(def);
+        world.createShape(box, ShapeDef{}, Polygon::box(0.02f, 0.5f));
+        const BodyId shot = ball(world, {-2.0f, 0.0f}, {300.0f, 0.0f}, 0.05f, bullet);
+        bool passed = false;  // the ball's centre got beyond the box's
+        for (int i = 0; i < 20; ++i) {
+            world.step(kDt);
+            passed = passed || world.bodyPosition(shot).x > world.bodyPosition(box).x;
+        }
+        if (bullet) {
+            EXPECT_FALSE(passed) << "the bullet passed through the box";
+            EXPECT_GT(world.bodyLinearVelocity(box).x, 1.0f) << "it pushed the box";
+        } else {
+            // As in Box2D v3: only static shapes stop a body that is not a bullet.
+            EXPECT_TRUE(passed);
+            EXPECT_EQ(world.bodyLinearVelocity(box).x, 0.0f);
+        }
+    }
+}
+
+TEST(FastBodies, ThePolicyIsCheckedAndSwitchedBetweenSteps) {
+    World world{WorldDef{}};
+    EXPECT_EQ(world.continuousCollision(), ContinuousCollision::Substeps);
+    const std::uint64_t before = world.stateHash();
+    EXPECT_THROW(world.setContinuousCollision(static_cast<ContinuousCollision>(7)), Error);
+    EXPECT_EQ(world.stateHash(), before);
+    world.setContinuousCollision(ContinuousCollision::FastBodies);
+    EXPECT_EQ(world.continuousCollision(), ContinuousCollision::FastBodies);
+    EXPECT_NE(world.stateHash(), before) << "the hash covers the policy";
+
+    WorldDef bad;
+    bad.continuousCollision = static_cast<ContinuousCollision>(2);
+    EXPECT_THROW(World{bad}, Error);
+
+    // Switched on a world mid-flight: the next step's sweep stops the ball.
+    WorldDef def = fastBodiesWorld();
+    def.continuousCollision = ContinuousCollision::Substeps;
+    World shooting(def);
+    staticBox(shooting, {0.0f, 0.0f}, 0.025f, 2.0f);
+    const BodyId shot = ball(shooting, {-3.0f, 0.0f}, {500.0f, 0.0f}, 0.1f);
+    shooting.step(kDt);
+    shooting.setContinuousCollision(ContinuousCollision::FastBodies);
+    for (int i = 0; i < 10; ++i) shooting.step(kDt);
+    EXPECT_LT(shooting.bodyPosition(shot).x, -0.025f);
+}
+
+namespace {
+
+// Forty balls fired at a wall of thin static boxes from all around, some bullets among them, and
+// a few slow ones: the state hash after 40 steps.
+std::uint64_t volleyHash(int workers, std::vector<std::uint8_t>* snapshotAt20 = nullptr) {
+    WorldDef def = fastBodiesWorld();
+    def.gravity = {0.0f, -10.0f};
+    def.workerCount = workers;
+    def.adaptWorkerCount = false;
+    World world(def);
+    for (int k = 0; k < 8; ++k) {
+        const float angle = 0.785398f * static_cast<float>(k);
+        staticBox(world, {4.0f * std::cos(angle), 4.0f * std::sin(angle)}, 0.02f, 1.5f);
+    }
+    staticBox(world, {0.0f, -6.0f}, 20.0f, 0.5f);
+    for (int i = 0; i < 40; ++i) {
+        const float angle = 0.157f * static_cast<float>(i);
+        const float speed = i % 5 == 0 ? 2.0f : 150.0f + 10.0f * static_cast<float>(i);
+        ball(world, {0.3f * std::cos(angle), 0.3f * std::sin(angle)},
+             {speed * std::cos(angle), speed * std::sin(angle)}, 0.05f + 0.002f * i, i % 7 == 0);
+    }
+    int impacts = 0;
+    for (int i = 0; i < 40; ++i) {
+        world.step(kDt);
+        impacts += world.lastStepStats().impactCount;
+        if (i == 19 && snapshotAt20) *snapshotAt20 = world.snapshot();
+    }
+    EXPECT_GE(impacts, 20) << "the volley should be stopped by the walls";
+    return world.stateHash();
+}
+
+}  // namespace
+
+TEST(FastBodies, StepToTheSameBitsOnAnyWorkerCountAndFromASnapshot) {
+    std::vector<std::uint8_t> bytes;
+    const std::uint64_t one = volleyHash(1, &bytes);
+    EXPECT_EQ(volleyHash(2), one);
+    EXPECT_EQ(volleyHash(4), one);
+
+    World restored{WorldDef{}};
+    restored.restore(bytes);
+    EXPECT_EQ(restored.continuousCollision(), ContinuousCollision::FastBodies);
+    for (int i = 0; i < 20; ++i) restored.step(kDt);
+    EXPECT_EQ(restored.stateHash(), one);
+}
