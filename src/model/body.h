@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "collision/time_of_impact.h"
 #include "core/slot_pool.h"
 #include "model/island_revision.h"
 #include "model/shape.h"
@@ -82,6 +83,19 @@ inline void synchronizeTransform(Body& body) {
 inline void restartSweep(Body& body) {
     body.center0 = body.center;
     body.angle0 = body.angle;
+}
+
+/// The body's motion this step as continuous collision sweeps it: from (center0, angle0), where
+/// the step's motion started (or an impact left it, at alpha0 of the step), to where it is.
+inline Sweep sweepOf(const Body& b) {
+    Sweep s;
+    s.localCenter = b.localCenter;
+    s.c0 = b.center0;
+    s.c = b.center;
+    s.a0 = b.angle0;
+    s.a = b.angle;
+    s.alpha0 = b.alpha0;
+    return s;
 }
 
 /// Continuous collision's roles (world/continuous_solver.h). A body that can stop another in

@@ -24,17 +24,6 @@ constexpr float kImpactTolerance = -1.5f * kLinearSlop;
 // An impact this close to the end of the step is left to the next step.
 constexpr float kLatestImpact = 1.0f - 10.0f * std::numeric_limits<float>::epsilon();
 
-Sweep sweepOf(const Body& b) {
-    Sweep s;
-    s.localCenter = b.localCenter;
-    s.c0 = b.center0;
-    s.c = b.center;
-    s.a0 = b.angle0;
-    s.a = b.angle;
-    s.alpha0 = b.alpha0;
-    return s;
-}
-
 // Moves the start of the body's sweep to `alpha` of the step; the body stays where it is.
 void advanceSweep(Body& b, float alpha) {
     Sweep s = sweepOf(b);

@@ -11,17 +11,6 @@ namespace pivot {
 
 namespace {
 
-// The body's motion over the step, from where it started (center0, angle0) to where it is.
-Sweep motionOf(const Body& b) {
-    Sweep s;
-    s.localCenter = b.localCenter;
-    s.c0 = b.center0;
-    s.c = b.center;
-    s.a0 = b.angle0;
-    s.a = b.angle;
-    return s;
-}
-
 // A body standing where it is for the whole step.
 Sweep standing(const Body& b) {
     Sweep s;
@@ -58,7 +47,9 @@ float FastBodySweeps::earliestHit(std::int32_t index, const SlotPool<Body>& bodi
                                   const SlotPool<Shape>& shapes,
                                   ContactManager& contactManager) const {
     const Body& body = bodies[index];
-    const Sweep sweep = motionOf(body);
+    // The times of impact do not depend on alpha0 (left over from a step under Substeps): the
+    // sweep is read between its two ends.
+    const Sweep sweep = sweepOf(body);
     // Each shape's box where it ended, grown by the body's reach, holds the shape's whole sweep
     // (cheaper than its box at the start: no sine and cosine, no second box).
     const float reach = reachOf(body);

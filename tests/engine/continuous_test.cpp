@@ -5,34 +5,18 @@
 
 #include <cmath>
 
+#include "continuous_parts.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
+using pivot::test::ball;
+using pivot::test::follow;
+using pivot::test::Shot;
+using pivot::test::staticBox;
 
 namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
-
-BodyId staticBox(World& world, Vec2 at, float halfWidth, float halfHeight) {
-    BodyDef def;
-    def.position = at;
-    BodyId body = world.createBody(def);
-    ShapeDef shape;
-    shape.density = 0.0f;
-    world.createShape(body, shape, Polygon::box(halfWidth, halfHeight));
-    return body;
-}
-
-BodyId ball(World& world, Vec2 at, Vec2 velocity, float radius, bool continuous = true) {
-    BodyDef def;
-    def.type = BodyType::Dynamic;
-    def.position = at;
-    def.linearVelocity = velocity;
-    def.continuous = continuous;
-    BodyId body = world.createBody(def);
-    world.createShape(body, ShapeDef{}, Circle{{0.0f, 0.0f}, radius});
-    return body;
-}
 
 WorldDef weightless() {
     WorldDef def;
@@ -40,22 +24,12 @@ WorldDef weightless() {
     return def;
 }
 
-// A ball of radius 0.1 m at 500 m/s towards a wall 0.05 m thick: the largest x its centre
-// reaches in 30 steps, and the impacts solved.
-struct Shot {
-    float furthest = -1e9f;
-    int impacts = 0;
-};
-// Fires the ball of radius 0.1 m from x = -3 at 500 m/s and steps 30 times.
+// Fires a ball of radius 0.1 m from x = -3 at 500 m/s (towards a wall 0.05 m thick in the
+// callers) and steps 30 times: the largest x its centre reaches, and the impacts solved.
 Shot fireBall(World& world, bool bodyContinuous = true) {
-    const BodyId shot = ball(world, {-3.0f, 0.0f}, {500.0f, 0.0f}, 0.1f, bodyContinuous);
-    Shot result;
-    for (int i = 0; i < 30; ++i) {
-        world.step(kDt);
-        result.furthest = std::max(result.furthest, world.bodyPosition(shot).x);
-        result.impacts += world.lastStepStats().impactCount;
-    }
-    return result;
+    const BodyId shot = ball(world, {-3.0f, 0.0f}, {500.0f, 0.0f}, 0.1f);
+    if (!bodyContinuous) world.setBodyContinuous(shot, false);
+    return follow(world, shot, 30);
 }
 
 Shot shootAtThinWall(bool worldContinuous, bool bodyContinuous,

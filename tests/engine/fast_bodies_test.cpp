@@ -8,9 +8,12 @@
 #include <cmath>
 #include <vector>
 
+#include "continuous_parts.h"
 #include "pivot/pivot.h"
 
 using namespace pivot;
+using pivot::test::Shot;
+using pivot::test::staticBox;
 
 namespace {
 
@@ -24,45 +27,19 @@ WorldDef fastBodiesWorld(BroadPhaseBoxes boxes = BroadPhaseBoxes::Compact) {
     return def;
 }
 
-BodyId staticBox(World& world, Vec2 at, float halfWidth, float halfHeight) {
-    BodyDef def;
-    def.position = at;
-    BodyId body = world.createBody(def);
-    ShapeDef shape;
-    shape.density = 0.0f;
-    world.createShape(body, shape, Polygon::box(halfWidth, halfHeight));
-    return body;
-}
-
+// A ball as continuous_parts.h makes it, a bullet if asked.
 BodyId ball(World& world, Vec2 at, Vec2 velocity, float radius, bool bullet = false) {
-    BodyDef def;
-    def.type = BodyType::Dynamic;
-    def.position = at;
-    def.linearVelocity = velocity;
-    def.bullet = bullet;
-    BodyId body = world.createBody(def);
-    world.createShape(body, ShapeDef{}, Circle{{0.0f, 0.0f}, radius});
+    const BodyId body = test::ball(world, at, velocity, radius);
+    if (bullet) world.setBodyBullet(body, true);
     return body;
 }
-
-struct Shot {
-    float furthest = -1e9f;  // the ball's largest x
-    int impacts = 0;
-};
 
 // A ball of radius 0.1 m from x = `from` at `speed` towards a static wall 0.05 m thick at
 // x = 0, stepped 30 times.
 Shot shootAtThinWall(const WorldDef& def, float speed, float from = -3.0f) {
     World world(def);
     staticBox(world, {0.0f, 0.0f}, 0.025f, 2.0f);
-    const BodyId shot = ball(world, {from, 0.0f}, {speed, 0.0f}, 0.1f);
-    Shot result;
-    for (int i = 0; i < 30; ++i) {
-        world.step(kDt);
-        result.furthest = std::max(result.furthest, world.bodyPosition(shot).x);
-        result.impacts += world.lastStepStats().impactCount;
-    }
-    return result;
+    return test::follow(world, ball(world, {from, 0.0f}, {speed, 0.0f}, 0.1f), 30);
 }
 
 }  // namespace
