@@ -149,9 +149,9 @@ void remeasureKept(C& c, bool letGo, const SolverPose* poses, const Rot* rotatio
 // the constraints on the other core, and `joint_grid`'s soft step on two workers was 15% slower
 // (the same holds for the joints' other passes over a whole group).
 void prepareJoints(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
-                   const StepContext& step, bool firstSubstep, IslandReport* reports) {
+                   const StepContext& step, bool firstSubstep, bool remeasure,
+                   IslandReport* reports) {
     const IslandSchedule& schedule = work.schedule;
-    const bool remeasure = !firstSubstep && laterSubstepsRemeasure(step);
     const SolverPose* poses = work.positions.data();
     const SolverBodyInputs* inputs = work.bodyInputs.data();
     // The joints are read from their pool in colour order, scattered: each is asked for a few
@@ -368,10 +368,11 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
     const bool firstSubstep = substep == 0;
     const bool lastSubstep = substep == step.substepCount - 1;
     const bool contactsBuilt = !firstSubstep && work.contactSolver.builtOncePerStep();
-    // Joints re-measured at this substep read each body's rotation from work.rotations where
-    // that costs fewer sines and cosines than two per joint.
-    const bool jointsRemeasure =
-        !firstSubstep && laterSubstepsRemeasure(step) && 2 * island.jointCount >= island.bodyCount;
+    // Joints kept across substeps are re-measured at this substep, in the warm start's pass;
+    // they read each body's rotation from work.rotations where that costs fewer sines and
+    // cosines than two per joint.
+    const bool remeasure = !firstSubstep && laterSubstepsRemeasure(step);
+    const bool rotationsForJoints = remeasure && 2 * island.jointCount >= island.bodyCount;
     bool rotationsMeasured = false;
     integrateVelocities(team, island, work);
     if (contactsBuilt) {
@@ -380,7 +381,7 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
         measureRotations(team, work);
         rotationsMeasured = true;
     }
-    if (jointsRemeasure && !rotationsMeasured) {
+    if (rotationsForJoints && !rotationsMeasured) {
         measureRotations(team, work);
         rotationsMeasured = true;
     }
@@ -394,7 +395,7 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
                 work.bodyInputs.data(), step, work.positions.data(), work.rotations.data());
         }
     });
-    prepareJoints(team, work, storage.joints, step, firstSubstep, mine);
+    prepareJoints(team, work, storage.joints, step, firstSubstep, remeasure, mine);
     team.sync();
 
     // Warm start: contacts, then joints, then mouse joints; each velocity sweep then solves
@@ -403,7 +404,7 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
     forEachBatchSaying(team, schedule.contactBatches, [&](IndexRange range, bool independent) {
         work.contactSolver.warmStart(range, velocities, independent);
     });
-    if (!firstSubstep && laterSubstepsRemeasure(step)) {
+    if (remeasure) {
         warmStartRemeasuring(team, work, step, rotationsMeasured ? work.rotations.data() : nullptr,
                              velocities);
     } else {
