@@ -198,7 +198,7 @@ ShapeExtent shapeExtent(const Shape& shape, Vec2 localCenter) {
     }
     const ConvexPolygon& p = shape.polygon;
     const float radius = collisionRadius(shape);
-    // A segment is as thin as its skin: any motion may carry it through something.
+    // A segment has no inside (min 0): any motion may carry it through something.
     float inner = isSegmentLike(shape.type) ? 0.0f : std::numeric_limits<float>::max();
     float outer = 0.0f;
     for (int i = 0; i < p.count; ++i) {
