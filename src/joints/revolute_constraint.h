@@ -46,39 +46,30 @@ struct RevoluteConstraint {
     /// stored (unscaled: see startImpulses). Returns the anchors' separation squared, m^2.
     float prepare(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
                   const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
-        const SolverBodyInputs& a = inputs[slots[0]];
-        const SolverBodyInputs& b = inputs[slots[1]];
-        const RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
-        jointIndex = index;
-        biasFactor = joint.biasFactor();
-        bodies = constraintBodies(slots, a, b);
-        point.localRA = joint.localAnchorA - a.localCenter;
-        point.localRB = joint.localAnchorB - b.localCenter;
-        angle.referenceAngle = joint.referenceAngle;
-        angle.limitEnabled = revolute.enableLimit;
-        angle.lower = revolute.lowerAngle;
-        angle.upper = revolute.upperAngle;
-        angle.motorEnabled = revolute.enableMotor;
-        angle.motorSpeed = revolute.motorSpeed;
-        angle.maxMotorImpulse = step.dt * revolute.maxMotorTorque;
-        angle.motorImpulse = revolute.motorImpulse;
-        angle.lowerImpulse = revolute.lowerImpulse;
-        angle.upperImpulse = revolute.upperImpulse;
+        load(joint, index, inputs, slots, step);
+        return remeasure(poses, step);
+    }
+    /// The same, with each solver slot's rotation at these poses given (the same values).
+    float prepare(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
+                  const JointSlots& slots, const SolverPose* poses, const Rot* rotations,
+                  const StepContext& step) {
+        load(joint, index, inputs, slots, step);
+        return remeasure(poses, rotations, step);
+    }
+
+    /// What prepare measures at the poses; alone, at a later substep, the constraint kept from
+    /// the one before (its impulses as stored) measured again. Returns the separation squared.
+    float remeasure(const SolverPose* poses, const StepContext& step) {
         const Vec2 separation = preparePoint(bodies, point, poses);
         prepareAngle(bodies, angle, poses, step.invDt);
         return lengthSquared(separation);
     }
-
-    /// A later substep: the constraint kept from the one before, its impulses as stored, is
-    /// measured again at the current poses (the same operations as in prepare).
-    void remeasure(const SolverPose* poses, const StepContext& step) {
-        preparePoint(bodies, point, poses);
-        prepareAngle(bodies, angle, poses, step.invDt);
-    }
     /// The same, with each solver slot's rotation at these poses given (the same values).
-    void remeasure(const SolverPose* poses, const Rot* rotations, const StepContext& step) {
-        preparePoint(bodies, point, poses, rotations[bodies.indexA], rotations[bodies.indexB]);
+    float remeasure(const SolverPose* poses, const Rot* rotations, const StepContext& step) {
+        const Vec2 separation =
+            preparePoint(bodies, point, poses, rotations[bodies.indexA], rotations[bodies.indexB]);
         prepareAngle(bodies, angle, poses, step.invDt);
+        return lengthSquared(separation);
     }
 
     /// Warm starting: impulses scale with the step, so that they keep the force they stand
@@ -180,6 +171,30 @@ struct RevoluteConstraint {
         float angularError = solveLimitPosition(bodies, angle, poses, biasFactor);
         float linearError = solvePointPosition<rebuildMass>(bodies, point, poses, biasFactor);
         return linearError <= kLinearSlop && angularError <= kAngularSlop;
+    }
+
+private:
+    // What prepare takes from the joint and its bodies, before anything is measured at the poses.
+    void load(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
+              const JointSlots& slots, const StepContext& step) {
+        const SolverBodyInputs& a = inputs[slots[0]];
+        const SolverBodyInputs& b = inputs[slots[1]];
+        const RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
+        jointIndex = index;
+        biasFactor = joint.biasFactor();
+        bodies = constraintBodies(slots, a, b);
+        point.localRA = joint.localAnchorA - a.localCenter;
+        point.localRB = joint.localAnchorB - b.localCenter;
+        angle.referenceAngle = joint.referenceAngle;
+        angle.limitEnabled = revolute.enableLimit;
+        angle.lower = revolute.lowerAngle;
+        angle.upper = revolute.upperAngle;
+        angle.motorEnabled = revolute.enableMotor;
+        angle.motorSpeed = revolute.motorSpeed;
+        angle.maxMotorImpulse = step.dt * revolute.maxMotorTorque;
+        angle.motorImpulse = revolute.motorImpulse;
+        angle.lowerImpulse = revolute.lowerImpulse;
+        angle.upperImpulse = revolute.upperImpulse;
     }
 };
 

@@ -143,13 +143,14 @@ void remeasureKept(C& c, bool letGo, const SolverPose* poses, const Rot* rotatio
 // comes after, in warmStartJoints). The first substep of a step lets go of the joints beyond
 // their let-go separation; later substeps rebuild each constraint at the current poses from the
 // impulses the substep before stored, except the kept ones (keptAcrossSubsteps), which the warm
-// start re-measures (warmStartRemeasuring).
+// start re-measures (warmStartRemeasuring). `rotations`, when given, holds each slot's rotation
+// at these poses (measureRotations): joints that can take them do, instead of two sines each.
 // Each member prepares the share of every colour that its sweeps solve first (forBatchShares),
 // so a constraint's lines stay on one core: cut by forBlocks instead, the set-up wrote half of
 // the constraints on the other core, and `joint_grid`'s soft step on two workers was 15% slower
 // (the same holds for the joints' other passes over a whole group).
 void prepareJoints(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
-                   const StepContext& step, bool firstSubstep, bool remeasure,
+                   const StepContext& step, bool firstSubstep, bool remeasure, const Rot* rotations,
                    IslandReport* reports) {
     const IslandSchedule& schedule = work.schedule;
     const SolverPose* poses = work.positions.data();
@@ -173,8 +174,16 @@ void prepareJoints(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joi
                 auto& joint = joints[jointIndex];
                 C& c = group[k];
                 c = {};
-                const float separationSquared =
-                    c.prepare(joint, jointIndex, inputs, schedule.jointPairs[at], poses, step);
+                const JointSlots& slots = schedule.jointPairs[at];
+                float separationSquared;
+                if constexpr (PreparesWithRotations<C>::value) {
+                    separationSquared =
+                        rotations
+                            ? c.prepare(joint, jointIndex, inputs, slots, poses, rotations, step)
+                            : c.prepare(joint, jointIndex, inputs, slots, poses, step);
+                } else {
+                    separationSquared = c.prepare(joint, jointIndex, inputs, slots, poses, step);
+                }
                 S::prepareSoftness(c, joint, step);
                 if (!firstSubstep && joint.letGo) {
                     c.makeInert();
@@ -368,11 +377,12 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
     const bool firstSubstep = substep == 0;
     const bool lastSubstep = substep == step.substepCount - 1;
     const bool contactsBuilt = !firstSubstep && work.contactSolver.builtOncePerStep();
-    // Joints kept across substeps are re-measured at this substep, in the warm start's pass;
-    // they read each body's rotation from work.rotations where that costs fewer sines and
-    // cosines than two per joint.
+    // Joints kept across substeps are re-measured at this substep, in the warm start's pass.
+    // Built or re-measured, they read each body's rotation from work.rotations where that costs
+    // fewer sines and cosines than two per joint (or where the contacts have them measured).
     const bool remeasure = !firstSubstep && laterSubstepsRemeasure(step);
-    const bool rotationsForJoints = remeasure && 2 * island.jointCount >= island.bodyCount;
+    const bool rotationsForJoints =
+        island.jointCount > 0 && 2 * island.jointCount >= island.bodyCount;
     bool rotationsMeasured = false;
     integrateVelocities(team, island, work);
     if (contactsBuilt) {
@@ -395,7 +405,8 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
                 work.bodyInputs.data(), step, work.positions.data(), work.rotations.data());
         }
     });
-    prepareJoints(team, work, storage.joints, step, firstSubstep, remeasure, mine);
+    prepareJoints(team, work, storage.joints, step, firstSubstep, remeasure,
+                  rotationsMeasured ? work.rotations.data() : nullptr, mine);
     team.sync();
 
     // Warm start: contacts, then joints, then mouse joints; each velocity sweep then solves

@@ -76,6 +76,15 @@ template <typename C>
 struct RemeasuresWithRotations<C, std::void_t<decltype(std::declval<C&>().remeasure(
                                       std::declval<const SolverPose*>(), std::declval<const Rot*>(),
                                       std::declval<const StepContext&>()))>> : std::true_type {};
+/// Those whose prepare also takes each solver slot's rotation (the same reason).
+template <typename C, typename = void>
+struct PreparesWithRotations : std::false_type {};
+template <typename C>
+struct PreparesWithRotations<
+    C, std::void_t<decltype(std::declval<C&>().prepare(
+           std::declval<const Joint&>(), std::int32_t{}, std::declval<const SolverBodyInputs*>(),
+           std::declval<const JointSlots&>(), std::declval<const SolverPose*>(),
+           std::declval<const Rot*>(), std::declval<const StepContext&>()))>> : std::true_type {};
 
 /// What a strategy does unless it says otherwise: rigid velocities, no bias, no position phase.
 struct StrategyDefaults {
