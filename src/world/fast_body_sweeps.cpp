@@ -6,6 +6,7 @@
 #include "collision/aabb.h"
 #include "collision/time_of_impact.h"
 #include "core/buffer.h"
+#include "pivot/constants.h"
 
 namespace pivot {
 
@@ -31,14 +32,36 @@ bool isFast(const Body& b) {
     return reachOf(b) > 0.5f * b.minExtent;
 }
 
-// The shape's centroid in its body's frame, and a circle of a quarter of its depth there.
+// The shape's centroid in its body's frame (a capsule's is its core's middle).
+Vec2 centroidOf(const Shape& shape) {
+    return shape.type == ShapeType::Circle ? shape.circle.center : shape.polygon.centroid;
+}
+
+// A circle of a quarter of the shape's depth around its centroid.
 DistanceProxy coreCircle(const Shape& shape) {
     DistanceProxy proxy;
     proxy.count = 1;
-    proxy.vertices[0] =
-        shape.type == ShapeType::Circle ? shape.circle.center : shape.polygon.centroid;
+    proxy.vertices[0] = centroidOf(shape);
     proxy.radius = 0.25f * shapeExtent(shape, Vec2{}).min;
     return proxy;
+}
+
+// Whether a chain segment lets a fast shape's sweep by without a time of impact, as Box2D v3
+// lets it: when the shape's centroid starts behind the segment's line (a one-sided segment
+// stops nothing from behind), or comes towards the line by less than a quarter of the body's
+// thinnest part (the contacts of the next step hold that much, and a body sliding fast along a
+// chain is not stopped at every join it brushes). `from` and `to` are the centroid at the
+// sweep's two ends.
+bool chainLetsBy(const Shape& segment, const Transform& xf, Vec2 from, Vec2 to, float minExtent) {
+    const Vec2 p1 = transformPoint(xf, segment.polygon.vertices[0]);
+    const Vec2 p2 = transformPoint(xf, segment.polygon.vertices[1]);
+    const float segmentLength = length(p2 - p1);
+    if (!(segmentLength > kLinearSlop)) return false;
+    const Vec2 along = (1.0f / segmentLength) * (p2 - p1);
+    // Distances in front of the line, along its normal (the right of p1 -> p2).
+    const float before = cross(from - p1, along);
+    const float after = cross(to - p1, along);
+    return before < 0.0f || before - after < 0.25f * minExtent;
 }
 
 }  // namespace
@@ -54,6 +77,9 @@ float FastBodySweeps::earliestHit(std::int32_t index, const SlotPool<Body>& bodi
     // (cheaper than its box at the start: no sine and cosine, no second box).
     const float reach = reachOf(body);
     const BroadPhase& broadPhase = contactManager.broadPhase();
+    // The body's pose at the sweep's start, for chains only (one sine and cosine).
+    bool startKnown = false;
+    Transform start;
     float hit = 1.0f;
     for (std::int32_t s = body.shapeList; s != -1; s = shapes[s].next) {
         const Shape& shape = shapes[s];
@@ -66,6 +92,18 @@ float FastBodySweeps::earliestHit(std::int32_t index, const SlotPool<Body>& bodi
             const Body& other = bodies[shapes[otherShape].body];
             if (other.type != BodyType::Static && (!body.bullet || other.bullet)) return true;
             if (!contactManager.solidShapesMayCollide(s, otherShape)) return true;
+            if (shapes[otherShape].type == ShapeType::ChainSegment) {
+                if (!startKnown) {
+                    start.q = Rot(body.angle0);
+                    start.p = body.center0 - rotate(start.q, body.localCenter);
+                    startKnown = true;
+                }
+                const Vec2 centroid = centroidOf(shape);
+                if (chainLetsBy(shapes[otherShape], other.xf, transformPoint(start, centroid),
+                                transformPoint(body.xf, centroid), body.minExtent)) {
+                    return true;
+                }
+            }
             const Sweep otherSweep = standing(other);
             const DistanceProxy otherProxy = contactProxy(shapes[otherShape]);
             ImpactResult impact = timeOfImpact(otherProxy, otherSweep, proxy, sweep, hit);

@@ -10,7 +10,10 @@
 // the fast body's sweep, the other body standing at its pose; the earliest t in (0, 1) is the
 // hit. Shapes that touch at the start (t = 0) are swept again as a circle of a quarter of the
 // fast shape's depth around its centroid: a body sliding along a wall is not held by it, and
-// one that starts the step in it still cannot pass through.
+// one that starts the step in it still cannot pass through. A chain segment is not swept
+// against when the shape's centroid starts behind it or comes towards its line by less than
+// minExtent / 4 (Box2D v3's rule): one-sided chains let bodies through from behind, and a body
+// sliding fast along a chain does not stop at the joins it brushes.
 //
 // A hit puts the body where its sweep was at t (centre and angle interpolated), its velocity
 // kept: nothing is solved, and the next step's contacts stop it. Its shapes' boxes follow, and

@@ -1,6 +1,7 @@
 // Continuous collision's FastBodies policy (world/fast_body_sweeps.h, Box2D v3's): fast bodies
 // stop at thin walls (and tunnel with continuous collision off, so each check could fail), slow
 // ones are left to the discrete step, a body sliding fast along a wall is not held by it,
+// chains stop fast bodies only in front and only when they close on them by enough,
 // bullets stop at dynamic bodies that others pass through, and the policy is checked, switched,
 // kept by snapshots and worker-count independent.
 #include <gtest/gtest.h>
@@ -86,6 +87,79 @@ TEST(FastBodies, ABallSlidingFastAlongAWallIsNotHeldByIt) {
         EXPECT_EQ(world.lastStepStats().impactCount, 0) << "step " << i;
     }
     EXPECT_NEAR(world.bodyPosition(slider).x, -50.0f + 10.0f * 120.0f * kDt, 0.05f);
+}
+
+namespace {
+
+// A static body holding an open chain through `points` (the first and last are ghosts).
+void staticChain(World& world, std::vector<Vec2> points) {
+    const BodyId ground = world.createBody(BodyDef{});
+    Chain chain;
+    chain.points = std::move(points);
+    world.createChain(ground, ShapeDef{}, chain);
+}
+
+// A ball of radius 0.1 m at (x, 0) moving at `speed` along x, towards a one-sided chain
+// segment on the y axis whose solid side faces -x, stepped 30 times.
+Shot shootAtChainWall(const WorldDef& def, float x, float speed) {
+    World world(def);
+    staticChain(world, {{0.0f, 3.0f}, {0.0f, 2.0f}, {0.0f, -2.0f}, {0.0f, -3.0f}});
+    return test::follow(world, ball(world, {x, 0.0f}, {speed, 0.0f}, 0.1f), 30);
+}
+
+// Impacts counted over 10 steps of a ball of radius 0.1 m skimming a floor at 120 m/s from 3 cm
+// above it while closing on it at 1.2 m/s (2 cm a step, less than a quarter of its radius),
+// with `floor` adding the floor's shapes to a static body. Over a plain segment, its sweep
+// reaches the segment's skin within the first step, a hit.
+template <typename Floor>
+int skimmingImpacts(Floor floor) {
+    World world(fastBodiesWorld());
+    const BodyId ground = world.createBody(BodyDef{});
+    floor(world, ground);
+    ball(world, {-50.0f, 0.13f}, {120.0f, -1.2f}, 0.1f);
+    int impacts = 0;
+    for (int i = 0; i < 10; ++i) {
+        world.step(kDt);
+        impacts += world.lastStepStats().impactCount;
+    }
+    return impacts;
+}
+
+}  // namespace
+
+TEST(FastBodies, AChainStopsAFastBallInFrontAndLetsOneFromBehindThrough) {
+    const Shot front = shootAtChainWall(fastBodiesWorld(), -3.0f, 500.0f);
+    EXPECT_LT(front.furthest, 0.0f) << "the ball's centre passed the chain";
+    EXPECT_GE(front.impacts, 1);
+    WorldDef off = fastBodiesWorld();
+    off.enableContinuous = false;
+    EXPECT_GT(shootAtChainWall(off, -3.0f, 500.0f).furthest, 0.5f)
+        << "the check above could not fail";
+    // From behind, the chain's solid side faces away: no contact holds the ball, and its sweep
+    // must not stop it either (it moves 2 m a step, the most a step allows).
+    const Shot behind = shootAtChainWall(fastBodiesWorld(), 3.0f, -500.0f);
+    EXPECT_EQ(behind.impacts, 0);
+    World world(fastBodiesWorld());
+    staticChain(world, {{0.0f, 3.0f}, {0.0f, 2.0f}, {0.0f, -2.0f}, {0.0f, -3.0f}});
+    const BodyId shot = ball(world, {3.0f, 0.0f}, {-500.0f, 0.0f}, 0.1f);
+    for (int i = 0; i < 30; ++i) world.step(kDt);
+    EXPECT_NEAR(world.bodyPosition(shot).x, 3.0f - 30 * kMaxTranslation, 1e-3f)
+        << "it went through and on";
+}
+
+TEST(FastBodies, ABallSkimmingAChainIsNotStoppedButOneSkimmingASegmentIs) {
+    // The chain's points run right to left, so its solid side faces up; the segment lies
+    // where the chain does.
+    const int overChain = skimmingImpacts([](World& world, BodyId ground) {
+        Chain chain;
+        for (float x = 110.0f; x >= -110.0f; x -= 2.0f) chain.points.push_back({x, 0.0f});
+        world.createChain(ground, ShapeDef{}, chain);
+    });
+    EXPECT_EQ(overChain, 0);
+    const int overSegment = skimmingImpacts([](World& world, BodyId ground) {
+        world.createShape(ground, ShapeDef{}, Segment{{-108.0f, 0.0f}, {108.0f, 0.0f}});
+    });
+    EXPECT_GE(overSegment, 1) << "the chain's check above could not fail";
 }
 
 TEST(FastBodies, ABulletStopsAtADynamicBoxThatAnotherBallPassesThrough) {
