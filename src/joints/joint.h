@@ -103,9 +103,11 @@ struct Joint {
             data);
     }
     /// Whether the stored impulses, and the forces and torques they stand for (impulse / dt),
-    /// are all finite: what the reaction queries report must be.
-    bool hasFiniteReactions() const {
-        return std::visit([&](const auto& d) { return d.hasFiniteReactions(impulseInvDt); }, data);
+    /// are all finite: what the reaction queries report must be. D is the joint's type (the
+    /// solver knows it: no dispatch on the variant).
+    template <typename D>
+    bool hasFiniteReactionsAs() const {
+        return std::get<D>(data).hasFiniteReactions(impulseInvDt);
     }
     /// N and N m: the force and torque the stored impulses applied to body B (impulse / dt).
     Vec2 reactionForce() const;

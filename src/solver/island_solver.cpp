@@ -264,7 +264,7 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
                 std::uint8_t& letGo = work.jointLetGo[at];
                 IslandReport& report = reports[jointMember(work.schedule, at)];
                 // The bodies are still at their start-of-step poses (written back later).
-                if (!joint.hasFiniteReactions()) {
+                if (!joint.template hasFiniteReactionsAs<typename C::Storage>()) {
                     joint.letGoFor(JointLetGoReason::NonFinite, joint.separation(bodies));
                     letGo = 1;
                     ++report.letGoJoints;

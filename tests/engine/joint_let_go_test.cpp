@@ -204,15 +204,15 @@ TEST(JointLetGo, AReactionThatWouldOverflowIsNotFinite) {
     RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
     joint.impulseInvDt = 60.0f;
     revolute.impulse = {1e37f, 0.0f};
-    EXPECT_FALSE(joint.hasFiniteReactions());
+    EXPECT_FALSE(joint.hasFiniteReactionsAs<RevoluteJoint>());
     revolute.impulse = {1e30f, 0.0f};
-    EXPECT_TRUE(joint.hasFiniteReactions());
+    EXPECT_TRUE(joint.hasFiniteReactionsAs<RevoluteJoint>());
     revolute.motorImpulse = 3e36f;
     revolute.lowerImpulse = 3e36f;  // each times 60 is finite, their sum is not
     EXPECT_TRUE(std::isfinite(60.0f * revolute.motorImpulse));
-    EXPECT_FALSE(joint.hasFiniteReactions());
+    EXPECT_FALSE(joint.hasFiniteReactionsAs<RevoluteJoint>());
     joint.letGoFor(JointLetGoReason::NonFinite, 1.0f);
-    EXPECT_TRUE(joint.hasFiniteReactions());
+    EXPECT_TRUE(joint.hasFiniteReactionsAs<RevoluteJoint>());
     EXPECT_TRUE(joint.letGo);
 }
 
