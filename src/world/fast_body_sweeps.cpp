@@ -38,6 +38,14 @@ Vec2 centroidOf(const Shape& shape) {
     return shape.type == ShapeType::Circle ? shape.circle.center : shape.polygon.centroid;
 }
 
+// The point a fraction t of the way from a to b, never outside [a, b]: rounded, (1 - t) a + t b
+// can land an ulp beyond both ends, which for a body at the edge of the input limits (an angle
+// of 1e10 rad, a coordinate of kMaxCoordinate) is beyond what the API accepts.
+float between(float a, float b, float t) {
+    const float point = flushDenormal((1.0f - t) * a + t * b);
+    return std::fmin(std::fmax(point, std::fmin(a, b)), std::fmax(a, b));
+}
+
 // A circle of a quarter of the shape's depth around its centroid.
 DistanceProxy coreCircle(const Shape& shape) {
     DistanceProxy proxy;
@@ -135,8 +143,9 @@ int FastBodySweeps::solve(const std::vector<std::int32_t>& solvedBodies, SlotPoo
         const float t = earliestHit(index, bodies, shapes, contactManager);
         if (!(t < 1.0f)) return;
         Body& body = bodies[index];
-        body.center = flushDenormal((1.0f - t) * body.center0 + t * body.center);
-        body.angle = flushDenormal((1.0f - t) * body.angle0 + t * body.angle);
+        body.center = {between(body.center0.x, body.center.x, t),
+                       between(body.center0.y, body.center.y, t)};
+        body.angle = between(body.angle0, body.angle, t);
         restartSweep(body);  // what is left of its motion is the next step's
         synchronizeTransform(body);
         contactManager.synchronizeShapes(index, false);  // it starts the next step here
