@@ -15,9 +15,9 @@
 // minExtent / 4 (Box2D v3's rule): one-sided chains let bodies through from behind, and a body
 // sliding fast along a chain does not stop at the joins it brushes.
 //
-// A hit puts the body where its sweep was at t (centre and angle interpolated), its velocity
-// kept: nothing is solved, and the next step's contacts stop it. Its shapes' boxes follow, and
-// the new pairs are found once, after every fast body is swept.
+// A hit puts the body where its sweep was at t (centre and angle interpolated, never past
+// either end), its velocity kept: nothing is solved, and the next step's contacts stop it. Its
+// shapes' boxes follow, and the new pairs are found once, after every fast body is swept.
 //
 // Bullets are swept after the other fast bodies, so they meet those where their sweeps left
 // them. A sweep moves only its own body and reads only bodies no sweep of its round moves
