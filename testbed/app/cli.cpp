@@ -106,9 +106,11 @@ std::string usage() {
            "  --pos-iters N     position iterations per step (default 3)\n"
            "  --substeps N      substeps per step, in [1, 64] (default 1); the iteration\n"
            "                    counts apply in each substep\n"
-           "  --continuous on|off  continuous collision in every scene (default: as each\n"
-           "                    scene has it: on, but off in chain, chain_drag, far_chain,\n"
-           "                    ragdoll, ragdoll_motorized and car)\n"
+           "  --continuous on|off|substeps|fast  continuous collision in every scene\n"
+           "                    (default: as each scene has it: on, but off in chain,\n"
+           "                    chain_drag, far_chain, ragdoll, ragdoll_motorized and car);\n"
+           "                    substeps or fast: on, Box2D 2.4.1's policy (the default) or\n"
+           "                    Box2D v3's (WorldDef::continuousCollision)\n"
            "  --csv FILE        also write the table to FILE as CSV\n"
            "  --html FILE       write a self-contained page replaying the runs in a browser\n"
            "                    (the --scene, or pendulum_drag, chain_drag, bridge_heavy and\n"
@@ -190,8 +192,15 @@ CliOptions parseCli(const std::vector<std::string>& args) {
             options.substeps = static_cast<int>(parseInteger(arg, value(), 1, kMaxSubsteps));
         } else if (arg == "--continuous") {
             const std::string v = value();
-            if (v != "on" && v != "off") throw CliError("--continuous takes on or off");
-            options.continuous = v == "on";
+            if (v == "on" || v == "off") {
+                options.continuous = v == "on";
+            } else if (v == "substeps" || v == "fast") {
+                options.continuous = true;
+                options.continuousCollision =
+                    v == "fast" ? ContinuousCollision::FastBodies : ContinuousCollision::Substeps;
+            } else {
+                throw CliError("--continuous takes on, off, substeps or fast");
+            }
         } else if (arg == "--csv") {
             options.csvPath = value();
         } else if (arg == "--docs") {

@@ -25,6 +25,8 @@ struct CliOptions {
     int substeps = 1;  ///< WorldDef::substepCount
     /// Continuous collision on or off in every scene; unset: as each scene has it.
     std::optional<bool> continuous;
+    /// Its policy where it is on (WorldDef::continuousCollision).
+    ContinuousCollision continuousCollision = ContinuousCollision::Substeps;
     std::optional<std::string> csvPath;
     std::optional<std::string> htmlPath;  ///< write the browser replay here
     std::string docsDir = "docs";         ///< report: where results.md goes

@@ -40,6 +40,7 @@ std::vector<testbed::TableRow> runAll(const testbed::CliOptions& options) {
                 sceneOptions.hz = options.hz;
                 sceneOptions.substepCount = options.substeps;
                 sceneOptions.continuous = options.continuous;
+                sceneOptions.continuousCollision = options.continuousCollision;
                 scenes::Scene scene = scenes::buildScene(info, sceneOptions);
 
                 scenes::RunSettings settings;

@@ -81,13 +81,23 @@ TEST(TestbedCli, BadValuesAreErrors) {
     EXPECT_NE(errorOf({"--substeps", "65"}), "");
     EXPECT_EQ(parseCli({"--substeps", "4"}).substeps, 4);
     EXPECT_EQ(parseCli({"--contact", "soft"}).contact, ContactCorrection::Soft);
+    EXPECT_NE(errorOf({"--continuous", "sometimes"}).find("on, off, substeps or fast"),
+              std::string::npos);
+    EXPECT_EQ(parseCli({}).continuousCollision, ContinuousCollision::Substeps);
+    const CliOptions fast = parseCli({"--continuous", "fast"});
+    EXPECT_EQ(fast.continuous, std::optional<bool>(true));
+    EXPECT_EQ(fast.continuousCollision, ContinuousCollision::FastBodies);
+    const CliOptions off = parseCli({"--continuous", "off"});
+    EXPECT_EQ(off.continuous, std::optional<bool>(false));
+    EXPECT_EQ(off.continuousCollision, ContinuousCollision::Substeps);
 }
 
 TEST(TestbedCli, HelpExplainsEachOption) {
     std::string text = usage();
-    for (const char* option : {"--scene", "--solver", "--contact", "--list", "--bias", "--steps",
-                               "--hz", "--vel-iters", "--substeps", "--pos-iters", "--csv",
-                               "--html", "--docs", "--help", "reference", "report"}) {
+    for (const char* option :
+         {"--scene", "--solver", "--contact", "--list", "--bias", "--steps", "--hz", "--vel-iters",
+          "--substeps", "--pos-iters", "--csv", "--html", "--docs", "--help", "--continuous",
+          "fast", "reference", "report"}) {
         EXPECT_NE(text.find(option), std::string::npos) << option;
     }
 }
