@@ -91,19 +91,20 @@ TEST(FastBodies, ABallSlidingFastAlongAWallIsNotHeldByIt) {
 
 namespace {
 
-// A static body holding an open chain through `points` (the first and last are ghosts).
-void staticChain(World& world, std::vector<Vec2> points) {
+// A static one-sided chain segment on the y axis whose solid side faces -x (an open chain
+// of one segment between two ghosts).
+void chainWall(World& world) {
     const BodyId ground = world.createBody(BodyDef{});
     Chain chain;
-    chain.points = std::move(points);
+    chain.points = {{0.0f, 3.0f}, {0.0f, 2.0f}, {0.0f, -2.0f}, {0.0f, -3.0f}};
     world.createChain(ground, ShapeDef{}, chain);
 }
 
-// A ball of radius 0.1 m at (x, 0) moving at `speed` along x, towards a one-sided chain
-// segment on the y axis whose solid side faces -x, stepped 30 times.
+// A ball of radius 0.1 m at (x, 0) moving at `speed` along x towards the chain wall, stepped
+// 30 times.
 Shot shootAtChainWall(const WorldDef& def, float x, float speed) {
     World world(def);
-    staticChain(world, {{0.0f, 3.0f}, {0.0f, 2.0f}, {0.0f, -2.0f}, {0.0f, -3.0f}});
+    chainWall(world);
     return test::follow(world, ball(world, {x, 0.0f}, {speed, 0.0f}, 0.1f), 30);
 }
 
@@ -140,7 +141,7 @@ TEST(FastBodies, AChainStopsAFastBallInFrontAndLetsOneFromBehindThrough) {
     const Shot behind = shootAtChainWall(fastBodiesWorld(), 3.0f, -500.0f);
     EXPECT_EQ(behind.impacts, 0);
     World world(fastBodiesWorld());
-    staticChain(world, {{0.0f, 3.0f}, {0.0f, 2.0f}, {0.0f, -2.0f}, {0.0f, -3.0f}});
+    chainWall(world);
     const BodyId shot = ball(world, {3.0f, 0.0f}, {-500.0f, 0.0f}, 0.1f);
     for (int i = 0; i < 30; ++i) world.step(kDt);
     EXPECT_NEAR(world.bodyPosition(shot).x, 3.0f - 30 * kMaxTranslation, 1e-3f)
