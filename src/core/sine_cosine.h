@@ -7,7 +7,8 @@
 // sincosf was 4.5% of large_pyramid's FullNGS step, and each call made the compiler spill the
 // sweep's vector registers around it. libm stays wherever Box2D 2.4.1's bits are kept (small
 // islands, the reference tests): only coloured islands, which 2.4.1 would solve in another
-// order anyway, use this.
+// order anyway, and substepped worlds, which have no 2.4.1 counterpart (their bodies'
+// rotations at each substep, constraints/rotation_lanes.h), use this.
 //
 // The method is the textbook one: k = round(a * 2/pi), r = a - k pi/2 in three parts
 // (Cody-Waite: the first two parts have few enough bits that k times them is exact for

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "constraints/rotation_lanes.h"
 #include "core/buffer.h"
 #include "core/prefetch.h"
 #include "islands/graph_coloring.h"
@@ -74,22 +75,34 @@ void loadBodies(const Team& team, const IslandView& island, IslandWorkspace& wor
     });
 }
 
-// Where each solver slot has moved since the start of the step (for contacts built once a step).
+// Where each solver slot has moved since the start of the step (for contacts built once a step,
+// which only substepped worlds do: the rotations by the polynomial, constraints/rotation_lanes.h).
 void measureMotion(const Team& team, IslandWorkspace& work) {
     team.forBlocks(static_cast<int>(work.positions.size()), [&](IndexRange mine) {
         for (int i = mine.begin; i < mine.end; ++i) {
-            const SolverPose& now = work.positions[i];
-            const SolverPose& start = work.stepStart[i];
-            work.motion[i] = {now.c - start.c, Rot(now.a - start.a)};
+            work.motion[i].dp = work.positions[i].c - work.stepStart[i].c;
         }
+        polynomialRotations(
+            mine.begin, mine.end, [&](int i) { return work.positions[i].a - work.stepStart[i].a; },
+            [&](int i, Rot q) { work.motion[i].dq = q; });
     });
 }
 
-// Each slot's rotation, once, for the contacts' set-up (which would otherwise compute both of
-// its bodies' for every contact).
-void measureRotations(const Team& team, IslandWorkspace& work) {
+// Each slot's rotation, once, for the contacts' and joints' set-up (which would otherwise compute
+// both of its bodies' for every constraint). A substepped world, which has no Box2D 2.4.1 bits
+// to keep, measures them by the polynomial, several at a time (constraints/rotation_lanes.h).
+void measureRotations(const Team& team, IslandWorkspace& work, const StepContext& step) {
+    const bool polynomial = step.substepCount > 1;
     team.forBlocks(static_cast<int>(work.positions.size()), [&](IndexRange mine) {
-        for (int i = mine.begin; i < mine.end; ++i) work.rotations[i] = Rot(work.positions[i].a);
+        if (polynomial) {
+            polynomialRotations(
+                mine.begin, mine.end, [&](int i) { return work.positions[i].a; },
+                [&](int i, Rot q) { work.rotations[i] = q; });
+        } else {
+            for (int i = mine.begin; i < mine.end; ++i) {
+                work.rotations[i] = Rot(work.positions[i].a);
+            }
+        }
     });
 }
 
@@ -388,11 +401,11 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
     if (contactsBuilt) {
         measureMotion(team, work);
     } else if (island.contactCount > 0) {
-        measureRotations(team, work);
+        measureRotations(team, work, step);
         rotationsMeasured = true;
     }
     if (rotationsForJoints && !rotationsMeasured) {
-        measureRotations(team, work);
+        measureRotations(team, work, step);
         rotationsMeasured = true;
     }
     team.sync();

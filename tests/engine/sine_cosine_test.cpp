@@ -1,4 +1,5 @@
-// core/sine_cosine.h: the polynomial sine and cosine the NGS sweeps of coloured islands use.
+// core/sine_cosine.h: the polynomial sine and cosine the NGS sweeps of coloured islands and the
+// substepped worlds' rotations (constraints/rotation_lanes.h) use.
 // It must be as accurate as a float allows over the angles it covers, hand every other angle
 // (large, infinite, NaN) to libm, and give the same bits at every width: one float, four SSE2
 // lanes, eight AVX2 lanes.
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "constraints/lanes.h"
+#include "constraints/rotation_lanes.h"
 #include "core/sine_cosine.h"
 
 using namespace pivot;
@@ -145,5 +147,37 @@ TEST(SineCosine, EightLanesGiveTheScalarBits) {
     expectLanesMatchScalar<lanes::F8>();
 }
 #endif
+
+// polynomialRotations, as a substepped world measures its bodies' rotations: each is the scalar
+// call's, whatever run it falls in (runs of any length, with a tail, and with lanes the
+// polynomial does not cover among covered ones).
+TEST(SineCosine, RotationsAtOnceGiveTheScalarBits) {
+    std::vector<float> angles = testAngles();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (const float odd : {1.0e6f, nan, -kLargestAngle, std::numeric_limits<float>::infinity()}) {
+        angles.insert(angles.begin() + 3, odd);
+        angles.push_back(odd);
+    }
+    for (const int begin : {0, 1, 5}) {
+        for (const int trim : {0, 3, 7}) {
+            const int end = static_cast<int>(angles.size()) - trim;
+            std::vector<Rot> rotations(angles.size());
+            polynomialRotations(
+                begin, end, [&](int i) { return angles[static_cast<std::size_t>(i)]; },
+                [&](int i, Rot q) { rotations[static_cast<std::size_t>(i)] = q; });
+            for (int i = begin; i < end; ++i) {
+                const float a = angles[static_cast<std::size_t>(i)];
+                const Rot one = rotationOf(a, true);
+                const Rot& many = rotations[static_cast<std::size_t>(i)];
+                if (std::isnan(a)) {
+                    ASSERT_TRUE(std::isnan(many.s) && std::isnan(many.c)) << i;
+                    continue;
+                }
+                ASSERT_EQ(bitsOf(many.s), bitsOf(one.s)) << a;
+                ASSERT_EQ(bitsOf(many.c), bitsOf(one.c)) << a;
+            }
+        }
+    }
+}
 
 }  // namespace
