@@ -37,12 +37,13 @@ struct Options {
     bool continuous = true;
     // --continuous substeps|fast: every pivot2d set-up's policy (unset: each its own).
     std::optional<ContinuousCollision> continuousCollision;
-    bool predictiveBoxes = false;      // --boxes predictive: pivot2d's worlds use Box2D 2.4.1's
-    bool sharedTasks = false;          // --pivot-workers tasks: pivot2d's on the bench's pool
-    bool adaptWorkers = true;          // --adapt off: pivot2d's worlds on all workers every step
-    std::string only;                  // --scene
-    std::vector<std::string> engines;  // --engines; empty: all
-    std::string profileEngine;         // --profile: step one engine, untimed, for a profiler
+    bool predictiveBoxes = false;  // --boxes predictive: pivot2d's worlds use Box2D 2.4.1's
+    bool sharedTasks = false;      // --pivot-workers tasks: pivot2d's on the bench's pool
+    bool adaptWorkers = true;      // --adapt off: pivot2d's worlds on all workers every step
+    std::optional<int> positionIterations;  // --position-iterations N
+    std::string only;                       // --scene
+    std::vector<std::string> engines;       // --engines; empty: all
+    std::string profileEngine;              // --profile: step one engine, untimed, for a profiler
     int profileSteps = 0;
 };
 
@@ -73,6 +74,7 @@ public:
         settings.predictiveBoxes = options.predictiveBoxes;
         settings.sharedTasks = options.sharedTasks;
         settings.adaptWorkers = options.adaptWorkers;
+        settings.positionIterations = options.positionIterations;
         engine_ = kind.make(settings);
         script_ = scene.build(*engine_);
     }
@@ -199,7 +201,7 @@ void usage(const std::vector<EngineKind>& kinds) {
         << "usage: pivot-bench [--quick] [--csv] [--repeats N] [--workers N] [--scene NAME]\n"
            "                   [--engines A,B,...] [--continuous on|off|substeps|fast]\n"
            "                   [--boxes compact|predictive] [--pivot-workers own|tasks]\n"
-           "                   [--adapt on|off] [--list]\n"
+           "                   [--adapt on|off] [--position-iterations N] [--list]\n"
            "                   [--profile ENGINE STEPS]\n"
            "  Times each scene in every engine, 1/60 s steps, continuous collision on, sleeping\n"
            "  as the scene says, and prints the median milliseconds per step (the first step\n"
@@ -228,6 +230,9 @@ void usage(const std::vector<EngineKind>& kinds) {
            "  --adapt off  pivot2d's worlds step on all their workers at every step\n"
            "             (WorldDef::adaptWorkerCount = false) instead of timing whether the\n"
            "             caller alone is faster (the default, --adapt on)\n"
+           "  --position-iterations N  full_ngs and baumgarte take N position iterations a\n"
+           "             step instead of 3 (0..100; 0: no NGS position sweeps, to see what\n"
+           "             they cost)\n"
            "  --list     name and describe the scenes\n"
            "  --scene queries  only the query rows (ray casts and box queries in 10^4\n"
            "             shapes); --scene memory  only the memory rows\n"
@@ -273,6 +278,17 @@ int main(int argc, char** argv) {
         } else if (arg == "--adapt" && i + 1 < argc &&
                    (std::string(argv[i + 1]) == "on" || std::string(argv[i + 1]) == "off")) {
             options.adaptWorkers = std::string(argv[++i]) == "on";
+        } else if (arg == "--position-iterations" && i + 1 < argc) {
+            char* end = nullptr;
+            const long n = std::strtol(argv[i + 1], &end, 10);
+            if (end == argv[i + 1] || *end != '\0' || n < 0 || n > 100) {
+                std::cerr << "pivot-bench: --position-iterations takes a whole number from 0 "
+                             "to 100, not '"
+                          << argv[i + 1] << "'\n";
+                return 2;
+            }
+            options.positionIterations = static_cast<int>(n);
+            ++i;
         } else if (arg == "--profile" && i + 2 < argc) {
             options.profileEngine = argv[++i];
             options.profileSteps = std::max(0, std::atoi(argv[++i]));
@@ -376,6 +392,10 @@ int main(int argc, char** argv) {
         options.predictiveBoxes ? "predictive" : "compact",
         options.sharedTasks ? "the bench's pool of threads (tasks)" : "threads of their own",
         options.adaptWorkers ? "" : ", all of them at every step");
+    if (options.positionIterations) {
+        std::printf("full_ngs and baumgarte: %d position iteration%s a step (not 3).\n",
+                    *options.positionIterations, *options.positionIterations == 1 ? "" : "s");
+    }
     for (const EngineKind& kind : kinds) {
         std::printf("  %-12s %s\n", kind.name.c_str(), kind.about.c_str());
     }

@@ -30,6 +30,9 @@ struct WorldSettings {
     bool sharedTasks = false;
     /// pivot2d: WorldDef::adaptWorkerCount (false: every step on all its workers).
     bool adaptWorkers = true;
+    /// pivot2d: the position iterations of its set-ups of one substep (full_ngs, baumgarte);
+    /// unset, each set-up's own (3). 0 leaves out the NGS position sweeps: what they cost.
+    std::optional<int> positionIterations;
 };
 
 class Engine : public Builder {

@@ -42,7 +42,8 @@ constexpr PivotSetup kSetups[] = {
 
 class PivotEngine final : public Engine {
 public:
-    PivotEngine(const PivotSetup& setup, const WorldSettings& settings) : setup_(setup) {
+    PivotEngine(const PivotSetup& setup, const WorldSettings& settings)
+        : setup_(setup), positionIterations_(setup.positionIterations) {
         WorldDef def;
         def.enableSleep = settings.sleep;
         def.enableContinuous = settings.continuous;
@@ -61,10 +62,13 @@ public:
             def.finishTask = [this](void* handle) { tasks_->finish(handle); };
         }
         world_ = std::make_unique<World>(def);
+        if (settings.positionIterations && setup.substeps == 1) {
+            positionIterations_ = *settings.positionIterations;
+        }
     }
 
     void step() override {
-        world_->step(kTimeStep, setup_.velocityIterations, setup_.positionIterations);
+        world_->step(kTimeStep, setup_.velocityIterations, positionIterations_);
     }
 
     int contactCount() const override { return world_->lastStepStats().contactCount; }
@@ -167,6 +171,7 @@ private:
     }
 
     PivotSetup setup_;
+    int positionIterations_;           // the set-up's, or --position-iterations
     std::unique_ptr<TaskPool> tasks_;  // outlives the world, which it serves
     std::vector<StepTask> pending_;
     std::size_t nextSlot_ = 0;
