@@ -143,13 +143,16 @@ struct Mat22 {
     Cramer cramer() const {
         Cramer k{cx.x, cy.x, cx.y, cy.y, 0.0f};
         const float p = k.a11 * k.a22, q = k.a12 * k.a21;
-        float det = p - q;
-        float scale = 1.0f;
-        if (!std::isfinite(p) || !std::isfinite(q)) {
-            scale = 1.0f / largestEntry();
-            k.a11 *= scale, k.a12 *= scale, k.a21 *= scale, k.a22 *= scale;
-            det = k.a11 * k.a22 - k.a12 * k.a21;
-        }
+        if (!std::isfinite(p) || !std::isfinite(q)) return rescaledCramer();
+        const float det = p - q;
+        k.invDet = det != 0.0f ? 1.0f / det : det;
+        return k;
+    }
+    /// cramer's rare path, apart so that the common one is small enough to be inlined.
+    Cramer rescaledCramer() const {
+        const float scale = 1.0f / largestEntry();
+        Cramer k{scale * cx.x, scale * cy.x, scale * cx.y, scale * cy.y, 0.0f};
+        const float det = k.a11 * k.a22 - k.a12 * k.a21;
         k.invDet = det != 0.0f ? scale / det : det;
         return k;
     }

@@ -42,8 +42,8 @@ struct RevoluteConstraint {
     XpbdRows xpbd;                // XPBD's (xpbd_rows.h)
     std::int32_t jointIndex = 0;  // where the impulses are stored back
 
-    /// Builds the constraint at the island's start-of-step poses, with the joint's impulses as
-    /// stored (unscaled: see startImpulses). Returns the anchors' separation squared, m^2.
+    /// Builds the constraint at the island's start-of-step poses, all but its impulses (which
+    /// startImpulses takes from the joint). Returns the anchors' separation squared, m^2.
     float prepare(const Joint& joint, std::int32_t index, const SolverBodyInputs* inputs,
                   const JointSlots& slots, const SolverPose* poses, const StepContext& step) {
         load(joint, index, inputs, slots, step);
@@ -74,12 +74,20 @@ struct RevoluteConstraint {
 
     /// Warm starting: impulses scale with the step, so that they keep the force they stand
     /// for when dt changes. Without it, every impulse starts at zero.
+    /// The angle's impulses are taken from the joint here, as the point's, where a motor or limit
+    /// in use keeps them (prepareAngle's rule), rather than copied in load and scaled here:
+    /// copied as two floats and read back as one pair, the limits' impulses stalled the
+    /// processor (a store it cannot forward), 15% of the joints' set-up in many_chains.
     void startImpulses(const Joint& joint, bool warmStarting, float dtRatio) {
         if (warmStarting) {
-            point.impulse = dtRatio * std::get<RevoluteJoint>(joint.data).impulse;
-            angle.motorImpulse *= dtRatio;
-            angle.lowerImpulse *= dtRatio;
-            angle.upperImpulse *= dtRatio;
+            const RevoluteJoint& revolute = std::get<RevoluteJoint>(joint.data);
+            const bool turns = !bodies.fixedRotation();
+            point.impulse = dtRatio * revolute.impulse;
+            angle.motorImpulse =
+                angle.motorEnabled && turns ? dtRatio * revolute.motorImpulse : 0.0f;
+            const bool limits = angle.limitEnabled && turns;
+            angle.lowerImpulse = limits ? dtRatio * revolute.lowerImpulse : 0.0f;
+            angle.upperImpulse = limits ? dtRatio * revolute.upperImpulse : 0.0f;
         } else {
             angle.motorImpulse = 0.0f;
             angle.lowerImpulse = 0.0f;
@@ -192,9 +200,7 @@ private:
         angle.motorEnabled = revolute.enableMotor;
         angle.motorSpeed = revolute.motorSpeed;
         angle.maxMotorImpulse = step.dt * revolute.maxMotorTorque;
-        angle.motorImpulse = revolute.motorImpulse;
-        angle.lowerImpulse = revolute.lowerImpulse;
-        angle.upperImpulse = revolute.upperImpulse;
+        // The impulses: startImpulses (or makeInert) sets them.
     }
 };
 

@@ -7,6 +7,7 @@
 
 #include "constraints/rotation_lanes.h"
 #include "core/buffer.h"
+#include "core/fresh_copy.h"
 #include "core/prefetch.h"
 #include "islands/graph_coloring.h"
 #include "pivot/constants.h"
@@ -186,7 +187,7 @@ void prepareJoints(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joi
                 const std::int32_t jointIndex = schedule.jointIds[at];
                 auto& joint = joints[jointIndex];
                 C& c = group[k];
-                c = {};
+                resetToDefault(c);
                 const JointSlots& slots = schedule.jointPairs[at];
                 float separationSquared;
                 if constexpr (PreparesWithRotations<C>::value) {

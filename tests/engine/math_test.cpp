@@ -43,6 +43,18 @@ TEST(Math, Mat22SolvesByCramersRule) {
     EXPECT_NEAR(x.y, 1.4f, 1e-6f);
 }
 
+TEST(Math, Mat22WhoseProductsOverflowIsSolvedRescaled) {
+    // [4 1; 1 3] 1e20: det = 11e40 overflows a float, so Cramer's rule runs on the matrix / 4e20.
+    Mat22 a{{4e20f, 1e20f}, {1e20f, 3e20f}};
+    Vec2 x = a.solve({1, 1});
+    EXPECT_NEAR(x.x, 2.0f / 11.0f * 1e-20f, 1e-6f * 1e-20f);
+    EXPECT_NEAR(x.y, 3.0f / 11.0f * 1e-20f, 1e-6f * 1e-20f);
+    const Mat22 inverse = a.inverse();
+    EXPECT_NEAR(inverse.cx.x, 3.0f / 11.0f * 1e-20f, 1e-6f * 1e-20f);
+    EXPECT_NEAR(inverse.cy.y, 4.0f / 11.0f * 1e-20f, 1e-6f * 1e-20f);
+    EXPECT_EQ(a.cramer().invDet, a.rescaledCramer().invDet);
+}
+
 TEST(Math, SingularMatrixGivesZeroInsteadOfInfinity) {
     Mat22 singular{{1, 2}, {2, 4}};
     EXPECT_EQ(singular.solve({1, 1}), (Vec2{0, 0}));
