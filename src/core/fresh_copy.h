@@ -1,11 +1,11 @@
 // Resetting a small object to its default value with plain 16-byte moves.
 //
-// `object = T{}` for an object of more than 32 bytes is compiled by g++ (tuned for no particular
-// processor, as this library is) into `rep stos`, whose start-up costs about as much as
-// writing the object twice over. The joints' set-up resets one constraint of about 200 bytes
-// per joint per substep: there the `rep stos` was a tenth of the set-up's time in
-// `many_chains`. Written out below, one statement per 16 bytes (no loop, which the compiler
-// would turn back into the same instruction), the reset is a dozen stores of constants.
+// `object = T{}` for a joint constraint (about 200 bytes) is compiled by g++ 12 (tuned for no
+// particular processor, as this library is) into `rep stos`, whose start-up is long for so few
+// bytes. The joints' set-up resets one constraint per joint per substep: there the `rep stos`
+// was a tenth of the set-up's time in `many_chains`. Written out below, one statement per 16
+// bytes (no loop, which the compiler would turn back into the same instruction), the reset is a
+// dozen stores of constants.
 #pragma once
 
 #include <cstddef>
