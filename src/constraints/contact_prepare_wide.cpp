@@ -127,6 +127,49 @@ void facePoints(F mask, V2 n, V2 planePoint, const FrameL& incident, const V2 lo
     }
 }
 
+// writePositionConstraint for every lane of a tile at once, from what prepareTile gathered,
+// into the position tile beside `tile` (contact_tiles.h). An empty lane keeps lane 0's
+// contact, which it repeats, without its points.
+// (The bodies are taken from `pairs`, contacts k on, not copied from `tile`: a wide load of
+// the slots just written one by one there would stall on the stores.)
+void writePositionTile(PositionTile& t, const Gathered& g, int count, const BodyPair* pairs,
+                       int k) {
+    using T = PositionTile;
+    auto copy = [&t](T::Field f, const float(&from)[W]) {
+        std::memcpy(t.lanes(f), from, sizeof(from));
+    };
+    copy(T::kMassA, g.body[0].invMass);
+    copy(T::kMassB, g.body[1].invMass);
+    copy(T::kInertiaA, g.body[0].invInertia);
+    copy(T::kInertiaB, g.body[1].invInertia);
+    copy(T::kRadiusA, g.radiusA);
+    copy(T::kRadiusB, g.radiusB);
+    copy(T::kCenterAx, g.body[0].centerX);
+    copy(T::kCenterAy, g.body[0].centerY);
+    copy(T::kCenterBx, g.body[1].centerX);
+    copy(T::kCenterBy, g.body[1].centerY);
+    copy(T::kNormalX, g.normalX);
+    copy(T::kNormalY, g.normalY);
+    copy(T::kPointX, g.pointX);
+    copy(T::kPointY, g.pointY);
+    for (int j = 0; j < 2; ++j) {
+        // A missing point's coordinates (whatever the manifold last held) as zeros.
+        const F has = F::above(g.pointCount, j);
+        store(t.pointX(j), select(has, loadL(g.localX[j]), F(0.0f)));
+        store(t.pointY(j), select(has, loadL(g.localY[j]), F(0.0f)));
+    }
+    for (int lane = 0; lane < W; ++lane) {
+        const BodyPair& pair = pairs[k + (lane < count ? lane : 0)];
+        t.indexA[lane] = pair[0];
+        t.indexB[lane] = pair[1];
+        t.pointCount[lane] = lane < count ? g.pointCount[lane] : 0;
+        const ManifoldType type = g.circles[lane] ? ManifoldType::Circles
+                                  : g.faceA[lane] ? ManifoldType::FaceA
+                                                  : ManifoldType::FaceB;
+        t.type[lane] = static_cast<std::int32_t>(type);
+    }
+}
+
 }  // namespace
 
 bool ContactSolver::prepareTile(int k, const PrepareInputs& in) {
@@ -331,7 +374,7 @@ bool ContactSolver::prepareTile(int k, const PrepareInputs& in) {
     store(tile.lanes(T::kMyx), M[2]);
     store(tile.lanes(T::kMyy), M[3]);
 
-    // Per lane: bodies, point counts, records, NGS position constraints; empty lanes cleared
+    // Per lane: bodies, point counts, records; empty lanes cleared
     // again (contact_tiles.h: no points, zeros, lane 0's bodies).
     float keepMask[W];
     store(keepMask, keepTwo);
@@ -355,8 +398,8 @@ bool ContactSolver::prepareTile(int k, const PrepareInputs& in) {
         for (int j = 0; j < 2; ++j) {
             record.approachSpeeds[j] = j < g.pointCount[lane] ? approach[j][lane] : 0.0f;
         }
-        if (ngs_) writePositionConstraint(at, in);
     }
+    if (ngs_) writePositionTile(tiles_.positionTileOf(tiles_.slot(k)), g, count, in.pairs, k);
     return true;
 }
 

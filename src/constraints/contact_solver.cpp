@@ -229,6 +229,65 @@ void writeTile(ContactTile& tile, int lane, const ContactVelocityConstraint& c) 
     }
 }
 
+// A tiled contact's position constraint into its lane of the position tile
+// (contact_tiles.h), which the wide NGS sweeps read instead of the constraint.
+// `contacts`: the lanes in use.
+void writePositionTile(PositionTile& tile, int lane, int contacts,
+                       const ContactPositionConstraint& pc) {
+    using T = PositionTile;
+    tile.lanes(T::kMassA)[lane] = pc.mA;
+    tile.lanes(T::kMassB)[lane] = pc.mB;
+    tile.lanes(T::kInertiaA)[lane] = pc.iA;
+    tile.lanes(T::kInertiaB)[lane] = pc.iB;
+    tile.lanes(T::kRadiusA)[lane] = pc.radiusA;
+    tile.lanes(T::kRadiusB)[lane] = pc.radiusB;
+    tile.lanes(T::kCenterAx)[lane] = pc.localCenterA.x;
+    tile.lanes(T::kCenterAy)[lane] = pc.localCenterA.y;
+    tile.lanes(T::kCenterBx)[lane] = pc.localCenterB.x;
+    tile.lanes(T::kCenterBy)[lane] = pc.localCenterB.y;
+    tile.lanes(T::kNormalX)[lane] = pc.localNormal.x;
+    tile.lanes(T::kNormalY)[lane] = pc.localNormal.y;
+    tile.lanes(T::kPointX)[lane] = pc.localPoint.x;
+    tile.lanes(T::kPointY)[lane] = pc.localPoint.y;
+    for (int j = 0; j < 2; ++j) {
+        // An unused point's coordinates are never read by a sweep's result, but are kept
+        // finite.
+        const Vec2 p = j < pc.pointCount ? pc.localPoints[j] : Vec2{};
+        tile.pointX(j)[lane] = p.x;
+        tile.pointY(j)[lane] = p.y;
+    }
+    tile.indexA[lane] = pc.indexA;
+    tile.indexB[lane] = pc.indexB;
+    tile.pointCount[lane] = pc.pointCount;
+    tile.type[lane] = static_cast<std::int32_t>(pc.type);
+    if (lane == 0) {  // the empty lanes' bodies (contact_tiles.h)
+        for (int empty = contacts; empty < kContactLanes; ++empty) {
+            tile.indexA[empty] = pc.indexA;
+            tile.indexB[empty] = pc.indexB;
+        }
+    }
+}
+
+// The inverse of writePositionTile.
+void readPositionTile(const PositionTile& tile, int lane, ContactPositionConstraint& pc) {
+    using T = PositionTile;
+    pc.mA = tile.lanes(T::kMassA)[lane];
+    pc.mB = tile.lanes(T::kMassB)[lane];
+    pc.iA = tile.lanes(T::kInertiaA)[lane];
+    pc.iB = tile.lanes(T::kInertiaB)[lane];
+    pc.radiusA = tile.lanes(T::kRadiusA)[lane];
+    pc.radiusB = tile.lanes(T::kRadiusB)[lane];
+    pc.localCenterA = {tile.lanes(T::kCenterAx)[lane], tile.lanes(T::kCenterAy)[lane]};
+    pc.localCenterB = {tile.lanes(T::kCenterBx)[lane], tile.lanes(T::kCenterBy)[lane]};
+    pc.localNormal = {tile.lanes(T::kNormalX)[lane], tile.lanes(T::kNormalY)[lane]};
+    pc.localPoint = {tile.lanes(T::kPointX)[lane], tile.lanes(T::kPointY)[lane]};
+    for (int j = 0; j < 2; ++j) pc.localPoints[j] = {tile.pointX(j)[lane], tile.pointY(j)[lane]};
+    pc.indexA = tile.indexA[lane];
+    pc.indexB = tile.indexB[lane];
+    pc.pointCount = tile.pointCount[lane];
+    pc.type = static_cast<ManifoldType>(tile.type[lane]);
+}
+
 // The inverse of writeTile.
 void readTile(const ContactTile& tile, int lane, ContactVelocityConstraint& c) {
     using T = ContactTile;
@@ -261,6 +320,14 @@ void readTile(const ContactTile& tile, int lane, ContactVelocityConstraint& c) {
 
 }  // namespace
 
+const ContactPositionConstraint& ContactSolver::positionOf(
+    int k, ContactPositionConstraint& scratch) const {
+    const int slot = tiles_.slot(k);
+    if (slot < 0) return position_[k];
+    readPositionTile(tiles_.positionTileOf(slot), slot % kContactLanes, scratch);
+    return scratch;
+}
+
 ContactVelocityConstraint& ContactSolver::oneByOne(int k, ContactVelocityConstraint& scratch) {
     const int slot = tiles_.slot(k);
     if (slot < 0) return velocity_[k];
@@ -292,12 +359,13 @@ void ContactSolver::reset(int count, const StepContext& step, const std::vector<
     }
     ngs_ = step.contactCorrection == ContactCorrection::NGS;
     count_ = count;
-    // prepare writes every entry it uses (records for every contact, velocity constraints for
-    // the untiled, position constraints under NGS): nothing is cleared.
+    // prepare writes every entry it uses (records for every contact, the untiled contacts'
+    // velocity constraints and, under NGS, position constraints, the tiled ones' tiles):
+    // nothing is cleared.
     const std::size_t size = static_cast<std::size_t>(count);
     growBuffer(records_, size);
     growBuffer(velocity_, size);
-    tiles_.layOut(count, batches, wideSolving());
+    tiles_.layOut(count, batches, wideSolving(), ngs_);
     if (ngs_) growBuffer(position_, size);
 }
 
@@ -326,7 +394,10 @@ void ContactSolver::writePositionConstraint(int k, const PrepareInputs& in) {
     const Manifold& manifold = contact.manifold;
     const SolverBodyInputs& bodyA = in.inputs[in.pairs[k][0]];
     const SolverBodyInputs& bodyB = in.inputs[in.pairs[k][1]];
-    ContactPositionConstraint& pc = position_[k];
+    // A tiled contact's constraint is assembled here and lives only in its position tile.
+    const int slot = tiles_.slot(k);
+    ContactPositionConstraint assembled;
+    ContactPositionConstraint& pc = slot >= 0 ? assembled : position_[k];
     pc.indexA = in.pairs[k][0];
     pc.indexB = in.pairs[k][1];
     pc.mA = bodyA.invMass;
@@ -343,6 +414,10 @@ void ContactSolver::writePositionConstraint(int k, const PrepareInputs& in) {
     pc.radiusB = contact.radiusB;
     for (int j = 0; j < manifold.pointCount; ++j) {
         pc.localPoints[j] = manifold.points[j].localPoint;
+    }
+    if (slot >= 0) {
+        writePositionTile(tiles_.positionTileOf(slot), slot % kContactLanes,
+                          tiles_.tileOf(slot).contactCount, pc);
     }
 }
 
@@ -541,13 +616,14 @@ void ContactSolver::storeImpulses(IndexRange range, SlotPool<Contact>& pool,
         const int slot = tiles_.slot(k);
         const ContactTile* tile = slot >= 0 ? &tiles_.tileOf(slot) : nullptr;
         const int lane = slot % kContactLanes;
-        const int pointCount = tile ? tile->pointCount[lane] : velocity_[k].pointCount;
+        const ContactVelocityConstraint* c = tile ? nullptr : &velocity_[k];
+        const int pointCount = tile ? tile->pointCount[lane] : c->pointCount;
         for (int j = 0; j < pointCount; ++j) {
             // A non-finite impulse is not carried into the next step's warm start.
             const float normal = tile ? tile->lanes(j, ContactTile::kNormalImpulse)[lane]
-                                      : velocity_[k].points[j].normalImpulse;
+                                      : c->points[j].normalImpulse;
             const float tangent = tile ? tile->lanes(j, ContactTile::kTangentImpulse)[lane]
-                                       : velocity_[k].points[j].tangentImpulse;
+                                       : c->points[j].tangentImpulse;
             const bool finite = std::isfinite(normal) && std::isfinite(tangent);
             m.points[j].normalImpulse = finite ? normal : 0.0f;
             m.points[j].tangentImpulse = finite ? tangent : 0.0f;
@@ -579,8 +655,9 @@ float ContactSolver::positionSweep(IndexRange range, SolverPose* positions, floa
     auto moves = [&](std::int32_t slot) {
         return movableA == kNoSlot || slot == movableA || slot == movableB;
     };
+    ContactPositionConstraint scratch;  // positionOf's, out of the loop
     for (int k = range.begin; k < range.end; ++k) {
-        const ContactPositionConstraint& pc = position_[k];
+        const ContactPositionConstraint& pc = positionOf(k, scratch);
         SolverPose& A = positions[pc.indexA];
         SolverPose& B = positions[pc.indexB];
         const bool movesA = moves(pc.indexA);

@@ -97,8 +97,9 @@ struct ContactPositionConstraint {
 /// The contact constraints of one island, rebuilt every step into reused buffers. Contact k
 /// is constraint k of the record, velocity and position arrays; each stage works on a range
 /// of them, so a team can share it out by colour (island_schedule.h). A tiled contact's
-/// velocity constraint lives only in its tile (its entry of the velocity array is left
-/// unwritten): the copy was 172 of the about 420 bytes prepare wrote per contact.
+/// velocity and position constraints live only in its tiles (contact_tiles.h; its entries of
+/// the two arrays are left unwritten): the velocity constraint's copy was 172 of the about
+/// 420 bytes prepare wrote per contact.
 class ContactSolver {
 public:
     /// Sizes the arrays for `count` contacts, and lays out tiles for the wide sweeps over the
@@ -208,6 +209,9 @@ private:
     /// array, or, for a tiled contact (one a range's edge cut from its tile), a copy read from
     /// its tile into `scratch`.
     ContactVelocityConstraint& oneByOne(int k, ContactVelocityConstraint& scratch);
+    /// Contact k's NGS position constraint for the one-by-one sweeps: its entry of the position
+    /// array, or, for a tiled contact, a copy read from its position tile into `scratch`.
+    const ContactPositionConstraint& positionOf(int k, ContactPositionConstraint& scratch) const;
     /// A tiled contact's impulses back into its tile after a one-by-one solve (none untiled).
     void putImpulses(int k, const ContactVelocityConstraint& c);
     /// Solves contacts [range.begin, returned) several at a time (a sweep's work, or with
@@ -233,7 +237,7 @@ private:
     std::vector<ContactRecord> records_;
     std::vector<ContactVelocityConstraint> velocity_;  // untiled contacts' (see above)
     ContactTiles tiles_;  // the wide sweeps' constraints (a tiled contact's only copy)
-    std::vector<ContactPositionConstraint> position_;  // NGS contacts' only
+    std::vector<ContactPositionConstraint> position_;  // untiled NGS contacts' (see above)
     bool ngs_ = false;
     bool polynomialRotations_ = false;
     float positionBias_ = 0.0f;

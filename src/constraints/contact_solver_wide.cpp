@@ -10,8 +10,9 @@
 // a batch solved here gives the same bits as the same batch solved one contact at a time, at
 // either width: results do not depend on which path ran, nor on the number of workers.
 //
-// The velocity sweeps read the constraints from their tiles (contact_tiles.h), written once
-// per build, with one load per field; only the bodies' velocities are gathered and scattered.
+// The velocity sweeps read the constraints from their tiles (contact_tiles.h), and the NGS
+// sweeps from the position tiles beside them, written once per build, with one load per field;
+// only the bodies' velocities and poses are gathered and scattered.
 //
 // The maths is contact_solver.h's: per point, vn = (vB + wB x rB - vA - wA x rA) . n, friction
 // clamped by friction * normal impulse, the two points of a manifold solved together as a 2x2
@@ -20,7 +21,6 @@
 // sines and cosines of those poses from core/sine_cosine.h's polynomial in a coloured island,
 // else libm's, lane by lane).
 #include <atomic>
-#include <utility>
 
 #include "constraints/contact_solver.h"
 #include "constraints/lanes.h"
@@ -33,16 +33,6 @@ namespace pivot {
 namespace {
 
 using namespace lanes;
-
-// Lane i of the mask is test(i), for i < F::kWidth.
-template <typename F, typename Test, std::size_t... I>
-F maskEach(Test test, std::index_sequence<I...>) {
-    return F::setMask(test(static_cast<int>(I))...);
-}
-template <typename F, typename Test>
-F maskEach(Test test) {
-    return maskEach<F>(test, std::make_index_sequence<F::kWidth>());
-}
 
 // A body's velocity, one lane per contact.
 template <typename F>
@@ -372,77 +362,63 @@ PoseLanes<F> loadPoses(SolverPose* const pose[]) {
     return out;
 }
 
+// Lanes [0, count) only, as storeVelocities.
 template <typename F>
-void storePoses(const PoseLanes<F>& in, SolverPose* const pose[]) {
+void storePoses(const PoseLanes<F>& in, SolverPose* const pose[], int count) {
     float* rows[F::kWidth];
     for (int lane = 0; lane < F::kWidth; ++lane) rows[lane] = &pose[lane]->c.x;
-    storeColumns(rows, in.cx, in.cy, in.a, F::kWidth);
+    storeColumns(rows, in.cx, in.cy, in.a, count);
 }
 
-// One NGS sweep over contacts c[0 .. F::kWidth) whose bodies all move
-// (ContactSolver::positionSweep); writes each lane's separations, point by point, into
+// One NGS sweep over a position tile's `contacts` contacts (ContactSolver::positionSweep,
+// every body moving); writes each lane's separations, point by point, into
 // separations[point][lane].
 template <typename F>
-void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, float bias,
-                   bool polynomial, float separations[2][F::kWidth]) {
+void positionTile(const PositionTile& t, int contacts, SolverPose* positions, float bias,
+                  bool polynomial, float separations[2][F::kWidth]) {
     constexpr int W = F::kWidth;
+    using T = PositionTile;
     SolverPose* poseA[W];
     SolverPose* poseB[W];
     for (int lane = 0; lane < W; ++lane) {
-        poseA[lane] = &positions[c[lane].indexA];
-        poseB[lane] = &positions[c[lane].indexB];
+        poseA[lane] = &positions[t.indexA[lane]];
+        poseB[lane] = &positions[t.indexB[lane]];
     }
-    auto field = [c](auto get) { return F::gather([&](int i) { return get(c[i]); }); };
-    using P = const ContactPositionConstraint&;
+    auto field = [&t](T::Field f) { return F::load(t.lanes(f)); };
     PoseLanes<F> A = loadPoses<F>(poseA);
     PoseLanes<F> B = loadPoses<F>(poseB);
-    const F mA = field([](P x) { return x.mA; });
-    const F mB = field([](P x) { return x.mB; });
-    const F iA = field([](P x) { return x.iA; });
-    const F iB = field([](P x) { return x.iB; });
-    const F radiusA = field([](P x) { return x.radiusA; });
-    const F radiusB = field([](P x) { return x.radiusB; });
-    const VecLanes<F> centerA{field([](P x) { return x.localCenterA.x; }),
-                              field([](P x) { return x.localCenterA.y; })};
-    const VecLanes<F> centerB{field([](P x) { return x.localCenterB.x; }),
-                              field([](P x) { return x.localCenterB.y; })};
-    const VecLanes<F> localNormal{field([](P x) { return x.localNormal.x; }),
-                                  field([](P x) { return x.localNormal.y; })};
-    const VecLanes<F> localPoint{field([](P x) { return x.localPoint.x; }),
-                                 field([](P x) { return x.localPoint.y; })};
-    // A circles manifold's centre on B (its only point, whichever point is being solved).
-    const VecLanes<F> first{field([](P x) { return x.localPoints[0].x; }),
-                            field([](P x) { return x.localPoints[0].y; })};
-    const F circles = maskEach<F>([c](int i) { return c[i].type == ManifoldType::Circles; });
-    const F faceA = maskEach<F>([c](int i) { return c[i].type == ManifoldType::FaceA; });
-    const F faceB = maskEach<F>([c](int i) { return c[i].type == ManifoldType::FaceB; });
+    const F circles = F::equal(t.type, static_cast<std::int32_t>(ManifoldType::Circles));
+    const F faceA = F::equal(t.type, static_cast<std::int32_t>(ManifoldType::FaceA));
+    const F faceB = F::equal(t.type, static_cast<std::int32_t>(ManifoldType::FaceB));
     const bool anyCircles = any(circles), anyFaceA = any(faceA), anyFaceB = any(faceB);
     const F zero(0.0f), one(1.0f), half(0.5f);
 
     for (int j = 0; j < 2; ++j) {
-        const F active = maskEach<F>([c, j](int i) { return c[i].pointCount > j; });
+        const F active = F::above(t.pointCount, j);
         if (!any(active)) break;  // no lane has a second point
-        const VecLanes<F> local{field([j](P x) { return x.localPoints[j].x; }),
-                                field([j](P x) { return x.localPoints[j].y; })};
         // solverTransform of each body: xf.p = c - rotate(q, localCenter).
         const RotLanes<F> qA = rotations(A.a, polynomial), qB = rotations(B.a, polynomial);
-        const VecLanes<F> turnedA = rotateLanes(qA, centerA), turnedB = rotateLanes(qB, centerB);
+        const VecLanes<F> turnedA = rotateLanes(qA, {field(T::kCenterAx), field(T::kCenterAy)});
+        const VecLanes<F> turnedB = rotateLanes(qB, {field(T::kCenterBx), field(T::kCenterBy)});
         const VecLanes<F> pA{A.cx - turnedA.x, A.cy - turnedA.y};
         const VecLanes<F> pB{B.cx - turnedB.x, B.cy - turnedB.y};
+        const VecLanes<F> localPoint{field(T::kPointX), field(T::kPointY)};
 
         // measure(), for each manifold type some lane has; each lane then keeps its own.
-        VecLanes<F> normal, point;
-        F separation;
-        if (anyCircles) {  // from centre A to centre B
+        VecLanes<F> normal{zero, zero}, point{zero, zero};
+        F separation = zero;
+        if (anyCircles) {  // from centre A to centre B, B's centre its only point (point 0)
             const VecLanes<F> centreA = transformLanes(qA, pA, localPoint);
-            const VecLanes<F> centreB = transformLanes(qB, pB, first);
+            const VecLanes<F> centreB =
+                transformLanes(qB, pB, {F::load(t.pointX(0)), F::load(t.pointY(0))});
             const VecLanes<F> d{centreB.x - centreA.x, centreB.y - centreA.y};
             const F len = squareRoot(d.x * d.x + d.y * d.y);
             const F positive = lessThan(zero, len);
             const F inverse = one / len;
             normal = {select(positive, inverse * d.x, one), select(positive, inverse * d.y, zero)};
             point = {half * (centreA.x + centreB.x), half * (centreA.y + centreB.y)};
-            separation = ((d.x * normal.x + d.y * normal.y) - radiusA) - radiusB;
+            separation =
+                ((d.x * normal.x + d.y * normal.y) - field(T::kRadiusA)) - field(T::kRadiusB);
         }
         if (anyFaceA || anyFaceB) {
             // One body's face and the other's point: A's face and B's point (FaceA), or the
@@ -453,13 +429,15 @@ void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, fl
             const RotLanes<F> qPoint{select(faceB, qA.s, qB.s), select(faceB, qA.c, qB.c)};
             const VecLanes<F> pFace{select(faceB, pB.x, pA.x), select(faceB, pB.y, pA.y)};
             const VecLanes<F> pPoint{select(faceB, pA.x, pB.x), select(faceB, pA.y, pB.y)};
-            const VecLanes<F> faceNormal = rotateLanes(qFace, localNormal);
+            const VecLanes<F> faceNormal =
+                rotateLanes(qFace, {field(T::kNormalX), field(T::kNormalY)});
             const VecLanes<F> plane = transformLanes(qFace, pFace, localPoint);
-            const VecLanes<F> onPoint = transformLanes(qPoint, pPoint, local);
+            const VecLanes<F> onPoint =
+                transformLanes(qPoint, pPoint, {F::load(t.pointX(j)), F::load(t.pointY(j))});
             const F s =
                 (((onPoint.x - plane.x) * faceNormal.x + (onPoint.y - plane.y) * faceNormal.y) -
-                 radiusA) -
-                radiusB;
+                 field(T::kRadiusA)) -
+                field(T::kRadiusB);
             const F face = either(faceA, faceB);
             const VecLanes<F> turned{select(faceB, -faceNormal.x, faceNormal.x),
                                      select(faceB, -faceNormal.y, faceNormal.y)};
@@ -475,6 +453,8 @@ void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, fl
             clampOf(F(bias) * (separation + F(kLinearSlop)), F(-kMaxLinearCorrection), zero);
         const F rnA = rA.x * normal.y - rA.y * normal.x;
         const F rnB = rB.x * normal.y - rB.y * normal.x;
+        const F mA = field(T::kMassA), mB = field(T::kMassB);
+        const F iA = field(T::kInertiaA), iB = field(T::kInertiaB);
         const F K = ((mA + mB) + iA * rnA * rnA) + iB * rnB * rnB;
         const F impulse = select(lessThan(zero, K), (-C) / K, zero);
         const F Px = impulse * normal.x, Py = impulse * normal.y;
@@ -485,8 +465,8 @@ void positionLanes(const ContactPositionConstraint* c, SolverPose* positions, fl
         B.cy = select(active, B.cy + mB * Py, B.cy);
         B.a = select(active, B.a + iB * (rB.x * Py - rB.y * Px), B.a);
     }
-    storePoses(A, poseA);
-    storePoses(B, poseB);
+    storePoses(A, poseA, contacts);
+    storePoses(B, poseB, contacts);
 }
 
 #if PIVOT_LANES_8
@@ -494,24 +474,6 @@ using ContactLanesF = F8;
 #else
 using ContactLanesF = F4;
 #endif
-
-template <typename F>
-int positionRun(int k, IndexRange range, const ContactPositionConstraint* constraints,
-                SolverPose* positions, float bias, bool polynomial, float& smallest) {
-    constexpr int W = F::kWidth;
-    for (; k + W <= range.end; k += W) {
-        float separations[2][W];
-        positionLanes<F>(constraints + k, positions, bias, polynomial, separations);
-        // Folded in the order the one-by-one sweep meets them: contact by contact, point by
-        // point (minSeparation's NaN rule makes the order matter).
-        for (int lane = 0; lane < W; ++lane) {
-            for (int j = 0; j < constraints[k + lane].pointCount; ++j) {
-                smallest = ContactSolver::minSeparation(smallest, separations[j][lane]);
-            }
-        }
-    }
-    return k;
-}
 
 }  // namespace
 
@@ -560,13 +522,24 @@ int ContactSolver::warmStartWide(IndexRange range, SolverVelocity* velocities) c
 int ContactSolver::positionSweepWide(IndexRange range, SolverPose* positions, float bias,
                                      float& smallest) const {
     int k = range.begin;
-    if (!wideEnabled.load(std::memory_order_relaxed)) return k;
-#if PIVOT_LANES_8
-    k = positionRun<F8>(k, range, position_.data(), positions, bias, polynomialRotations_,
-                        smallest);
-#endif
-    return positionRun<F4>(k, range, position_.data(), positions, bias, polynomialRotations_,
-                           smallest);
+    if (!tiles_.hasPositions()) return k;
+    // The tiles laid out at reset, as solveWide takes them.
+    for (; k < range.end && tiles_.isTileStart(k); k += tiles_.tileAt(k).contactCount) {
+        const int contacts = tiles_.tileAt(k).contactCount;
+        if (k + contacts > range.end) break;  // cut by the range's edge
+        const PositionTile& tile = tiles_.positionTileOf(tiles_.slot(k));
+        float separations[2][kContactLanes];
+        positionTile<ContactLanesF>(tile, contacts, positions, bias, polynomialRotations_,
+                                    separations);
+        // Folded in the order the one-by-one sweep meets them: contact by contact, point by
+        // point (minSeparation's NaN rule makes the order matter).
+        for (int lane = 0; lane < contacts; ++lane) {
+            for (int j = 0; j < tile.pointCount[lane]; ++j) {
+                smallest = ContactSolver::minSeparation(smallest, separations[j][lane]);
+            }
+        }
+    }
+    return k;
 }
 
 #else

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "collision/manifold.h"
 #include "constraints/lanes.h"
 #include "core/buffer.h"
 #include "core/index_range.h"
@@ -90,11 +91,55 @@ struct ContactTile {
     std::int32_t contactCount;               // lanes in use, from lane 0
 };
 
+// The NGS position sweeps' constants of the same contacts, in the same slots: what
+// ContactPositionConstraint holds, a field of kContactLanes floats at a time. (Gathered lane by
+// lane from the constraints, three sweeps a step, these loads and the spills of what they
+// gathered were about a third of the wide position sweep in large_pyramid.) An empty lane has
+// no points, zeros, a FaceA manifold (so that it takes no branch of its own) and lane 0's
+// bodies.
+struct PositionTile {
+    enum Field : int {
+        kMassA,
+        kMassB,
+        kInertiaA,
+        kInertiaB,
+        kRadiusA,
+        kRadiusB,
+        kCenterAx,  // the bodies' local centres of mass
+        kCenterAy,
+        kCenterBx,
+        kCenterBy,
+        kNormalX,  // the manifold's local normal and point
+        kNormalY,
+        kPointX,
+        kPointY,
+        kPoint0x,  // its points' local positions
+        kPoint0y,
+        kPoint1x,
+        kPoint1y,
+        kFields
+    };
+    float* lanes(Field f) { return values[f]; }
+    const float* lanes(Field f) const { return values[f]; }
+    /// Point j's x and y fields.
+    float* pointX(int j) { return values[kPoint0x + 2 * j]; }
+    float* pointY(int j) { return values[kPoint0y + 2 * j]; }
+    const float* pointX(int j) const { return values[kPoint0x + 2 * j]; }
+    const float* pointY(int j) const { return values[kPoint0y + 2 * j]; }
+
+    float values[kFields][kContactLanes];
+    std::int32_t indexA[kContactLanes];
+    std::int32_t indexB[kContactLanes];
+    std::int32_t pointCount[kContactLanes];  // the manifold's (0: empty)
+    std::int32_t type[kContactLanes];        // its ManifoldType
+};
+
 class ContactTiles {
 public:
     /// Lays out `count` contacts: tiles for the independent batches (those not `serial`) of
-    /// `batches` (none without batches, or when `enabled` is false). Reuses the buffers.
-    void layOut(int count, const std::vector<Batch>* batches, bool enabled) {
+    /// `batches` (none without batches, or when `enabled` is false), and with `positions` a
+    /// PositionTile beside each tile. Reuses the buffers.
+    void layOut(int count, const std::vector<Batch>* batches, bool enabled, bool positions) {
         growBuffer(slot_, static_cast<std::size_t>(count));
         std::fill(slot_.begin(), slot_.begin() + count, -1);
         std::size_t tiles = 0;
@@ -105,6 +150,8 @@ public:
         }
         // Every lane of a tile is written before it is read (by prepare, or cleared below).
         growBuffer(tiles_, tiles);
+        positions_ = positions;
+        if (positions) growBuffer(positionTiles_, tiles);
         if (tiles == 0) return;
         int tile = 0;
         for (const Batch& batch : *batches) {
@@ -117,6 +164,11 @@ public:
                 ContactTile& t = tiles_[tile];
                 t.contactCount = contacts;
                 for (int lane = contacts; lane < kContactLanes; ++lane) clearLane(t, lane);
+                if (positions) {
+                    for (int lane = contacts; lane < kContactLanes; ++lane) {
+                        clearLane(positionTiles_[tile], lane);
+                    }
+                }
             }
         }
     }
@@ -124,6 +176,7 @@ public:
     void reserve(std::size_t count, std::size_t batches) {
         slot_.reserve(count);
         tiles_.reserve(count / kContactLanes + batches);
+        positionTiles_.reserve(count / kContactLanes + batches);
     }
 
     /// Contact k's place in the tiles (tile * kContactLanes + lane), or -1 if it has none.
@@ -135,6 +188,13 @@ public:
     const ContactTile& tileAt(int k) const { return tileOf(slot_[k]); }
     ContactTile& tileOf(int slot) { return tiles_[slot / kContactLanes]; }
     const ContactTile& tileOf(int slot) const { return tiles_[slot / kContactLanes]; }
+    /// Whether the layout has position tiles.
+    bool hasPositions() const { return positions_; }
+    /// The position tile beside the tile of `slot` (only when hasPositions()).
+    PositionTile& positionTileOf(int slot) { return positionTiles_[slot / kContactLanes]; }
+    const PositionTile& positionTileOf(int slot) const {
+        return positionTiles_[slot / kContactLanes];
+    }
 
 private:
     static int tilesOf(const Batch& batch) {
@@ -145,9 +205,16 @@ private:
         for (auto& field : tile.values) field[lane] = 0.0f;
         tile.pointCount[lane] = 0;
     }
+    static void clearLane(PositionTile& tile, int lane) {
+        for (auto& field : tile.values) field[lane] = 0.0f;
+        tile.pointCount[lane] = 0;
+        tile.type[lane] = static_cast<std::int32_t>(ManifoldType::FaceA);
+    }
 
     std::vector<std::int32_t> slot_;
     std::vector<ContactTile> tiles_;
+    std::vector<PositionTile> positionTiles_;  // beside tiles_, when positions_
+    bool positions_ = false;
 };
 
 }  // namespace pivot

@@ -38,16 +38,12 @@ struct F4 {
         const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(counts));
         return F4(_mm_castsi128_ps(_mm_cmpgt_epi32(c, _mm_set1_epi32(n))));
     }
+    /// Lanes where values[lane] == n (all ones), else zeros.
+    static F4 equal(const std::int32_t* values, std::int32_t n) {
+        const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(values));
+        return F4(_mm_castsi128_ps(_mm_cmpeq_epi32(c, _mm_set1_epi32(n))));
+    }
     static F4 allLanes() { return F4(_mm_castsi128_ps(_mm_set1_epi32(-1))); }
-    /// Lane i all ones where the i-th argument is true.
-    static F4 setMask(bool a, bool b, bool c, bool d) {
-        return F4(_mm_castsi128_ps(_mm_setr_epi32(-a, -b, -c, -d)));
-    }
-    /// Lane i is get(i).
-    template <typename Get>
-    static F4 gather(Get get) {
-        return F4(_mm_setr_ps(get(0), get(1), get(2), get(3)));
-    }
 };
 inline void store(float* p, F4 a) {
     _mm_storeu_ps(p, a.v);
@@ -138,14 +134,11 @@ struct F8 {
         const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(counts));
         return F8(_mm256_castsi256_ps(_mm256_cmpgt_epi32(c, _mm256_set1_epi32(n))));
     }
+    static F8 equal(const std::int32_t* values, std::int32_t n) {
+        const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(values));
+        return F8(_mm256_castsi256_ps(_mm256_cmpeq_epi32(c, _mm256_set1_epi32(n))));
+    }
     static F8 allLanes() { return F8(_mm256_castsi256_ps(_mm256_set1_epi32(-1))); }
-    static F8 setMask(bool a, bool b, bool c, bool d, bool e, bool f, bool g, bool h) {
-        return F8(_mm256_castsi256_ps(_mm256_setr_epi32(-a, -b, -c, -d, -e, -f, -g, -h)));
-    }
-    template <typename Get>
-    static F8 gather(Get get) {
-        return F8(_mm256_setr_ps(get(0), get(1), get(2), get(3), get(4), get(5), get(6), get(7)));
-    }
 };
 inline void store(float* p, F8 a) {
     _mm256_storeu_ps(p, a.v);
