@@ -127,11 +127,11 @@ void facePoints(F mask, V2 n, V2 planePoint, const FrameL& incident, const V2 lo
     }
 }
 
-// writePositionConstraint for every lane of a tile at once, from what prepareTile gathered,
-// into the position tile beside `tile` (contact_tiles.h). An empty lane keeps lane 0's
-// contact, which it repeats, without its points.
-// (The bodies are taken from `pairs`, contacts k on, not copied from `tile`: a wide load of
-// the slots just written one by one there would stall on the stores.)
+// writePositionConstraint for every lane of the tile of contacts k on (`count` of them) at
+// once, from what prepareTile gathered, into its position tile (contact_tiles.h). An empty lane
+// keeps lane 0's contact, which it repeats, without its points. (The solver slots are taken
+// from `pairs`, not copied from the velocity tile: a wide load of slots just written there one
+// by one would stall on the stores.)
 void writePositionTile(PositionTile& t, const Gathered& g, int count, const BodyPair* pairs,
                        int k) {
     using T = PositionTile;

@@ -93,10 +93,10 @@ struct ContactTile {
 
 // The NGS position sweeps' constants of the same contacts, in the same slots: what
 // ContactPositionConstraint holds, a field of kContactLanes floats at a time. (Gathered lane by
-// lane from the constraints, three sweeps a step, these loads and the spills of what they
-// gathered were about a third of the wide position sweep in large_pyramid.) An empty lane has
-// no points, zeros, a FaceA manifold (so that it takes no branch of its own) and lane 0's
-// bodies.
+// lane from the constraints at each of a step's three sweeps, they made the wide sweep a sixth
+// slower in large_pyramid.) An empty lane has no points and lane 0's bodies, and either zeros
+// and a FaceA manifold (cleared at layout) or lane 0's contact (written by prepareTile): a
+// manifold type some lane already has, so that it takes no branch of its own.
 struct PositionTile {
     enum Field : int {
         kMassA,
