@@ -10,6 +10,11 @@
 // in finishTask: a finishTask that drops a task it has not started yet (instead of running it)
 // never holds the step up. The step's results are the same bits whoever did which chunk.
 //
+// The callbacks and the tasks run in the middle of a step, while its workers write the world:
+// from them (as from any thread while a step runs) a call that changes the world throws
+// pivot::Error, and so does a read of anything a step changes (World, "callbacks", lists the
+// few reads that are safe).
+//
 // With a job system that can cancel a job not yet started (names are the game's):
 //
 //     pivot::WorldDef def;

@@ -83,8 +83,10 @@ struct WorldDef {
     /// drops unstarted in finishTask, holds nobody up. The same bits as with the world's own
     /// threads, or with none. An exception either lets out is held, and World::step throws the
     /// first once the step is done (the world then is as that step left it; an enqueueTask
-    /// that threw handed out no task, and the calling thread did the helper's share). Empty,
-    /// the default: threads of the world's own.
+    /// that threw handed out no task, and the calling thread did the helper's share). While
+    /// the step runs, neither they nor any other thread may change the world, and they may read
+    /// only what a step does not change (World, "callbacks"). Empty, the default: threads of the
+    /// world's own.
     EnqueueTaskFunction enqueueTask = nullptr;
     FinishTaskFunction finishTask = nullptr;
     /// m, in [0, kMaxMagnitude]. Opt-in breaking: a joint whose anchors are further apart than
@@ -256,10 +258,19 @@ public:
     // The two callbacks run during World::step, on the thread that called it (never on a
     // worker), in contact order, so the same world calls them in the same order with the same
     // arguments on any worker count. A callback may read the world; a call that would change it
-    // (any setter, create, destroy, apply or step) throws pivot::Error from inside the callback.
-    // An exception a callback lets out is held: the step carries on as if the callback had
-    // returned true, and World::step throws that exception when the step is complete (the world
-    // then is as that step left it).
+    // (any setter, create, destroy, apply, restore or step) throws pivot::Error from inside the
+    // callback. An exception a callback lets out is held: the step carries on as if the
+    // callback had returned true, and World::step throws that exception when the step is
+    // complete (the world then is as that step left it).
+    //
+    // The task system's callbacks (WorldDef::enqueueTask, finishTask, and the StepTasks they
+    // run) are user code a step runs too, while its workers write the world. From them, and
+    // from any other thread while a step runs, every call that changes the world throws
+    // pivot::Error, and so does every read but these, which a step does not change: the
+    // settings' getters (gravity, substepCount, defaultPositionSolver, broadPhaseBoxes,
+    // contactCorrection, isSleepEnabled, isContinuousEnabled, continuousCollision,
+    // hitEventThreshold), bodyCount, shapeCount, jointCount and isValid. Read anything else from
+    // the pre-solve or custom-filter callback, or after World::step returns.
     /// The pre-solve callback (pivot::PreSolveCallback), or an empty one to stop asking. It is
     /// asked each step about every touching contact of a shape with ShapeDef::enablePreSolve
     /// whose bodies are awake, and again before continuous collision stops a body at one.
@@ -437,10 +448,14 @@ public:
 
     // --- queries (pivot/query.h) -------------------------------------------------------------
     // They read the shapes where the last step, or the last call that moved a body, left them.
-    // A callback may read the world but not change its shapes: a call that creates, destroys
-    // or moves a shape (createShape, destroyShape, destroyBody, setBodyTransform, step) made
-    // from inside one throws pivot::Error. Bad arguments (not finite, a box with lower > upper,
-    // points outside kMaxCoordinate) throw pivot::Error.
+    // A callback may read the world and change its bodies' motion and settings (velocities,
+    // forces, impulses, damping, sleep, materials, filters, user data, joint and world
+    // settings: an explosion pushing what a query finds), but not its structure, which the
+    // query is walking: a call that creates or destroys anything (a body, shape, chain, joint
+    // or mouse joint), changes a body's type, teleports a body (setBodyTransform), switches a
+    // shape's sensor flag, restores or steps throws pivot::Error from inside a callback, and
+    // changes nothing. Bad arguments (not finite, a box with lower > upper, points outside
+    // kMaxCoordinate) throw pivot::Error.
     /// Every shape the filter sees that the ray from `origin` through origin + translation
     /// enters, in the tree's order; the callback steers the cast (pivot::RayCallback). A zero
     /// translation hits nothing.
@@ -489,8 +504,9 @@ public:
     // --- contacts ---------------------------------------------------------------------------
     // Every list the API returns (contacts, events, bodyIds, jointIds, bodyShapes) is a copy,
     // so destroying bodies, shapes or joints while iterating one is safe; the ids in it may go
-    // stale meanwhile (check with isValid). The only user code a step runs is the two callbacks
-    // (setPreSolveCallback, setCustomFilterCallback), which may not change the world.
+    // stale meanwhile (check with isValid). The user code a step runs is the two callbacks
+    // (setPreSolveCallback, setCustomFilterCallback) and the task system's (WorldDef::
+    // enqueueTask): none of it may change the world ("callbacks" above).
     /// Every touching contact, measured at the current poses.
     std::vector<ContactData> contacts() const;
     /// Contacts that started / stopped touching during the last step. Destroying a shape (or

@@ -70,30 +70,28 @@ bool ContactManager::wantsPreSolve(const Contact& c) const {
            (shapes_[c.shapeA].preSolve || shapes_[c.shapeB].preSolve);
 }
 
-// The depth guard makes the world refuse changes while user code runs inside a step; an
+// The scope lets the callback read the world during the step (it may not change it); an
 // exception is held rather than let through a half-done step.
 bool ContactManager::askPreSolve(const Contact& contact) {
     bool keep = true;
-    ++callbackDepth_;
+    const WorldAccess::CallbackScope scope(access_);
     try {
         keep = preSolve_(contactData(contact));
     } catch (...) {
         if (!callbackError_) callbackError_ = std::current_exception();
     }
-    --callbackDepth_;
     return keep;
 }
 
 bool ContactManager::askCustomFilter(std::int32_t shapeA, std::int32_t shapeB) {
     if (!customFilter_) return true;
     bool allow = true;
-    ++callbackDepth_;
+    const WorldAccess::CallbackScope scope(access_);
     try {
         allow = customFilter_(shapeId(shapeA), shapeId(shapeB));
     } catch (...) {
         if (!callbackError_) callbackError_ = std::current_exception();
     }
-    --callbackDepth_;
     return allow;
 }
 

@@ -19,6 +19,7 @@
 #include "model/contact_census.h"
 #include "model/shape.h"
 #include "pivot/world.h"
+#include "world/world_access.h"
 
 namespace pivot {
 
@@ -26,13 +27,14 @@ class ContactManager {
 public:
     ContactManager(SlotPool<Body>& bodies, SlotPool<Shape>& shapes, SlotPool<Joint>& joints,
                    SlotPool<Contact>& contacts, IslandRevision& islandRevision, TaskPool& pool,
-                   std::uint32_t worldId)
+                   WorldAccess& access, const std::uint32_t& worldId)
         : bodies_(bodies),
           shapes_(shapes),
           joints_(joints),
           contacts_(contacts),
           islandRevision_(islandRevision),
           pool_(pool),
+          access_(access),
           worldId_(worldId) {}
 
     /// Counts the changes to the islands (touch events, pre-solve answers, wakings).
@@ -116,12 +118,11 @@ public:
     ContactData contactData(const Contact& contact) const;
 
     // The user's callbacks (World::setPreSolveCallback, setCustomFilterCallback). They run on
-    // the thread that steps, in contact order; while one runs, inCallback() is true and the
-    // world refuses changes. An exception a callback throws is kept (the callback counts as
+    // the thread that steps, in contact order, each in a WorldAccess::CallbackScope (it may
+    // read the world, not change it: world_access.h). An exception a callback throws is kept (the callback counts as
     // having said yes) until takeCallbackError.
     void setPreSolve(PreSolveCallback callback) { preSolve_ = std::move(callback); }
     void setCustomFilter(CustomFilterCallback callback) { customFilter_ = std::move(callback); }
-    bool inCallback() const { return callbackDepth_ > 0; }
     /// Snapshots (world/world_snapshot.cpp): the broad phase, the pair bookkeeping that is not
     /// derived from the contacts and the last step's events. loadState decodes and checks into a
     /// State that adoptState then takes (after the pools it refers to are in place): a snapshot
@@ -183,7 +184,9 @@ private:
     SlotPool<Contact>& contacts_;
     IslandRevision& islandRevision_;
     TaskPool& pool_;
-    std::uint32_t worldId_;
+    WorldAccess& access_;  // the step's callbacks run in its CallbackScope
+    // The world's id, read where it is kept: a restore of another world's snapshot changes it.
+    const std::uint32_t& worldId_;
 
     BroadPhase broadPhase_;
     PairMap pairs_;  // shape pair -> contact index
@@ -208,7 +211,6 @@ private:
 
     PreSolveCallback preSolve_;
     CustomFilterCallback customFilter_;
-    int callbackDepth_ = 0;
     std::exception_ptr callbackError_;
 };
 

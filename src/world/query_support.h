@@ -1,5 +1,5 @@
 // What the World's query files share: the filter rule, the argument checks, and the scope that
-// marks a query under way (World::Impl::requireNoQuery).
+// marks a query under way (world_access.h).
 #pragma once
 
 #include <optional>
@@ -56,24 +56,12 @@ inline std::optional<RayHit> asHit(ShapeId shape, const std::optional<RayEntry>&
     return RayHit{shape, entry->point, entry->normal, entry->fraction};
 }
 
-/// Counts a query under way for as long as it lives (see World::Impl::requireNoQuery).
-class QueryScope {
-public:
-    explicit QueryScope(const World::Impl& w) : w_(w) { ++w_.queryDepth; }
-    ~QueryScope() { --w_.queryDepth; }
-    QueryScope(const QueryScope&) = delete;
-    QueryScope& operator=(const QueryScope&) = delete;
-
-private:
-    const World::Impl& w_;
-};
-
 /// Walks the shapes whose fat boxes overlap `box` and that the filter sees, as the query scope
 /// requires: visit(index, shape) returns false to stop.
 template <typename Visit>
-void forEachCandidate(const World::Impl& w, const AABB& box, const QueryFilter& filter,
-                      Visit&& visit) {
-    QueryScope scope(w);
+void forEachCandidate(const char* call, const World::Impl& w, const AABB& box,
+                      const QueryFilter& filter, Visit&& visit) {
+    const WorldAccess::QueryScope scope(w.access, call);
     const BroadPhase& broadPhase = w.contactManager.broadPhase();
     broadPhase.query(box, [&](std::int32_t proxy) {
         const std::int32_t index = broadPhase.userData(proxy);

@@ -44,21 +44,25 @@ World::Impl::Impl(const WorldDef& def)
       pool(def.workerCount, TaskSystem{def.enqueueTask, def.finishTask}),
       adaptWorkerCount(def.adaptWorkerCount),
       workerChooser(def.workerCount),
-      contactManager(bodies, shapes, joints, contacts, islandRevision, pool, id),
+      contactManager(bodies, shapes, joints, contacts, islandRevision, pool, access, id),
       stepper(pool) {
     contactManager.broadPhase().setBoxes(def.broadPhaseBoxes);
 }
 
 std::int32_t World::Impl::bodyIndex(const char* call, BodyId id) const {
+    requireRead(call);
     return checkHandle(call, "body", id, bodies, this->id);
 }
 std::int32_t World::Impl::shapeIndex(const char* call, ShapeId id) const {
+    requireRead(call);
     return checkHandle(call, "shape", id, shapes, this->id);
 }
 std::int32_t World::Impl::jointIndex(const char* call, JointId id) const {
+    requireRead(call);
     return checkHandle(call, "joint", id, joints, this->id);
 }
 std::int32_t World::Impl::mouseJointIndex(const char* call, MouseJointId id) const {
+    requireRead(call);
     return checkHandle(call, "mouse joint", id, mouseJoints, this->id);
 }
 
@@ -97,7 +101,7 @@ World::~World() = default;
 
 void World::step(float dt, int velocityIterations, int positionIterations) {
     const char* call = "World::step";
-    impl_->requireNoQuery(call);
+    impl_->requireStructureChange(call);
     // Not requireFinite: a denormal dt is one more step too short, and is told so.
     if (!std::isfinite(dt)) fail(call, "dt must be finite (got " + formatFloat(dt) + ")");
     if (dt < kMinTimeStep) {
@@ -122,7 +126,12 @@ void World::step(float dt, int velocityIterations, int positionIterations) {
                        " s) (got dt " + formatFloat(dt) + " s in " + std::to_string(substeps) +
                        " substeps)");
     }
-    impl_->step(dt, velocityIterations, positionIterations);
+    {
+        // Until the step returns, the world refuses changes from anywhere, and reads from
+        // anywhere but the step's callbacks (world_access.h).
+        const WorldAccess::StepScope stepping(impl_->access);
+        impl_->step(dt, velocityIterations, positionIterations);
+    }
     // A callback's exception, held while the step finished (World::setPreSolveCallback), or
     // the task system's (WorldDef::enqueueTask): the callback's first when both threw.
     std::exception_ptr callbackError = impl_->contactManager.takeCallbackError();
@@ -132,14 +141,17 @@ void World::step(float dt, int velocityIterations, int positionIterations) {
 }
 
 const StepStats& World::lastStepStats() const {
+    impl_->requireRead("World::lastStepStats");
     return impl_->stats;
 }
 
 std::vector<WorldEdgeEvent> World::worldEdgeEvents() const {
+    impl_->requireRead("World::worldEdgeEvents");
     return impl_->edgeEvents;
 }
 
 std::vector<BodyId> World::discardedBodies() const {
+    impl_->requireRead("World::discardedBodies");
     return impl_->discarded;
 }
 
@@ -148,7 +160,7 @@ int World::substepCount() const {
 }
 
 void World::setSubstepCount(int count) {
-    impl_->requireNotInCallback("World::setSubstepCount");
+    impl_->requireChange("World::setSubstepCount");
     checkSubstepCount("World::setSubstepCount", "count", count);
     impl_->substepCount = count;
 }
@@ -158,7 +170,7 @@ Vec2 World::gravity() const {
 }
 
 void World::setGravity(Vec2 gravity) {
-    impl_->requireNotInCallback("World::setGravity");
+    impl_->requireChange("World::setGravity");
     requireWithin("World::setGravity", "gravity", gravity, kMaxGravity, "kMaxGravity");
     impl_->gravity = gravity;
     impl_->wakeAll();
@@ -177,13 +189,13 @@ ContactCorrection World::contactCorrection() const {
 }
 
 void World::setContactCorrection(ContactCorrection correction) {
-    impl_->requireNotInCallback("World::setContactCorrection");
+    impl_->requireChange("World::setContactCorrection");
     checkContactCorrection("World::setContactCorrection", "correction", correction);
     impl_->contactCorrection = correction;
 }
 
 void World::setSleepEnabled(bool enabled) {
-    impl_->requireNotInCallback("World::setSleepEnabled");
+    impl_->requireChange("World::setSleepEnabled");
     impl_->enableSleep = enabled;
     if (!enabled) impl_->wakeAll();
 }
@@ -193,7 +205,7 @@ bool World::isSleepEnabled() const {
 }
 
 void World::setContinuousEnabled(bool enabled) {
-    impl_->requireNotInCallback("World::setContinuousEnabled");
+    impl_->requireChange("World::setContinuousEnabled");
     impl_->enableContinuous = enabled;
 }
 
@@ -203,7 +215,7 @@ bool World::isContinuousEnabled() const {
 
 void World::setContinuousCollision(ContinuousCollision policy) {
     const char* call = "World::setContinuousCollision";
-    impl_->requireNotInCallback(call);
+    impl_->requireChange(call);
     checkContinuousCollision(call, "policy", policy);
     impl_->continuousCollision = policy;
 }
@@ -218,7 +230,7 @@ float World::hitEventThreshold() const {
 
 void World::setHitEventThreshold(float speed) {
     const char* call = "World::setHitEventThreshold";
-    impl_->requireNotInCallback(call);
+    impl_->requireChange(call);
     requireInRange(call, "speed", speed, 0.0f, kMaxSpeed);
     impl_->hitEventThreshold = speed;
 }

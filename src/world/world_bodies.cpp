@@ -5,8 +5,8 @@
 namespace pivot {
 
 BodyId World::createBody(const BodyDef& def) {
-    impl_->requireNotInCallback("World::createBody");
     const char* call = "World::createBody";
+    impl_->requireStructureChange(call);
     checkBodyType(call, "def.type", def.type);
     requireCoordinate(call, "def.position", def.position);
     requireMagnitude(call, "def.angle", def.angle);
@@ -52,7 +52,7 @@ BodyId World::createBody(const BodyDef& def) {
 
 void World::destroyBody(BodyId id) {
     Impl& w = *impl_;
-    w.requireNoQuery("World::destroyBody");
+    w.requireStructureChange("World::destroyBody");
     std::int32_t index = w.bodyIndex("World::destroyBody", id);
     Body& body = w.bodies[index];
     // Joints first (waking what they held), then contacts (waking what touched), then shapes.
@@ -87,8 +87,8 @@ BodyType World::bodyType(BodyId id) const {
 }
 
 void World::setBodyType(BodyId id, BodyType type) {
-    impl_->requireNotInCallback("World::setBodyType");
     const char* call = "World::setBodyType";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     std::int32_t index = w.bodyIndex(call, id);
     checkBodyType(call, "type", type);
@@ -183,7 +183,7 @@ bool World::isBodyAwake(BodyId id) const {
 }
 
 void World::setBodyAwake(BodyId id, bool awake) {
-    impl_->requireNotInCallback("World::setBodyAwake");
+    impl_->requireChange("World::setBodyAwake");
     Body& b = impl_->bodies[impl_->bodyIndex("World::setBodyAwake", id)];
     if (b.type == BodyType::Static) return;
     if (awake) {
@@ -203,8 +203,8 @@ float World::bodyLinearDamping(BodyId id) const {
 }
 
 void World::setBodyLinearDamping(BodyId id, float damping) {
-    impl_->requireNotInCallback("World::setBodyLinearDamping");
     const char* call = "World::setBodyLinearDamping";
+    impl_->requireChange(call);
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
     requireNonNegative(call, "damping", damping);
     b.linearDamping = damping;
@@ -216,8 +216,8 @@ float World::bodyAngularDamping(BodyId id) const {
 }
 
 void World::setBodyAngularDamping(BodyId id, float damping) {
-    impl_->requireNotInCallback("World::setBodyAngularDamping");
     const char* call = "World::setBodyAngularDamping";
+    impl_->requireChange(call);
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
     requireNonNegative(call, "damping", damping);
     b.angularDamping = damping;
@@ -229,8 +229,8 @@ float World::bodyGravityScale(BodyId id) const {
 }
 
 void World::setBodyGravityScale(BodyId id, float scale) {
-    impl_->requireNotInCallback("World::setBodyGravityScale");
     const char* call = "World::setBodyGravityScale";
+    impl_->requireChange(call);
     Body& b = impl_->bodies[impl_->bodyIndex(call, id)];
     requireWithin(call, "scale", scale, kMaxGravityScale, "kMaxGravityScale");
     b.gravityScale = scale;
@@ -238,7 +238,7 @@ void World::setBodyGravityScale(BodyId id, float scale) {
 }
 
 void World::setBodyFixedRotation(BodyId id, bool fixedRotation) {
-    impl_->requireNotInCallback("World::setBodyFixedRotation");
+    impl_->requireChange("World::setBodyFixedRotation");
     Impl& w = *impl_;
     Body& b = w.bodies[w.bodyIndex("World::setBodyFixedRotation", id)];
     if (b.fixedRotation == fixedRotation) return;
@@ -254,7 +254,7 @@ void World::setBodyFixedRotation(BodyId id, bool fixedRotation) {
 }
 
 void World::setBodySleepAllowed(BodyId id, bool allowed) {
-    impl_->requireNotInCallback("World::setBodySleepAllowed");
+    impl_->requireChange("World::setBodySleepAllowed");
     Body& b = impl_->bodies[impl_->bodyIndex("World::setBodySleepAllowed", id)];
     b.allowSleep = allowed;
     if (!allowed) wakeUp(b, impl_->islandRevision);
@@ -265,7 +265,7 @@ bool World::isBodyContinuous(BodyId id) const {
 }
 
 void World::setBodyContinuous(BodyId id, bool continuous) {
-    impl_->requireNotInCallback("World::setBodyContinuous");
+    impl_->requireChange("World::setBodyContinuous");
     impl_->bodies[impl_->bodyIndex("World::setBodyContinuous", id)].continuous = continuous;
 }
 
@@ -274,7 +274,7 @@ bool World::isBodyBullet(BodyId id) const {
 }
 
 void World::setBodyBullet(BodyId id, bool bullet) {
-    impl_->requireNotInCallback("World::setBodyBullet");
+    impl_->requireChange("World::setBodyBullet");
     Body& body = impl_->bodies[impl_->bodyIndex("World::setBodyBullet", id)];
     ContactManager& contactManager = impl_->contactManager;
     if (movesAndStopsTunnelling(body)) contactManager.countMovingStoppers(-body.shapeCount);
@@ -287,13 +287,15 @@ std::uint64_t World::bodyUserData(BodyId id) const {
 }
 
 void World::setBodyUserData(BodyId id, std::uint64_t userData) {
-    impl_->bodies[impl_->bodyIndex("World::setBodyUserData", id)].userData = userData;
+    const char* call = "World::setBodyUserData";
+    impl_->requireChange(call);
+    impl_->bodies[impl_->bodyIndex(call, id)].userData = userData;
 }
 
 void World::setBodyTransform(BodyId id, Vec2 position, float angle) {
     const char* call = "World::setBodyTransform";
     Impl& w = *impl_;
-    w.requireNoQuery(call);
+    w.requireStructureChange(call);
     std::int32_t index = w.bodyIndex(call, id);
     requireCoordinate(call, "position", position);
     requireMagnitude(call, "angle", angle);
@@ -372,8 +374,8 @@ void requireAccumulated(const char* call, const char* what, Vec2 value, float li
 }  // namespace
 
 void World::setBodyLinearVelocity(BodyId id, Vec2 velocity) {
-    impl_->requireNotInCallback("World::setBodyLinearVelocity");
     const char* call = "World::setBodyLinearVelocity";
+    impl_->requireChange(call);
     Body& b = bodyTakingVelocity(*impl_, call, id);
     requireWithin(call, "velocity", velocity, kMaxSpeed, "kMaxSpeed");
     b.linearVelocity = velocity;
@@ -381,8 +383,8 @@ void World::setBodyLinearVelocity(BodyId id, Vec2 velocity) {
 }
 
 void World::setBodyAngularVelocity(BodyId id, float omega) {
-    impl_->requireNotInCallback("World::setBodyAngularVelocity");
     const char* call = "World::setBodyAngularVelocity";
+    impl_->requireChange(call);
     Body& b = bodyTakingVelocity(*impl_, call, id);
     requireWithin(call, "omega", omega, kMaxAngularSpeed, "kMaxAngularSpeed");
     if (b.fixedRotation && omega != 0.0f) {
@@ -394,8 +396,8 @@ void World::setBodyAngularVelocity(BodyId id, float omega) {
 }
 
 void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
-    impl_->requireNotInCallback("World::applyForce");
     const char* call = "World::applyForce";
+    impl_->requireChange(call);
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "force", force);
     requireCoordinate(call, "worldPoint", worldPoint);
@@ -414,8 +416,8 @@ void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
 }
 
 void World::applyForceToCenter(BodyId id, Vec2 force) {
-    impl_->requireNotInCallback("World::applyForceToCenter");
     const char* call = "World::applyForceToCenter";
+    impl_->requireChange(call);
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "force", force);
     const Vec2 total = b.force + force;
@@ -426,8 +428,8 @@ void World::applyForceToCenter(BodyId id, Vec2 force) {
 }
 
 void World::applyTorque(BodyId id, float torque) {
-    impl_->requireNotInCallback("World::applyTorque");
     const char* call = "World::applyTorque";
+    impl_->requireChange(call);
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "torque", torque);
     requireTurning(call, b);
@@ -440,8 +442,8 @@ void World::applyTorque(BodyId id, float torque) {
 }
 
 void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
-    impl_->requireNotInCallback("World::applyLinearImpulse");
     const char* call = "World::applyLinearImpulse";
+    impl_->requireChange(call);
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "impulse", impulse);
     requireCoordinate(call, "worldPoint", worldPoint);
@@ -455,8 +457,8 @@ void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
 }
 
 void World::applyAngularImpulse(BodyId id, float impulse) {
-    impl_->requireNotInCallback("World::applyAngularImpulse");
     const char* call = "World::applyAngularImpulse";
+    impl_->requireChange(call);
     Body& b = bodyTakingForce(*impl_, call, id);
     requireMagnitude(call, "impulse", impulse);
     requireTurning(call, b);
@@ -467,6 +469,7 @@ void World::applyAngularImpulse(BodyId id, float impulse) {
 }
 
 std::vector<BodyId> World::bodyIds() const {
+    impl_->requireRead("World::bodyIds");
     std::vector<BodyId> ids;
     impl_->bodies.forEach(
         [&](std::int32_t index, const Body&) { ids.push_back(impl_->bodyId(index)); });

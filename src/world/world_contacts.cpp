@@ -8,6 +8,7 @@
 namespace pivot {
 
 std::vector<ContactData> World::contacts() const {
+    impl_->requireRead("World::contacts");
     const Impl& w = *impl_;
     std::vector<ContactData> result;
     w.contacts.forEach([&](std::int32_t, const Contact& c) {
@@ -29,30 +30,36 @@ std::vector<ContactData> World::bodyContacts(BodyId id) const {
 }
 
 std::vector<ContactEvent> World::contactBeginEvents() const {
+    impl_->requireRead("World::contactBeginEvents");
     return impl_->contactManager.beginEvents();
 }
 std::vector<ContactEvent> World::contactEndEvents() const {
+    impl_->requireRead("World::contactEndEvents");
     return impl_->contactManager.endEvents();
 }
 std::vector<SensorEvent> World::sensorBeginEvents() const {
+    impl_->requireRead("World::sensorBeginEvents");
     return impl_->contactManager.sensorBeginEvents();
 }
 std::vector<SensorEvent> World::sensorEndEvents() const {
+    impl_->requireRead("World::sensorEndEvents");
     return impl_->contactManager.sensorEndEvents();
 }
 std::vector<ContactHitEvent> World::contactHitEvents() const {
+    impl_->requireRead("World::contactHitEvents");
     return impl_->hitEvents;
 }
 std::vector<BodyMoveEvent> World::bodyMoveEvents() const {
+    impl_->requireRead("World::bodyMoveEvents");
     return impl_->moveEvents;
 }
 
 void World::setPreSolveCallback(PreSolveCallback callback) {
-    impl_->requireNotInCallback("World::setPreSolveCallback");
+    impl_->requireChange("World::setPreSolveCallback");
     impl_->contactManager.setPreSolve(std::move(callback));
 }
 void World::setCustomFilterCallback(CustomFilterCallback callback) {
-    impl_->requireNotInCallback("World::setCustomFilterCallback");
+    impl_->requireChange("World::setCustomFilterCallback");
     impl_->contactManager.setCustomFilter(std::move(callback));
 }
 

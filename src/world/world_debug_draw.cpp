@@ -59,22 +59,13 @@ void drawShape(DebugDraw& draw, const Shape& shape, const Transform& xf, DebugCo
     }
 }
 
-// While the game's drawing code runs, the world refuses changes (requireNotInCallback): it is
-// in the middle of walking its pools.
-struct DrawGuard {
-    explicit DrawGuard(int& depth) : depth_(depth) { ++depth_; }
-    ~DrawGuard() { --depth_; }
-    DrawGuard(const DrawGuard&) = delete;
-    DrawGuard& operator=(const DrawGuard&) = delete;
-    int& depth_;
-};
-
 }  // namespace
 
 void World::debugDraw(DebugDraw& draw, const DebugDrawOptions& options) const {
     const Impl& w = *impl_;
-    requireFinite("World::debugDraw", "options.normalLength", options.normalLength);
-    DrawGuard guard(w.drawDepth);
+    const char* call = "World::debugDraw";
+    requireFinite(call, "options.normalLength", options.normalLength);
+    const WorldAccess::DrawScope drawing(w.access, call);
     if (options.shapes || options.aabbs) {
         w.bodies.forEach([&](std::int32_t, const Body& body) {
             for (std::int32_t s = body.shapeList; s != -1; s = w.shapes[s].next) {
@@ -137,7 +128,7 @@ void World::debugDrawBody(BodyId id, const Transform& xf, DebugDraw& draw) const
     requireFinite(call, "xf.p", xf.p);
     requireFinite(call, "xf.q.s", xf.q.s);
     requireFinite(call, "xf.q.c", xf.q.c);
-    DrawGuard guard(w.drawDepth);
+    const WorldAccess::DrawScope drawing(w.access, call);
     for (std::int32_t s = body.shapeList; s != -1; s = w.shapes[s].next) {
         drawShape(draw, w.shapes[s], xf, shapeColor(body, w.shapes[s]));
     }

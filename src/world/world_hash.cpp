@@ -137,6 +137,7 @@ void hashJointData(StateHasher& h, const GearJoint& j) {
 // contacts with their manifolds, and what the last step reported. Only scratch buffers that
 // every step rebuilds are left out.
 std::uint64_t World::stateHash() const {
+    impl_->requireRead("World::stateHash");
     const Impl& w = *impl_;
     StateHasher h;
     h.add(w.gravity);

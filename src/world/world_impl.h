@@ -26,6 +26,7 @@
 #include "solver/stepper.h"
 #include "world/contact_manager.h"
 #include "world/continuous_solver.h"
+#include "world/world_access.h"
 #include "world/fast_body_sweeps.h"
 
 namespace pivot {
@@ -49,6 +50,21 @@ struct World::Impl {
     float jointLetGoSeparation;  // m; 0: never
     int substepCount;            // [1, kMaxSubsteps]
     float hitEventThreshold;     // m/s
+
+    // Who may call in while a step, a query's callback or debugDraw's drawing is under way:
+    // every public call checks it first (world_access.h says the rule).
+    WorldAccess access;
+    /// Refuses a change during a step, or from debugDraw's drawing calls.
+    void requireChange(const char* call) const {
+        access.requireChange(call, WorldAccess::Change::State);
+    }
+    /// Refuses a change of structure (world_access.h) during a step, a query's callback or
+    /// debugDraw's drawing calls.
+    void requireStructureChange(const char* call) const {
+        access.requireChange(call, WorldAccess::Change::Structure);
+    }
+    /// Refuses a read during a step, but from its pre-solve and custom-filter callbacks.
+    void requireRead(const char* call) const { access.requireRead(call); }
 
     SlotPool<Body> bodies;
     SlotPool<Shape> shapes;
@@ -75,16 +91,6 @@ struct World::Impl {
     // 1/h of the last step's substeps (1/dt with one substep); 0 before the first step
     float previousInvDt = 0.0f;
     StepStats stats;
-
-    // Queries under way (World::castRay and the others): while one is, the broad phase's tree
-    // is being walked, so calls that would change it are refused (requireNoQuery).
-    mutable int queryDepth = 0;
-    // World::debugDraw under way: the game's drawing code may read the world, not change it.
-    mutable int drawDepth = 0;
-    void requireNoQuery(const char* call) const;
-    /// Refuses a change made from inside a step's callback (World::setPreSolveCallback,
-    /// setCustomFilterCallback): every call that changes the world checks it.
-    void requireNotInCallback(const char* call) const;
 
     void step(float dt, int velocityIterations, int positionIterations);
     void recordLetGoJoints(const IslandSet::Range& island);

@@ -107,8 +107,8 @@ Vec2 axisInBodyA(const Def& def, Vec2 unitAxis, const Body& bodyA) {
 }  // namespace
 
 JointId World::createJoint(const RevoluteJointDef& def) {
-    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
@@ -134,8 +134,8 @@ JointId World::createJoint(const RevoluteJointDef& def) {
 }
 
 JointId World::createJoint(const DistanceJointDef& def) {
-    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
@@ -163,8 +163,8 @@ JointId World::createJoint(const DistanceJointDef& def) {
 }
 
 JointId World::createJoint(const PulleyJointDef& def) {
-    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.groundAnchorA", def.groundAnchorA);
@@ -199,8 +199,8 @@ JointId World::createJoint(const PulleyJointDef& def) {
 }
 
 JointId World::createJoint(const PrismaticJointDef& def) {
-    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
@@ -228,8 +228,8 @@ JointId World::createJoint(const PrismaticJointDef& def) {
 }
 
 JointId World::createJoint(const WeldJointDef& def) {
-    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
@@ -251,8 +251,8 @@ JointId World::createJoint(const WeldJointDef& def) {
 }
 
 JointId World::createJoint(const WheelJointDef& def) {
-    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
@@ -310,8 +310,8 @@ GearSide checkGearSide(const char* call, const char* field, JointId id, const Wo
 }
 
 JointId World::createJoint(const GearJointDef& def) {
-    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     const GearSide side1 = checkGearSide(call, "def.joint1", def.joint1, w);
     const GearSide side2 = checkGearSide(call, "def.joint2", def.joint2, w);
@@ -351,8 +351,8 @@ JointId World::createJoint(const GearJointDef& def) {
 }
 
 JointId World::createJoint(const FrictionJointDef& def) {
-    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
     requireCoordinate(call, "def.localAnchorA", def.localAnchorA);
@@ -370,8 +370,8 @@ JointId World::createJoint(const FrictionJointDef& def) {
 }
 
 JointId World::createJoint(const MotorJointDef& def) {
-    impl_->requireNotInCallback("World::createJoint");
     const char* call = "World::createJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     const auto [a, b] = checkBodies(call, def, w);
     if (def.linearOffset) requireCoordinate(call, "def.linearOffset", *def.linearOffset);

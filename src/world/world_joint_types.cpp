@@ -24,8 +24,8 @@ JointLimit World::jointLimit(JointId id) const {
     return {r.enableLimit, r.lowerAngle, r.upperAngle};
 }
 void World::setJointLimit(JointId id, const JointLimit& limit) {
-    impl_->requireNotInCallback("World::setJointLimit");
     const char* call = "World::setJointLimit";
+    impl_->requireChange(call);
     Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Revolute)];
     checkLimit(call, "limit", limit);
     RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
@@ -46,8 +46,8 @@ JointMotor World::jointMotor(JointId id) const {
     return {r.enableMotor, r.motorSpeed, r.maxMotorTorque};
 }
 void World::setJointMotor(JointId id, const JointMotor& motor) {
-    impl_->requireNotInCallback("World::setJointMotor");
     const char* call = "World::setJointMotor";
+    impl_->requireChange(call);
     Joint& j =
         impl_->joints[impl_->jointIndexOfTypes(call, id, JointType::Revolute, JointType::Wheel)];
     checkMotor(call, "motor", motor);
@@ -68,8 +68,8 @@ float World::distanceJointRestLength(JointId id) const {
         .length;
 }
 void World::setDistanceJointRestLength(JointId id, float length) {
-    impl_->requireNotInCallback("World::setDistanceJointRestLength");
     const char* call = "World::setDistanceJointRestLength";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
     checkRestLength(call, "length", length);
     Joint& j = impl_->joints[index];
@@ -82,8 +82,8 @@ LengthLimit World::distanceJointLimit(JointId id) const {
     return {d.enableLimit, d.minLength, d.maxLength};
 }
 void World::setDistanceJointLimit(JointId id, const LengthLimit& limit) {
-    impl_->requireNotInCallback("World::setDistanceJointLimit");
     const char* call = "World::setDistanceJointLimit";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
     checkLengthLimit(call, "limit", limit);
     Joint& j = impl_->joints[index];
@@ -98,8 +98,8 @@ JointSpring World::distanceJointSpring(JointId id) const {
     return {d.enableSpring, d.hertz, d.dampingRatio};
 }
 void World::setDistanceJointSpring(JointId id, const JointSpring& spring) {
-    impl_->requireNotInCallback("World::setDistanceJointSpring");
     const char* call = "World::setDistanceJointSpring";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
@@ -159,8 +159,8 @@ float World::jointMaxForce(JointId id) const {
     return *velocityJointLimits(j).force;
 }
 void World::setJointMaxForce(JointId id, float force) {
-    impl_->requireNotInCallback("World::setJointMaxForce");
     const char* call = "World::setJointMaxForce";
+    impl_->requireChange(call);
     Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
     requireNonNegative(call, "force", force);
     *velocityJointLimits(j).force = force;
@@ -171,8 +171,8 @@ float World::jointMaxTorque(JointId id) const {
     return *velocityJointLimits(j).torque;
 }
 void World::setJointMaxTorque(JointId id, float torque) {
-    impl_->requireNotInCallback("World::setJointMaxTorque");
     const char* call = "World::setJointMaxTorque";
+    impl_->requireChange(call);
     Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
     requireNonNegative(call, "torque", torque);
     *velocityJointLimits(j).torque = torque;
@@ -184,8 +184,8 @@ Vec2 World::motorJointLinearOffset(JointId id) const {
         .linearOffset;
 }
 void World::setMotorJointLinearOffset(JointId id, Vec2 offset) {
-    impl_->requireNotInCallback("World::setMotorJointLinearOffset");
     const char* call = "World::setMotorJointLinearOffset";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
     requireCoordinate(call, "offset", offset);
     Joint& j = impl_->joints[index];
@@ -197,8 +197,8 @@ float World::motorJointAngularOffset(JointId id) const {
         .angularOffset;
 }
 void World::setMotorJointAngularOffset(JointId id, float offset) {
-    impl_->requireNotInCallback("World::setMotorJointAngularOffset");
     const char* call = "World::setMotorJointAngularOffset";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
     requireMagnitude(call, "offset", offset);
     Joint& j = impl_->joints[index];
@@ -210,8 +210,8 @@ float World::motorJointCorrectionFactor(JointId id) const {
         .correctionFactor;
 }
 void World::setMotorJointCorrectionFactor(JointId id, float factor) {
-    impl_->requireNotInCallback("World::setMotorJointCorrectionFactor");
     const char* call = "World::setMotorJointCorrectionFactor";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
     requireInRange(call, "factor", factor, 0.0f, 1.0f);
     Joint& j = impl_->joints[index];
@@ -288,8 +288,8 @@ TranslationLimit World::prismaticJointLimit(JointId id) const {
     return {p.enableLimit, p.lowerTranslation, p.upperTranslation};
 }
 void World::setPrismaticJointLimit(JointId id, const TranslationLimit& limit) {
-    impl_->requireNotInCallback("World::setPrismaticJointLimit");
     const char* call = "World::setPrismaticJointLimit";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
     checkTranslationLimit(call, "limit", limit);
     Joint& j = impl_->joints[index];
@@ -302,8 +302,8 @@ LinearMotor World::prismaticJointMotor(JointId id) const {
     return {p.enableMotor, p.motorSpeed, p.maxMotorForce};
 }
 void World::setPrismaticJointMotor(JointId id, const LinearMotor& motor) {
-    impl_->requireNotInCallback("World::setPrismaticJointMotor");
     const char* call = "World::setPrismaticJointMotor";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
     checkLinearMotor(call, "motor", motor);
     Joint& j = impl_->joints[index];
@@ -316,8 +316,8 @@ JointSpring World::prismaticJointSpring(JointId id) const {
     return {p.enableSpring, p.hertz, p.dampingRatio};
 }
 void World::setPrismaticJointSpring(JointId id, const JointSpring& spring) {
-    impl_->requireNotInCallback("World::setPrismaticJointSpring");
     const char* call = "World::setPrismaticJointSpring";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
@@ -344,8 +344,8 @@ float World::gearJointRatio(JointId id) const {
     return impl_->jointData<GearJoint>("World::gearJointRatio", id, JointType::Gear).ratio;
 }
 void World::setGearJointRatio(JointId id, float ratio) {
-    impl_->requireNotInCallback("World::setGearJointRatio");
     const char* call = "World::setGearJointRatio";
+    impl_->requireChange(call);
     Impl& w = *impl_;
     Joint& joint = w.joints[w.jointIndexOfType(call, id, JointType::Gear)];
     checkGearRatio(call, "ratio", ratio);
@@ -371,8 +371,8 @@ JointSpring World::weldJointAngularSpring(JointId id) const {
         .angularSpring;
 }
 void World::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
-    impl_->requireNotInCallback("World::setWeldJointLinearSpring");
     const char* call = "World::setWeldJointLinearSpring";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
@@ -380,8 +380,8 @@ void World::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
     impl_->wakeJointBodies(j);
 }
 void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
-    impl_->requireNotInCallback("World::setWeldJointAngularSpring");
     const char* call = "World::setWeldJointAngularSpring";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
@@ -395,8 +395,8 @@ JointSpring World::wheelJointSpring(JointId id) const {
     return impl_->jointData<WheelJoint>("World::wheelJointSpring", id, JointType::Wheel).spring;
 }
 void World::setWheelJointSpring(JointId id, const JointSpring& spring) {
-    impl_->requireNotInCallback("World::setWheelJointSpring");
     const char* call = "World::setWheelJointSpring";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
     checkSpring(call, "spring", spring);
     Joint& j = impl_->joints[index];
@@ -409,8 +409,8 @@ TranslationLimit World::wheelJointLimit(JointId id) const {
     return {w.enableLimit, w.lowerTranslation, w.upperTranslation};
 }
 void World::setWheelJointLimit(JointId id, const TranslationLimit& limit) {
-    impl_->requireNotInCallback("World::setWheelJointLimit");
     const char* call = "World::setWheelJointLimit";
+    impl_->requireChange(call);
     const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
     checkTranslationLimit(call, "limit", limit);
     Joint& j = impl_->joints[index];

@@ -94,8 +94,8 @@ void World::Impl::removeJointAndItsGears(std::int32_t index) {
 }
 
 void World::destroyJoint(JointId id) {
-    impl_->requireNotInCallback("World::destroyJoint");
     const char* call = "World::destroyJoint";
+    impl_->requireStructureChange(call);
     const std::int32_t index = impl_->jointIndex(call, id);
     const std::int32_t gears = impl_->joints[index].gearCount;
     if (gears > 0) {
@@ -144,7 +144,7 @@ bool World::isJointLetGo(JointId id) const {
 }
 
 void World::rearmJoint(JointId id) {
-    impl_->requireNotInCallback("World::rearmJoint");
+    impl_->requireChange("World::rearmJoint");
     Joint& j = impl_->joints[impl_->jointIndex("World::rearmJoint", id)];
     if (!j.letGo) return;
     j.letGo = false;  // letGoFor cleared its impulses
@@ -158,8 +158,8 @@ float World::jointLetGoSeparation(JointId id) const {
 }
 
 void World::setJointLetGoSeparation(JointId id, std::optional<float> separation) {
-    impl_->requireNotInCallback("World::setJointLetGoSeparation");
     const char* call = "World::setJointLetGoSeparation";
+    impl_->requireChange(call);
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     if (separation) requireNonNegative(call, "separation", *separation);
     j.hasLetGoOverride = separation.has_value();
@@ -167,6 +167,7 @@ void World::setJointLetGoSeparation(JointId id, std::optional<float> separation)
 }
 
 std::vector<JointLetGoEvent> World::jointLetGoEvents() const {
+    impl_->requireRead("World::jointLetGoEvents");
     return impl_->letGoEvents;
 }
 
@@ -185,7 +186,7 @@ bool World::jointCollideConnected(JointId id) const {
 void World::setJointCollideConnected(JointId id, bool collide) {
     const char* call = "World::setJointCollideConnected";
     Impl& w = *impl_;
-    w.requireNotInCallback(call);
+    w.requireChange(call);
     Joint& j = w.joints[w.jointIndex(call, id)];
     if (j.collideConnected == collide) return;
     j.collideConnected = collide;
@@ -197,8 +198,8 @@ float World::jointBreakForce(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointBreakForce", id)].breakForce;
 }
 void World::setJointBreakForce(JointId id, float force) {
-    impl_->requireNotInCallback("World::setJointBreakForce");
     const char* call = "World::setJointBreakForce";
+    impl_->requireChange(call);
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requireNonNegative(call, "force", force);
     j.breakForce = force;
@@ -209,8 +210,8 @@ float World::jointBreakTorque(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointBreakTorque", id)].breakTorque;
 }
 void World::setJointBreakTorque(JointId id, float torque) {
-    impl_->requireNotInCallback("World::setJointBreakTorque");
     const char* call = "World::setJointBreakTorque";
+    impl_->requireChange(call);
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requireNonNegative(call, "torque", torque);
     j.breakTorque = torque;
@@ -238,8 +239,8 @@ PositionSolver World::jointPositionSolver(JointId id) const {
 }
 
 void World::setJointPositionSolver(JointId id, PositionSolver solver) {
-    impl_->requireNotInCallback("World::setJointPositionSolver");
     const char* call = "World::setJointPositionSolver";
+    impl_->requireChange(call);
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requirePositionError(call, id.index, j);
     checkSolver(call, "solver", solver);
@@ -253,8 +254,8 @@ float World::jointBiasFactor(JointId id) const {
 }
 
 void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
-    impl_->requireNotInCallback("World::setJointBiasFactor");
     const char* call = "World::setJointBiasFactor";
+    impl_->requireChange(call);
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requirePositionError(call, id.index, j);
     if (biasFactor) checkBiasFactor(call, "biasFactor", *biasFactor);
@@ -268,8 +269,8 @@ JointSoftness World::jointSoftness(JointId id) const {
 }
 
 void World::setJointSoftness(JointId id, const JointSoftness& softness) {
-    impl_->requireNotInCallback("World::setJointSoftness");
     const char* call = "World::setJointSoftness";
+    impl_->requireChange(call);
     Joint& j = impl_->joints[impl_->jointIndex(call, id)];
     requirePositionError(call, id.index, j);
     checkSoftness(call, "softness", softness);
@@ -282,11 +283,12 @@ std::uint64_t World::jointUserData(JointId id) const {
 }
 
 void World::setJointUserData(JointId id, std::uint64_t userData) {
-    impl_->requireNotInCallback("World::setJointUserData");
+    impl_->requireChange("World::setJointUserData");
     impl_->joints[impl_->jointIndex("World::setJointUserData", id)].userData = userData;
 }
 
 std::vector<JointId> World::jointIds() const {
+    impl_->requireRead("World::jointIds");
     std::vector<JointId> ids;
     impl_->joints.forEach(
         [&](std::int32_t index, const Joint&) { ids.push_back(impl_->jointId(index)); });

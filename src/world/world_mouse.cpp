@@ -16,8 +16,8 @@ void World::Impl::removeMouseJoint(std::int32_t index) {
 }
 
 MouseJointId World::createMouseJoint(const MouseJointDef& def) {
-    impl_->requireNotInCallback("World::createMouseJoint");
     const char* call = "World::createMouseJoint";
+    impl_->requireStructureChange(call);
     Impl& w = *impl_;
     std::int32_t bodyIndex = checkHandle(call, "def.body", def.body, w.bodies, w.id);
     Body& body = w.bodies[bodyIndex];
@@ -43,7 +43,7 @@ MouseJointId World::createMouseJoint(const MouseJointDef& def) {
 }
 
 void World::destroyMouseJoint(MouseJointId id) {
-    impl_->requireNotInCallback("World::destroyMouseJoint");
+    impl_->requireStructureChange("World::destroyMouseJoint");
     impl_->removeMouseJoint(impl_->mouseJointIndex("World::destroyMouseJoint", id));
 }
 
@@ -53,8 +53,8 @@ bool World::isValid(MouseJointId id) const {
 }
 
 void World::setMouseTarget(MouseJointId id, Vec2 target) {
-    impl_->requireNotInCallback("World::setMouseTarget");
     const char* call = "World::setMouseTarget";
+    impl_->requireChange(call);
     MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
     requireCoordinate(call, "target", target);
     joint.target = target;
@@ -74,7 +74,7 @@ float World::mouseJointMaxForce(MouseJointId id) const {
 }
 void World::setMouseJointMaxForce(MouseJointId id, float force) {
     const char* call = "World::setMouseJointMaxForce";
-    impl_->requireNotInCallback(call);
+    impl_->requireChange(call);
     MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
     requirePositive(call, "force", force);
     joint.maxForce = force;
@@ -89,7 +89,7 @@ float World::mouseJointDampingRatio(MouseJointId id) const {
 }
 void World::setMouseJointSpring(MouseJointId id, float hertz, float dampingRatio) {
     const char* call = "World::setMouseJointSpring";
-    impl_->requireNotInCallback(call);
+    impl_->requireChange(call);
     MouseJoint& joint = impl_->mouseJoints[impl_->mouseJointIndex(call, id)];
     requirePositive(call, "hertz", hertz);
     requireNonNegative(call, "dampingRatio", dampingRatio);

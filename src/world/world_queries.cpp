@@ -43,28 +43,6 @@ bool shapeContains(const Shape& shape, const Transform& xf, Vec2 point) {
 
 }  // namespace
 
-void World::Impl::requireNoQuery(const char* call) const {
-    requireNotInCallback(call);
-    if (queryDepth > 0) {
-        fail(call,
-             "called from inside a query's callback (a query may read the world; change "
-             "its shapes after the query returns)");
-    }
-}
-
-void World::Impl::requireNotInCallback(const char* call) const {
-    if (drawDepth > 0) {
-        fail(call,
-             "called from inside World::debugDraw's drawing calls (they may read the world; "
-             "change it after debugDraw returns)");
-    }
-    if (contactManager.inCallback()) {
-        fail(call,
-             "called from inside a step's callback (pre-solve or custom filter: it may read "
-             "the world; change it after World::step returns)");
-    }
-}
-
 AABB World::shapeAABB(ShapeId id) const {
     const Impl& w = *impl_;
     return w.shapes[w.shapeIndex("World::shapeAABB", id)].box;
@@ -77,7 +55,7 @@ void castRayNamed(const char* call, const World::Impl& w, Vec2 origin, Vec2 tran
                   const QueryFilter& filter, RayCallback callback) {
     checkRay(call, origin, translation);
     if (!(lengthSquared(translation) > 0.0f)) return;
-    QueryScope scope(w);
+    const WorldAccess::QueryScope scope(w.access, call);
     const BroadPhase& broadPhase = w.contactManager.broadPhase();
     broadPhase.rayCast(origin, translation, 1.0f, [&](std::int32_t proxy, float maxFraction) {
         const std::int32_t index = broadPhase.userData(proxy);
@@ -129,7 +107,7 @@ void World::queryAABB(const AABB& box, const QueryFilter& filter, ShapeCallback 
         fail(call, "box.lower must be <= box.upper in x and y (got " + formatVec2(box.lower) +
                        " and " + formatVec2(box.upper) + ")");
     }
-    forEachCandidate(w, box, filter, [&](std::int32_t index, const Shape& shape) {
+    forEachCandidate(call, w, box, filter, [&](std::int32_t index, const Shape& shape) {
         return !overlaps(shape.box, box) || callback(w.shapeId(index));
     });
 }
@@ -138,7 +116,7 @@ void World::queryPoint(Vec2 point, const QueryFilter& filter, ShapeCallback call
     const char* call = "World::queryPoint";
     const Impl& w = *impl_;
     requireCoordinate(call, "point", point);
-    forEachCandidate(w, AABB{point, point}, filter, [&](std::int32_t index, const Shape& shape) {
+    forEachCandidate(call, w, AABB{point, point}, filter, [&](std::int32_t index, const Shape& shape) {
         return !shapeContains(shape, w.bodies[shape.body].xf, point) || callback(w.shapeId(index));
     });
 }

@@ -51,9 +51,9 @@ AABB boxOf(const DistanceProxy& proxy, const Transform& xf) {
     return {lower - r, upper + r};
 }
 
-void queryOverlaps(const World::Impl& w, const DistanceProxy& query, const Transform& xf,
-                   const QueryFilter& filter, ShapeCallback callback) {
-    forEachCandidate(w, boxOf(query, xf), filter, [&](std::int32_t index, const Shape& shape) {
+void queryOverlaps(const char* call, const World::Impl& w, const DistanceProxy& query,
+                   const Transform& xf, const QueryFilter& filter, ShapeCallback callback) {
+    forEachCandidate(call, w, boxOf(query, xf), filter, [&](std::int32_t index, const Shape& shape) {
         const DistanceResult d =
             shapeDistance(query, xf, proxyOf(shape), w.bodies[shape.body].xf, true);
         return !d.overlap || callback(w.shapeId(index));
@@ -86,7 +86,7 @@ void castShapeNamed(const char* call, const World::Impl& w, const DistanceProxy&
     const AABB start = boxOf(mover, xf);
     const AABB end = boxOf(mover, Transform{xf.p + translation, xf.q});
     float maxFraction = 1.0f;
-    forEachCandidate(w, combine(start, end), filter, [&](std::int32_t index, const Shape& shape) {
+    forEachCandidate(call, w, combine(start, end), filter, [&](std::int32_t index, const Shape& shape) {
         const std::optional<CastEntry> entry =
             castShape(mover, xf, translation, proxyOf(shape), w.bodies[shape.body].xf, maxFraction);
         if (!entry) return true;
@@ -155,7 +155,7 @@ void World::queryShape(const Circle& circle, const Transform& xf, const QueryFil
     const char* call = "World::queryShape";
     const DistanceProxy query = checkedProxy(call, circle);
     checkTransform(call, xf);
-    queryOverlaps(*impl_, query, xf, filter, callback);
+    queryOverlaps(call, *impl_, query, xf, filter, callback);
 }
 
 void World::queryShape(const Capsule& capsule, const Transform& xf, const QueryFilter& filter,
@@ -163,7 +163,7 @@ void World::queryShape(const Capsule& capsule, const Transform& xf, const QueryF
     const char* call = "World::queryShape";
     const DistanceProxy query = checkedProxy(call, capsule);
     checkTransform(call, xf);
-    queryOverlaps(*impl_, query, xf, filter, callback);
+    queryOverlaps(call, *impl_, query, xf, filter, callback);
 }
 
 void World::queryShape(const Polygon& polygon, const Transform& xf, const QueryFilter& filter,
@@ -171,7 +171,7 @@ void World::queryShape(const Polygon& polygon, const Transform& xf, const QueryF
     const char* call = "World::queryShape";
     const DistanceProxy query = checkedProxy(call, polygon);
     checkTransform(call, xf);
-    queryOverlaps(*impl_, query, xf, filter, callback);
+    queryOverlaps(call, *impl_, query, xf, filter, callback);
 }
 
 }  // namespace pivot

@@ -79,7 +79,7 @@ void World::Impl::removeShape(std::int32_t index) {
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Circle& circle) {
     const char* call = "World::createShape";
-    impl_->requireNoQuery(call);
+    impl_->requireStructureChange(call);
     std::int32_t bodyIndex = impl_->bodyIndex(call, bodyId);
     checkShapeDef(call, def, impl_->bodies[bodyIndex]);
     checkCircle(call, circle);
@@ -97,7 +97,7 @@ ShapeId createPolygonal(World::Impl& w, BodyId bodyId, const ShapeDef& def, Shap
                         const Geometry& geometry,
                         std::string (*make)(const Geometry&, ConvexPolygon&)) {
     const char* call = "World::createShape";
-    w.requireNoQuery(call);
+    w.requireStructureChange(call);
     std::int32_t bodyIndex = w.bodyIndex(call, bodyId);
     checkShapeDef(call, def, w.bodies[bodyIndex]);
     Shape shape;
@@ -110,7 +110,6 @@ ShapeId createPolygonal(World::Impl& w, BodyId bodyId, const ShapeDef& def, Shap
 }  // namespace
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Polygon& polygon) {
-    impl_->requireNotInCallback("World::createShape");
     return createPolygonal(*impl_, bodyId, def, ShapeType::Polygon, polygon, makeConvexPolygon);
 }
 
@@ -121,7 +120,7 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Capsule& ca
 namespace {
 
 std::int32_t segmentBody(const char* call, World::Impl& w, BodyId bodyId, const ShapeDef& def) {
-    w.requireNoQuery(call);
+    w.requireStructureChange(call);
     std::int32_t bodyIndex = w.bodyIndex(call, bodyId);
     if (w.bodies[bodyIndex].type == BodyType::Dynamic) {
         fail(call,
@@ -135,8 +134,8 @@ std::int32_t segmentBody(const char* call, World::Impl& w, BodyId bodyId, const 
 }  // namespace
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Segment& segment) {
-    impl_->requireNotInCallback("World::createShape");
     const char* call = "World::createShape";
+    impl_->requireStructureChange(call);
     const std::int32_t bodyIndex = segmentBody(call, *impl_, bodyId, def);
     Shape shape;
     shape.type = ShapeType::Segment;
@@ -146,8 +145,8 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const Segment& se
 }
 
 ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ChainSegment& segment) {
-    impl_->requireNotInCallback("World::createShape");
     const char* call = "World::createShape";
+    impl_->requireStructureChange(call);
     const std::int32_t bodyIndex = segmentBody(call, *impl_, bodyId, def);
     Shape shape;
     shape.type = ShapeType::ChainSegment;
@@ -159,8 +158,8 @@ ShapeId World::createShape(BodyId bodyId, const ShapeDef& def, const ChainSegmen
 }
 
 std::vector<ShapeId> World::createChain(BodyId bodyId, const ShapeDef& def, const Chain& chain) {
-    impl_->requireNotInCallback("World::createChain");
     const char* call = "World::createChain";
+    impl_->requireStructureChange(call);
     const std::int32_t bodyIndex = segmentBody(call, *impl_, bodyId, def);
     const std::vector<Vec2>& p = chain.points;
     const int n = static_cast<int>(p.size());
@@ -215,7 +214,7 @@ std::vector<ShapeId> World::createChain(BodyId bodyId, const ShapeDef& def, cons
 void World::destroyShape(ShapeId id) {
     const char* call = "World::destroyShape";
     Impl& w = *impl_;
-    w.requireNoQuery(call);
+    w.requireStructureChange(call);
     std::int32_t index = w.shapeIndex(call, id);
     std::int32_t bodyIndex = w.shapes[index].body;
     MassChange change{w.bodies[bodyIndex].type};
@@ -330,7 +329,7 @@ bool World::shapeHitEventsEnabled(ShapeId id) const {
 }
 void World::setShapeHitEventsEnabled(ShapeId id, bool enabled) {
     const char* call = "World::setShapeHitEventsEnabled";
-    impl_->requireNotInCallback(call);
+    impl_->requireChange(call);
     Shape& shape = impl_->shapes[impl_->shapeIndex(call, id)];
     if (shape.hitEvents != enabled) impl_->hitEventShapeCount += enabled ? 1 : -1;
     shape.hitEvents = enabled;
@@ -340,7 +339,7 @@ bool World::shapePreSolveEnabled(ShapeId id) const {
 }
 void World::setShapePreSolveEnabled(ShapeId id, bool enabled) {
     const char* call = "World::setShapePreSolveEnabled";
-    impl_->requireNotInCallback(call);
+    impl_->requireChange(call);
     Impl& w = *impl_;
     const std::int32_t index = w.shapeIndex(call, id);
     w.shapes[index].preSolve = enabled;
@@ -364,7 +363,7 @@ bool World::isShapeSensor(ShapeId id) const {
 void World::setShapeSensor(ShapeId id, bool sensor) {
     const char* call = "World::setShapeSensor";
     Impl& w = *impl_;
-    w.requireNoQuery(call);
+    w.requireStructureChange(call);
     const std::int32_t index = w.shapeIndex(call, id);
     Shape& shape = w.shapes[index];
     if (shape.sensor == sensor) return;
@@ -386,8 +385,8 @@ void World::setShapeSensor(ShapeId id, bool sensor) {
 }
 
 void World::setShapeFriction(ShapeId id, float friction) {
-    impl_->requireNotInCallback("World::setShapeFriction");
     const char* call = "World::setShapeFriction";
+    impl_->requireChange(call);
     Impl& w = *impl_;
     const std::int32_t index = w.shapeIndex(call, id);
     requireWithin(call, "friction", friction, kMaxFriction, "kMaxFriction");
@@ -398,8 +397,8 @@ void World::setShapeFriction(ShapeId id, float friction) {
 }
 
 void World::setShapeRestitution(ShapeId id, float restitution) {
-    impl_->requireNotInCallback("World::setShapeRestitution");
     const char* call = "World::setShapeRestitution";
+    impl_->requireChange(call);
     Impl& w = *impl_;
     const std::int32_t index = w.shapeIndex(call, id);
     requireInRange(call, "restitution", restitution, 0.0f, 1.0f);
@@ -413,8 +412,8 @@ float World::shapeDensity(ShapeId id) const {
 }
 
 void World::setShapeDensity(ShapeId id, float density) {
-    impl_->requireNotInCallback("World::setShapeDensity");
     const char* call = "World::setShapeDensity";
+    impl_->requireChange(call);
     Impl& w = *impl_;
     std::int32_t index = w.shapeIndex(call, id);
     requireDensity(call, "density", density);
@@ -441,12 +440,12 @@ std::uint64_t World::shapeUserData(ShapeId id) const {
 }
 
 void World::setShapeUserData(ShapeId id, std::uint64_t userData) {
-    impl_->requireNotInCallback("World::setShapeUserData");
+    impl_->requireChange("World::setShapeUserData");
     impl_->shapes[impl_->shapeIndex("World::setShapeUserData", id)].userData = userData;
 }
 
 void World::setShapeFilter(ShapeId id, const Filter& filter) {
-    impl_->requireNotInCallback("World::setShapeFilter");
+    impl_->requireChange("World::setShapeFilter");
     Impl& w = *impl_;
     std::int32_t index = w.shapeIndex("World::setShapeFilter", id);
     Shape& shape = w.shapes[index];

@@ -578,6 +578,7 @@ void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broad
 }  // namespace
 
 std::vector<std::uint8_t> World::snapshot() const {
+    impl_->requireRead("World::snapshot");
     const Impl& w = *impl_;
     SnapshotWriter payload;
     describeWorld(payload, w, w.id);
@@ -602,7 +603,7 @@ void World::restore(const std::vector<std::uint8_t>& bytes) {
 void World::restore(const std::uint8_t* data, std::size_t size) {
     const char* call = "World::restore";
     Impl& w = *impl_;
-    w.requireNoQuery(call);
+    w.requireStructureChange(call);
     if (data == nullptr && size != 0) fail(call, "data is null");
     if (size < sizeof kMagic || !std::equal(std::begin(kMagic), std::end(kMagic), data)) {
         fail(call, "these bytes are not a pivot2d snapshot (they do not start with \"PIVOT2DS\")");
