@@ -71,7 +71,7 @@ void World::Impl::recordHitAndMoveEvents() {
         // The fastest point the solver pushed on (an approach it did not resist is no hit).
         const Manifold& m = contacts[index].manifold;
         int fastest = -1;
-        float speed = hitEventThreshold;
+        float speed = settings.hitEventThreshold;
         for (int i = 0; i < m.pointCount; ++i) {
             if (m.points[i].approachSpeed > speed && m.points[i].normalImpulse > 0.0f) {
                 speed = m.points[i].approachSpeed;
@@ -80,10 +80,10 @@ void World::Impl::recordHitAndMoveEvents() {
         }
         if (fastest >= 0) record(index, fastest, speed);
     }
-    if (enableContinuous && continuousCollision == ContinuousCollision::Substeps) {
+    if (settings.enableContinuous && settings.continuousCollision == ContinuousCollision::Substeps) {
         // Impacts: the bodies met within the step; their contact may have touched before.
         for (const ContinuousSolver::Impact& impact : continuous.impacts()) {
-            if (impact.approachSpeed > hitEventThreshold) {
+            if (impact.approachSpeed > settings.hitEventThreshold) {
                 record(impact.contact, impact.point, impact.approachSpeed);
             }
         }
@@ -98,24 +98,24 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     if (adapt) pool.setActiveWorkers(workerChooser.next());
     StepContext context;
     // With one substep, h is dt itself (dt / 1 is exact): the pipeline of Box2D 2.4.1.
-    const float h = dt / static_cast<float>(substepCount);
+    const float h = dt / static_cast<float>(settings.substepCount);
     context.dt = h;
     context.invDt = 1.0f / h;
     context.dtRatio = std::min(previousInvDt * h, 1.0f);
-    context.substepCount = substepCount;
+    context.substepCount = settings.substepCount;
     context.stepDt = dt;
-    context.gravity = gravity;
+    context.gravity = settings.gravity;
     context.velocityIterations = velocityIterations;
     context.positionIterations = positionIterations;
-    context.warmStarting = warmStarting;
-    context.enableSleep = enableSleep;
-    context.contactCorrection = contactCorrection;
-    context.contactBiasFactor = contactBiasFactor;
-    context.contactHertz = contactHertz;
-    context.contactDampingRatio = contactDampingRatio;
-    context.contactPushSpeed = contactPushSpeed;
-    context.restitutionThreshold = restitutionThreshold;
-    context.jointLetGoSeparation = jointLetGoSeparation;
+    context.warmStarting = settings.warmStarting;
+    context.enableSleep = settings.enableSleep;
+    context.contactCorrection = settings.contactCorrection;
+    context.contactBiasFactor = settings.contactBiasFactor;
+    context.contactHertz = settings.contactHertz;
+    context.contactDampingRatio = settings.contactDampingRatio;
+    context.contactPushSpeed = settings.contactPushSpeed;
+    context.restitutionThreshold = settings.restitutionThreshold;
+    context.jointLetGoSeparation = settings.jointLetGoSeparation;
 
     letGoEvents.clear();
     edgeEvents.clear();
@@ -149,9 +149,9 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     // Only Substeps pairs the sweeps of shapes that moved past their margin: FastBodies
     // searches the trees itself, for the few bodies that moved far.
     const bool substepped =
-        enableContinuous && continuousCollision == ContinuousCollision::Substeps;
+        settings.enableContinuous && settings.continuousCollision == ContinuousCollision::Substeps;
     contactManager.afterSolve(islands.bodies, substepped);
-    if (enableContinuous && !substepped) {
+    if (settings.enableContinuous && !substepped) {
         stats.impactCount = fastBodies.solve(islands.bodies, bodies, shapes, contactManager);
     } else if (substepped) {
         stats.impactCount =

@@ -26,21 +26,7 @@ std::uint32_t nextWorldId() {
 
 World::Impl::Impl(const WorldDef& def)
     : id(nextWorldId()),
-      gravity(def.gravity),
-      defaultPositionSolver(def.defaultPositionSolver),
-      warmStarting(def.warmStarting),
-      contactCorrection(def.contactCorrection),
-      contactBiasFactor(def.contactBiasFactor),
-      contactHertz(def.contactHertz),
-      contactDampingRatio(def.contactDampingRatio),
-      contactPushSpeed(def.contactPushSpeed),
-      restitutionThreshold(def.restitutionThreshold),
-      enableSleep(def.enableSleep),
-      enableContinuous(def.enableContinuous),
-      continuousCollision(def.continuousCollision),
-      jointLetGoSeparation(def.jointLetGoSeparation),
-      substepCount(def.substepCount),
-      hitEventThreshold(def.hitEventThreshold),
+      settings(WorldSettings::of(def)),
       pool(def.workerCount, TaskSystem{def.enqueueTask, def.finishTask}),
       adaptWorkerCount(def.adaptWorkerCount),
       workerChooser(def.workerCount),
@@ -72,19 +58,8 @@ void World::Impl::wakeAll() {
 
 World::World(const WorldDef& def) {
     const char* call = "World::World";
-    requireWithin(call, "def.gravity", def.gravity, kMaxGravity, "kMaxGravity");
-    checkSolver(call, "def.defaultPositionSolver", def.defaultPositionSolver);
-    checkContactCorrection(call, "def.contactCorrection", def.contactCorrection);
-    requireInRange(call, "def.contactBiasFactor", def.contactBiasFactor, 0.0f, 1.0f);
-    requirePositive(call, "def.contactHertz", def.contactHertz);
-    requireNonNegative(call, "def.contactDampingRatio", def.contactDampingRatio);
-    requirePositive(call, "def.contactPushSpeed", def.contactPushSpeed);
-    requireNonNegative(call, "def.restitutionThreshold", def.restitutionThreshold);
-    requireInRange(call, "def.hitEventThreshold", def.hitEventThreshold, 0.0f, kMaxSpeed);
-    requireNonNegative(call, "def.jointLetGoSeparation", def.jointLetGoSeparation);
-    checkSubstepCount(call, "def.substepCount", def.substepCount);
+    checkSettings(call, "def.", WorldSettings::of(def));
     checkBroadPhaseBoxes(call, "def.broadPhaseBoxes", def.broadPhaseBoxes);
-    checkContinuousCollision(call, "def.continuousCollision", def.continuousCollision);
     if (def.workerCount < 1 || def.workerCount > 64) {
         fail(call,
              "def.workerCount must be in [1, 64] (got " + std::to_string(def.workerCount) + ")");
@@ -120,7 +95,7 @@ void World::step(float dt, int velocityIterations, int positionIterations) {
     };
     checkIterations("velocityIterations", velocityIterations);
     checkIterations("positionIterations", positionIterations);
-    const int substeps = impl_->substepCount;
+    const int substeps = impl_->settings.substepCount;
     if (dt / static_cast<float>(substeps) < kMinTimeStep) {
         fail(call, "dt / substepCount must be >= kMinTimeStep (" + formatFloat(kMinTimeStep) +
                        " s) (got dt " + formatFloat(dt) + " s in " + std::to_string(substeps) +
@@ -156,28 +131,28 @@ std::vector<BodyId> World::discardedBodies() const {
 }
 
 int World::substepCount() const {
-    return impl_->substepCount;
+    return impl_->settings.substepCount;
 }
 
 void World::setSubstepCount(int count) {
     impl_->requireChange("World::setSubstepCount");
     checkSubstepCount("World::setSubstepCount", "count", count);
-    impl_->substepCount = count;
+    impl_->settings.substepCount = count;
 }
 
 Vec2 World::gravity() const {
-    return impl_->gravity;
+    return impl_->settings.gravity;
 }
 
 void World::setGravity(Vec2 gravity) {
     impl_->requireChange("World::setGravity");
-    requireWithin("World::setGravity", "gravity", gravity, kMaxGravity, "kMaxGravity");
-    impl_->gravity = gravity;
+    checkGravity("World::setGravity", "gravity", gravity);
+    impl_->settings.gravity = gravity;
     impl_->wakeAll();
 }
 
 PositionSolver World::defaultPositionSolver() const {
-    return impl_->defaultPositionSolver;
+    return impl_->settings.defaultPositionSolver;
 }
 
 BroadPhaseBoxes World::broadPhaseBoxes() const {
@@ -185,54 +160,54 @@ BroadPhaseBoxes World::broadPhaseBoxes() const {
 }
 
 ContactCorrection World::contactCorrection() const {
-    return impl_->contactCorrection;
+    return impl_->settings.contactCorrection;
 }
 
 void World::setContactCorrection(ContactCorrection correction) {
     impl_->requireChange("World::setContactCorrection");
     checkContactCorrection("World::setContactCorrection", "correction", correction);
-    impl_->contactCorrection = correction;
+    impl_->settings.contactCorrection = correction;
 }
 
 void World::setSleepEnabled(bool enabled) {
     impl_->requireChange("World::setSleepEnabled");
-    impl_->enableSleep = enabled;
+    impl_->settings.enableSleep = enabled;
     if (!enabled) impl_->wakeAll();
 }
 
 bool World::isSleepEnabled() const {
-    return impl_->enableSleep;
+    return impl_->settings.enableSleep;
 }
 
 void World::setContinuousEnabled(bool enabled) {
     impl_->requireChange("World::setContinuousEnabled");
-    impl_->enableContinuous = enabled;
+    impl_->settings.enableContinuous = enabled;
 }
 
 bool World::isContinuousEnabled() const {
-    return impl_->enableContinuous;
+    return impl_->settings.enableContinuous;
 }
 
 void World::setContinuousCollision(ContinuousCollision policy) {
     const char* call = "World::setContinuousCollision";
     impl_->requireChange(call);
     checkContinuousCollision(call, "policy", policy);
-    impl_->continuousCollision = policy;
+    impl_->settings.continuousCollision = policy;
 }
 
 ContinuousCollision World::continuousCollision() const {
-    return impl_->continuousCollision;
+    return impl_->settings.continuousCollision;
 }
 
 float World::hitEventThreshold() const {
-    return impl_->hitEventThreshold;
+    return impl_->settings.hitEventThreshold;
 }
 
 void World::setHitEventThreshold(float speed) {
     const char* call = "World::setHitEventThreshold";
     impl_->requireChange(call);
-    requireInRange(call, "speed", speed, 0.0f, kMaxSpeed);
-    impl_->hitEventThreshold = speed;
+    checkHitEventThreshold(call, "speed", speed);
+    impl_->settings.hitEventThreshold = speed;
 }
 
 }  // namespace pivot

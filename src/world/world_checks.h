@@ -26,36 +26,11 @@ inline void checkBodyType(const char* call, const char* field, BodyType type) {
     }
 }
 
-inline void checkSubstepCount(const char* call, const char* field, int count) {
-    if (count < 1 || count > kMaxSubsteps) {
-        fail(call, std::string(field) + " must be in [1, kMaxSubsteps = " +
-                       std::to_string(kMaxSubsteps) + "] (got " + std::to_string(count) + ")");
-    }
-}
-
-inline void checkContactCorrection(const char* call, const char* field,
-                                   ContactCorrection correction) {
-    int value = static_cast<int>(correction);
-    if (value < 0 || value > static_cast<int>(ContactCorrection::Soft)) {
-        fail(call, std::string(field) + " is not a ContactCorrection (got " +
-                       std::to_string(value) + ")");
-    }
-}
-
 inline void checkBroadPhaseBoxes(const char* call, const char* field, BroadPhaseBoxes boxes) {
     int value = static_cast<int>(boxes);
     if (value < 0 || value > static_cast<int>(BroadPhaseBoxes::Compact)) {
         fail(call,
              std::string(field) + " is not a BroadPhaseBoxes (got " + std::to_string(value) + ")");
-    }
-}
-
-inline void checkContinuousCollision(const char* call, const char* field,
-                                     ContinuousCollision policy) {
-    int value = static_cast<int>(policy);
-    if (value < 0 || value > static_cast<int>(ContinuousCollision::FastBodies)) {
-        fail(call, std::string(field) + " is not a ContinuousCollision (got " +
-                       std::to_string(value) + ")");
     }
 }
 

@@ -140,31 +140,31 @@ std::uint64_t World::stateHash() const {
     impl_->requireRead("World::stateHash");
     const Impl& w = *impl_;
     StateHasher h;
-    h.add(w.gravity);
-    h.add(static_cast<std::int32_t>(w.defaultPositionSolver));
-    h.add(w.warmStarting);
-    h.add(static_cast<std::int32_t>(w.contactCorrection));
-    h.add(w.contactBiasFactor);
-    h.add(w.restitutionThreshold);
-    h.add(w.enableSleep);
-    h.add(w.enableContinuous);
-    h.add(w.jointLetGoSeparation);
+    h.add(w.settings.gravity);
+    h.add(static_cast<std::int32_t>(w.settings.defaultPositionSolver));
+    h.add(w.settings.warmStarting);
+    h.add(static_cast<std::int32_t>(w.settings.contactCorrection));
+    h.add(w.settings.contactBiasFactor);
+    h.add(w.settings.restitutionThreshold);
+    h.add(w.settings.enableSleep);
+    h.add(w.settings.enableContinuous);
+    h.add(w.settings.jointLetGoSeparation);
     // These, and the soft-step settings, are hashed only when they differ from their defaults,
     // so that hashes recorded before they existed still hold.
-    if (w.substepCount != 1) h.add(w.substepCount);
+    if (w.settings.substepCount != 1) h.add(w.settings.substepCount);
     if (w.contactManager.broadPhase().boxes() != BroadPhaseBoxes::Predictive) {
         h.add(static_cast<std::int32_t>(w.contactManager.broadPhase().boxes()));
     }
-    if (w.hitEventThreshold != kDefaultHitEventThreshold) h.add(w.hitEventThreshold);
-    if (w.continuousCollision != ContinuousCollision::Substeps) {
-        h.add(static_cast<std::int32_t>(w.continuousCollision));
+    if (w.settings.hitEventThreshold != kDefaultHitEventThreshold) h.add(w.settings.hitEventThreshold);
+    if (w.settings.continuousCollision != ContinuousCollision::Substeps) {
+        h.add(static_cast<std::int32_t>(w.settings.continuousCollision));
     }
-    if (w.contactHertz != kDefaultContactHertz ||
-        w.contactDampingRatio != kDefaultContactDampingRatio ||
-        w.contactPushSpeed != kDefaultContactPushSpeed) {
-        h.add(w.contactHertz);
-        h.add(w.contactDampingRatio);
-        h.add(w.contactPushSpeed);
+    if (w.settings.contactHertz != kDefaultContactHertz ||
+        w.settings.contactDampingRatio != kDefaultContactDampingRatio ||
+        w.settings.contactPushSpeed != kDefaultContactPushSpeed) {
+        h.add(w.settings.contactHertz);
+        h.add(w.settings.contactDampingRatio);
+        h.add(w.settings.contactPushSpeed);
     }
     h.add(w.previousInvDt);
     h.add(w.contactManager.hasNewShapes());

@@ -27,6 +27,7 @@
 #include "world/contact_manager.h"
 #include "world/continuous_solver.h"
 #include "world/world_access.h"
+#include "world/world_settings.h"
 #include "world/fast_body_sweeps.h"
 
 namespace pivot {
@@ -35,21 +36,7 @@ struct World::Impl {
     explicit Impl(const WorldDef& def);
 
     std::uint32_t id;  // stamped into every handle this world issues
-    Vec2 gravity;
-    PositionSolver defaultPositionSolver;
-    bool warmStarting;
-    ContactCorrection contactCorrection;
-    float contactBiasFactor;
-    float contactHertz;  // ContactCorrection::Soft's spring
-    float contactDampingRatio;
-    float contactPushSpeed;
-    float restitutionThreshold;
-    bool enableSleep;
-    bool enableContinuous;
-    ContinuousCollision continuousCollision;
-    float jointLetGoSeparation;  // m; 0: never
-    int substepCount;            // [1, kMaxSubsteps]
-    float hitEventThreshold;     // m/s
+    WorldSettings settings;  // one rule each (world_settings.h)
 
     // Who may call in while a step, a query's callback or debugDraw's drawing is under way:
     // every public call checks it first (world_access.h says the rule).

@@ -38,7 +38,7 @@ Joint jointFromDef(const Def& def, std::int32_t a, std::int32_t b) {
 // let-go separation.
 template <typename Def>
 PositionSolver checkSolverOf(const char* call, const Def& def, const World::Impl& w) {
-    const PositionSolver solver = def.positionSolver.value_or(w.defaultPositionSolver);
+    const PositionSolver solver = def.positionSolver.value_or(w.settings.defaultPositionSolver);
     checkSolver(call, "def.positionSolver", solver);
     return solver;
 }
@@ -360,7 +360,7 @@ JointId World::createJoint(const FrictionJointDef& def) {
     requireNonNegative(call, "def.maxForce", def.maxForce);
     requireNonNegative(call, "def.maxTorque", def.maxTorque);
     Joint joint = jointFromDef(def, a, b);
-    joint.solver = w.defaultPositionSolver;
+    joint.solver = w.settings.defaultPositionSolver;
     joint.localAnchorA = def.localAnchorA;
     joint.localAnchorB = def.localAnchorB;
     FrictionJoint& friction = joint.data.emplace<FrictionJoint>();
@@ -388,7 +388,7 @@ JointId World::createJoint(const MotorJointDef& def) {
     requireCoordinate(call, "def.linearOffset (body B's origin in A's frame)", linearOffset);
     requireMagnitude(call, "def.angularOffset (angleB - angleA)", angularOffset);
     Joint joint = jointFromDef(def, a, b);
-    joint.solver = w.defaultPositionSolver;
+    joint.solver = w.settings.defaultPositionSolver;
     MotorJoint& motor = joint.data.emplace<MotorJoint>();
     motor.linearOffset = linearOffset;
     motor.angularOffset = angularOffset;

@@ -154,7 +154,7 @@ void World::rearmJoint(JointId id) {
 
 float World::jointLetGoSeparation(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndex("World::jointLetGoSeparation", id)];
-    return j.letGoSeparation(impl_->jointLetGoSeparation);
+    return j.letGoSeparation(impl_->settings.jointLetGoSeparation);
 }
 
 void World::setJointLetGoSeparation(JointId id, std::optional<float> separation) {

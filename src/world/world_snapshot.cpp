@@ -353,21 +353,7 @@ void describeMouse(Io& io, M& m) {
 // Everything of the world but the contact manager's part, in one struct so that restore can
 // decode into it and check it before anything of the world changes.
 struct WorldState {
-    Vec2 gravity;
-    PositionSolver defaultPositionSolver = PositionSolver::FullNGS;
-    bool warmStarting = true;
-    ContactCorrection contactCorrection = ContactCorrection::NGS;
-    float contactBiasFactor = 0.0f;
-    float contactHertz = 0.0f;
-    float contactDampingRatio = 0.0f;
-    float contactPushSpeed = 0.0f;
-    float restitutionThreshold = 0.0f;
-    bool enableSleep = true;
-    bool enableContinuous = true;
-    ContinuousCollision continuousCollision = ContinuousCollision::Substeps;
-    float jointLetGoSeparation = 0.0f;
-    int substepCount = 1;
-    float hitEventThreshold = 0.0f;
+    WorldSettings settings;
     float previousInvDt = 0.0f;
     SlotPool<Body> bodies;
     SlotPool<Shape> shapes;
@@ -385,21 +371,21 @@ struct WorldState {
 // The settings, scalars, pools and the world's event lists; W is World::Impl or WorldState.
 template <typename Io, typename W>
 void describeWorld(Io& io, W& w, std::uint32_t worldId) {
-    io.value(w.gravity);
-    io.enumValue(w.defaultPositionSolver, kPositionSolverCount);
-    io.value(w.warmStarting);
-    io.enumValue(w.contactCorrection, kContactCorrections);
-    io.value(w.contactBiasFactor);
-    io.value(w.contactHertz);
-    io.value(w.contactDampingRatio);
-    io.value(w.contactPushSpeed);
-    io.value(w.restitutionThreshold);
-    io.value(w.enableSleep);
-    io.value(w.enableContinuous);
-    io.enumValue(w.continuousCollision, kContinuousCollisions);
-    io.value(w.jointLetGoSeparation);
-    io.value(w.substepCount);
-    io.value(w.hitEventThreshold);
+    io.value(w.settings.gravity);
+    io.enumValue(w.settings.defaultPositionSolver, kPositionSolverCount);
+    io.value(w.settings.warmStarting);
+    io.enumValue(w.settings.contactCorrection, kContactCorrections);
+    io.value(w.settings.contactBiasFactor);
+    io.value(w.settings.contactHertz);
+    io.value(w.settings.contactDampingRatio);
+    io.value(w.settings.contactPushSpeed);
+    io.value(w.settings.restitutionThreshold);
+    io.value(w.settings.enableSleep);
+    io.value(w.settings.enableContinuous);
+    io.enumValue(w.settings.continuousCollision, kContinuousCollisions);
+    io.value(w.settings.jointLetGoSeparation);
+    io.value(w.settings.substepCount);
+    io.value(w.settings.hitEventThreshold);
     io.value(w.previousInvDt);
     using Bodies = std::remove_reference_t<decltype(w.bodies)>;
     using Shapes = std::remove_reference_t<decltype(w.shapes)>;
@@ -483,7 +469,6 @@ void checkContactOrder(SnapshotReader& in, const WorldState& w, std::int32_t hea
 
 void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broadPhase,
                 std::uint64_t contactsMade) {
-    if (w.substepCount < 1 || w.substepCount > kMaxSubsteps) in.corrupt("the substep count");
     std::vector<std::uint8_t> shapeSeen(static_cast<std::size_t>(w.shapes.capacity()), 0);
     std::vector<std::uint8_t> proxySeen(broadPhase.indexBound(), 0);
     std::vector<std::uint8_t> jointEdges(2 * static_cast<std::size_t>(w.joints.capacity()), 0);
@@ -641,24 +626,18 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     describeWorld(in, state, w.id);
     ContactManager::State contactState = ContactManager::loadState(in, w.id);
     if (!in.atEnd()) in.corrupt("bytes are left over after the last field");
+    // Each setting by the rule its setter keeps, so that the world never reports a value its
+    // setter would refuse (world_settings.h).
+    checkSettings(call, "the snapshot's ", state.settings);
+    // 1/h of the last step: 0 before the first step, else within the time step's limits.
+    if (state.previousInvDt != 0.0f &&
+        !(state.previousInvDt >= 1.0f / kMaxTimeStep && state.previousInvDt <= 1.0f / kMinTimeStep)) {
+        in.corrupt("the last step's 1/dt is " + formatFloat(state.previousInvDt));
+    }
     checkLinks(in, state, contactState.broadPhase, contactState.contactsMade);
 
     // Checked: take it. Nothing below can fail.
-    w.gravity = state.gravity;
-    w.defaultPositionSolver = state.defaultPositionSolver;
-    w.warmStarting = state.warmStarting;
-    w.contactCorrection = state.contactCorrection;
-    w.contactBiasFactor = state.contactBiasFactor;
-    w.contactHertz = state.contactHertz;
-    w.contactDampingRatio = state.contactDampingRatio;
-    w.contactPushSpeed = state.contactPushSpeed;
-    w.restitutionThreshold = state.restitutionThreshold;
-    w.enableSleep = state.enableSleep;
-    w.enableContinuous = state.enableContinuous;
-    w.continuousCollision = state.continuousCollision;
-    w.jointLetGoSeparation = state.jointLetGoSeparation;
-    w.substepCount = state.substepCount;
-    w.hitEventThreshold = state.hitEventThreshold;
+    w.settings = state.settings;
     w.previousInvDt = state.previousInvDt;
     w.bodies = std::move(state.bodies);
     w.shapes = std::move(state.shapes);
