@@ -11,21 +11,21 @@
 
 namespace pivot {
 
-namespace {
 // Ids 1 to 2^32 - 1, each once per process (0 marks a null handle): a repeated id would let a
 // handle kept from a destroyed world name an object of a new one, so the counter never wraps.
-std::uint32_t nextWorldId() {
+std::uint32_t newWorldId(const char* call) {
     static std::atomic<std::uint64_t> counter{0};
     const std::uint64_t id = ++counter;
     if (id > 0xFFFFFFFFull) {
-        fail("World::World", "this process has made 2^32 - 1 worlds, every id a handle can carry");
+        fail(call, "this process has used 2^32 - 1 world ids, every id a handle can carry "
+                   "(each world takes one, and one more for each snapshot of another world it "
+                   "restores)");
     }
     return static_cast<std::uint32_t>(id);
 }
-}  // namespace
 
 World::Impl::Impl(const WorldDef& def)
-    : id(nextWorldId()),
+    : id(newWorldId("World::World")),
       settings(WorldSettings::of(def)),
       pool(def.workerCount, TaskSystem{def.enqueueTask, def.finishTask}),
       adaptWorkerCount(def.adaptWorkerCount),

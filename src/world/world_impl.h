@@ -35,7 +35,9 @@ namespace pivot {
 struct World::Impl {
     explicit Impl(const WorldDef& def);
 
-    std::uint32_t id;  // stamped into every handle this world issues
+    // Stamped into every handle this world issues; a new one after restoring another world's
+    // snapshot (World::restore), so that no handle from before names a restored object.
+    std::uint32_t id;
     WorldSettings settings;  // one rule each (world_settings.h)
 
     // Who may call in while a step, a query's callback or debugDraw's drawing is under way:
@@ -124,6 +126,9 @@ struct World::Impl {
         wakeUp(bodies[joint.bodyB()], islandRevision);
     }
 };
+
+/// A world id never used before in this process (pivot::Error from `call` once they run out).
+std::uint32_t newWorldId(const char* call);
 
 /// Checks a handle against a pool; returns the slot index or throws pivot::Error.
 template <typename Tag, typename T>

@@ -26,7 +26,7 @@ namespace pivot {
 namespace {
 
 constexpr std::uint8_t kMagic[8] = {'P', 'I', 'V', 'O', 'T', '2', 'D', 'S'};
-constexpr std::uint32_t kFormatVersion = 4;
+constexpr std::uint32_t kFormatVersion = 5;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8;
 constexpr std::size_t kChecksumSize = 8;
 constexpr int kBodyTypes = 3;
@@ -562,12 +562,24 @@ void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broad
 
 }  // namespace
 
+namespace {
+
+// The state: everything of the world that decides what later calls do and report, as the
+// snapshot's payload holds it after its lineage. stateHash hashes exactly this.
+void describeState(SnapshotWriter& out, const World::Impl& w) {
+    describeWorld(out, w, w.id);
+    w.contactManager.saveState(out);
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> World::snapshot() const {
     impl_->requireRead("World::snapshot");
     const Impl& w = *impl_;
     SnapshotWriter payload;
-    describeWorld(payload, w, w.id);
-    w.contactManager.saveState(payload);
+    // The lineage: the world whose ids the snapshot's ids are (World::restore).
+    payload.value(w.id);
+    describeState(payload, w);
     const std::vector<std::uint8_t>& body = payload.bytes();
 
     SnapshotWriter out;
@@ -579,6 +591,15 @@ std::vector<std::uint8_t> World::snapshot() const {
     bytes.insert(bytes.end(), body.begin(), body.end());
     out.value(snapshotChecksum(body.data(), body.size()));
     return std::move(bytes);
+}
+
+// The bits of the state a snapshot holds (its lineage aside): two worlds that hash alike take
+// the same calls to the same results, ids included (docs/snapshots.md, "What the hash covers").
+std::uint64_t World::stateHash() const {
+    impl_->requireRead("World::stateHash");
+    SnapshotWriter state;
+    describeState(state, *impl_);
+    return snapshotChecksum(state.bytes().data(), state.bytes().size());
 }
 
 void World::restore(const std::vector<std::uint8_t>& bytes) {
@@ -622,9 +643,14 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     }
 
     SnapshotReader in(call, payload, length);
+    // A snapshot of this world's own lineage brings its ids back (a rollback). Any other takes
+    // the world to a new id, so that no id this world issued before can name what it restores.
+    std::uint32_t lineage = 0;
+    in.value(lineage);
+    const std::uint32_t stamp = lineage == w.id ? w.id : newWorldId(call);
     WorldState state;
-    describeWorld(in, state, w.id);
-    ContactManager::State contactState = ContactManager::loadState(in, w.id);
+    describeWorld(in, state, stamp);
+    ContactManager::State contactState = ContactManager::loadState(in, stamp);
     if (!in.atEnd()) in.corrupt("bytes are left over after the last field");
     // Each setting by the rule its setter keeps, so that the world never reports a value its
     // setter would refuse (world_settings.h).
@@ -637,6 +663,7 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     checkLinks(in, state, contactState.broadPhase, contactState.contactsMade);
 
     // Checked: take it. Nothing below can fail.
+    w.id = stamp;
     w.settings = state.settings;
     w.previousInvDt = state.previousInvDt;
     w.bodies = std::move(state.bodies);
