@@ -467,6 +467,64 @@ void checkContactOrder(SnapshotReader& in, const WorldState& w, std::int32_t hea
     }
 }
 
+// A gear is made from two live revolute or prismatic joints, and copies what it needs of them
+// (gear_joint.h): its bodies are their moving bodies (B), its sides' bases their bodies A, its
+// anchors, axes and reference angles theirs. The island search and the solver rely on it: a
+// base that is not its joint's body A may be a body of another island.
+void checkGear(SnapshotReader& in, const WorldState& w, std::int32_t index, const Joint& joint,
+               const GearJoint& gear) {
+    if (gear.side1.joint == gear.side2.joint) in.corrupt("a gear joint couples a joint to itself");
+    const std::int32_t movers[2] = {joint.bodyA(), joint.bodyB()};
+    const Vec2 moverAnchors[2] = {joint.localAnchorA, joint.localAnchorB};
+    int k = 0;
+    for (const GearSide* side : {&gear.side1, &gear.side2}) {
+        const std::int32_t m = movers[k];
+        const Vec2 moverAnchor = moverAnchors[k++];
+        if (!w.joints.isAlive(side->joint) || side->joint == index) {
+            in.corrupt("a gear joint names a joint it cannot be built on");
+        }
+        const Joint& on = w.joints[side->joint];
+        const JointType expected = side->prismatic ? JointType::Prismatic : JointType::Revolute;
+        if (on.type() != expected) in.corrupt("a gear joint names a joint it cannot be built on");
+        if (side->base != on.bodyA() || m != on.bodyB()) {
+            in.corrupt("a gear joint's bodies are not those of the joints it couples");
+        }
+        const bool axisKept =
+            !side->prismatic || side->localAxis == std::get<PrismaticJoint>(on.data).localAxisA;
+        if (side->localAnchorBase != on.localAnchorA || side->localAnchorMover != on.localAnchorB ||
+            moverAnchor != on.localAnchorB || side->referenceAngle != on.referenceAngle ||
+            !axisKept) {
+            in.corrupt("a gear joint's copy of a joint it couples differs from the joint");
+        }
+    }
+}
+
+// A contact is one the contact manager could have made (ContactManager::addPair): its shapes
+// in the narrow phase's order (segments first, circles last; two segments never), marked a
+// sensor contact exactly when a shape is a sensor, and, unless it waits to be filtered again,
+// between bodies that may collide (a solid contact needs a dynamic body, a sensor a non-static
+// one).
+void checkContactPair(SnapshotReader& in, const WorldState& w, const Contact& contact) {
+    const Shape& a = w.shapes[contact.shapeA];
+    const Shape& b = w.shapes[contact.shapeB];
+    auto order = [](ShapeType type) {
+        return isSegmentLike(type) ? 0 : type == ShapeType::Circle ? 2 : 1;
+    };
+    if (order(a.type) > order(b.type) || (isSegmentLike(a.type) && isSegmentLike(b.type))) {
+        in.corrupt("a contact's shapes are of types no contact is made of, or out of order");
+    }
+    if (contact.sensor != (a.sensor || b.sensor) || (a.sensor && b.sensor)) {
+        in.corrupt("a contact's sensor flag does not match its shapes");
+    }
+    if (contact.needsFiltering) return;
+    const BodyType typeA = w.bodies[a.body].type;
+    const BodyType typeB = w.bodies[b.body].type;
+    const bool mayTouch = contact.sensor
+                              ? typeA != BodyType::Static || typeB != BodyType::Static
+                              : typeA == BodyType::Dynamic || typeB == BodyType::Dynamic;
+    if (!mayTouch) in.corrupt("a contact joins bodies that cannot collide");
+}
+
 void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broadPhase,
                 std::uint64_t contactsMade) {
     std::vector<std::uint8_t> shapeSeen(static_cast<std::size_t>(w.shapes.capacity()), 0);
@@ -526,16 +584,9 @@ void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broad
             in.corrupt("a joint is not on its bodies' lists");
         }
         if (const auto* gear = std::get_if<GearJoint>(&joint.data)) {
-            for (const GearSide* side : {&gear->side1, &gear->side2}) {
-                const bool live = w.joints.isAlive(side->joint) && side->joint != j;
-                const JointType expected =
-                    side->prismatic ? JointType::Prismatic : JointType::Revolute;
-                if (!live || w.joints[side->joint].type() != expected ||
-                    !w.bodies.isAlive(side->base)) {
-                    in.corrupt("a gear joint names a joint it cannot be built on");
-                }
-                ++gearsOn[static_cast<std::size_t>(side->joint)];
-            }
+            checkGear(in, w, j, joint, *gear);
+            ++gearsOn[static_cast<std::size_t>(gear->side1.joint)];
+            ++gearsOn[static_cast<std::size_t>(gear->side2.joint)];
         }
     });
     w.joints.forEach([&](std::int32_t j, const Joint& joint) {
@@ -554,6 +605,7 @@ void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broad
             !pairs.insert(PairMap::key(contact.shapeA, contact.shapeB)).second) {
             in.corrupt("a contact's shapes do not match its bodies");
         }
+        checkContactPair(in, w, contact);
     });
     w.mouseJoints.forEach([&](std::int32_t m, const MouseJoint&) {
         if (!mouseSeen[static_cast<std::size_t>(m)]) in.corrupt("a mouse joint is on no list");

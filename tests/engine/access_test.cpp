@@ -17,7 +17,7 @@
 #include "world_calls.h"
 
 using namespace pivot;
-using namespace pivot::testing;
+using namespace pivot::test_support;
 
 namespace {
 

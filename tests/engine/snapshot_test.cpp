@@ -9,6 +9,7 @@
 
 #include "pivot/pivot.h"
 #include "scenes/scene.h"
+#include "snapshot_bytes.h"
 
 using namespace pivot;
 using namespace pivot::scenes;
@@ -16,26 +17,9 @@ using namespace pivot::scenes;
 namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
-constexpr std::size_t kHeader = 20;  // magic, version, payload size (docs/snapshots.md)
-constexpr std::size_t kLineage = 4;  // the payload's first field: the world whose ids they are
-
-// The state a snapshot holds: its bytes without the header, the lineage and the checksum. A
-// world restored from another's snapshot writes the same state under its own lineage.
-std::vector<std::uint8_t> stateOf(const std::vector<std::uint8_t>& bytes) {
-    return {bytes.begin() + kHeader + kLineage, bytes.end() - 8};
-}
-
-// The checksum docs/snapshots.md specifies: 64-bit FNV-1a of the payload, little endian at the
-// end. Re-sealing a changed payload gets it past the checksum to the reader's own checks.
-void reseal(std::vector<std::uint8_t>& bytes) {
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    for (std::size_t i = kHeader; i < bytes.size() - 8; ++i) {
-        h ^= bytes[i];
-        h *= 0x100000001b3ull;
-    }
-    for (int i = 0; i < 8; ++i)
-        bytes[bytes.size() - 8 + i] = static_cast<std::uint8_t>(h >> (8 * i));
-}
+constexpr std::size_t kHeader = test_support::kSnapshotHeader;
+using test_support::reseal;
+using test_support::stateOf;
 
 std::string errorOf(World& world, const std::vector<std::uint8_t>& bytes) {
     try {

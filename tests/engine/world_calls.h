@@ -11,7 +11,7 @@
 
 #include "pivot/pivot.h"
 
-namespace pivot::testing {
+namespace pivot::test_support {
 
 /// The ids of one of everything, in a world built by buildEverything.
 struct Everything {
@@ -329,4 +329,4 @@ inline const std::vector<ChangingCall>& everyChangingCall() {
     return calls;
 }
 
-}  // namespace pivot::testing
+}  // namespace pivot::test_support
