@@ -155,6 +155,12 @@ constexpr float kMaxMagnitude = 1.0e10f;
 constexpr float kMaxSpeed = 1.0e6f;
 constexpr float kMaxAngularSpeed = 1.0e6f;
 
+/// How far from unit length a rotation (Rot, a Transform's q) the API takes may be: |s^2 + c^2 -
+/// 1| at most this. Rot(angle) and every rotation the engine reports are well within it; a
+/// rotation outside it would stretch or collapse the shape it turns, and is refused rather than
+/// normalised, so that what the call computes is what it was given.
+constexpr float kMaxRotationError = 1.0e-4f;
+
 /// The largest friction coefficient (real materials stay below 2). The friction impulse is up
 /// to this times the normal impulse, and the larger limit of kMaxMagnitude let it overflow.
 constexpr float kMaxFriction = 100.0f;

@@ -34,6 +34,10 @@ struct RayHit {
     float fraction = 0.0f;  ///< point = origin + fraction * translation, in [0, 1]
 };
 
+/// The functions on one shape take its transform `xf` as World's queries do: a position within
+/// kMaxCoordinate and a unit rotation (within kMaxRotationError; build it with Rot(angle)), or
+/// they throw pivot::Error.
+///
 /// A ray against one circle at transform `xf`. No hit when the ray misses, starts inside, or
 /// has a zero translation.
 std::optional<RayHit> rayCast(const Circle& circle, const Transform& xf, Vec2 origin,

@@ -455,7 +455,8 @@ public:
     // or mouse joint), changes a body's type, teleports a body (setBodyTransform), switches a
     // shape's sensor flag, restores or steps throws pivot::Error from inside a callback, and
     // changes nothing. Bad arguments (not finite, a box with lower > upper, points outside
-    // kMaxCoordinate) throw pivot::Error.
+    // kMaxCoordinate, a Transform whose rotation is not a unit one within kMaxRotationError)
+    // throw pivot::Error.
     /// Every shape the filter sees that the ray from `origin` through origin + translation
     /// enters, in the tree's order; the callback steers the cast (pivot::RayCallback). A zero
     /// translation hits nothing.
@@ -751,7 +752,8 @@ public:
     /// would change it throws pivot::Error from inside them.
     void debugDraw(DebugDraw& draw, const DebugDrawOptions& options = {}) const;
     /// Draws one body's shapes placed at `xf` rather than where the body is: at a pose between
-    /// two steps (render interpolation), or, with the identity, in the body's own frame.
+    /// two steps (render interpolation), or, with the identity, in the body's own frame. The
+    /// rotation must be a unit one (within kMaxRotationError): normalise an interpolated one.
     void debugDrawBody(BodyId id, const Transform& xf, DebugDraw& draw) const;
 
     // --- snapshots (docs/snapshots.md) ---------------------------------------------------------

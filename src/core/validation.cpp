@@ -121,6 +121,25 @@ void requireInRange(const char* call, const char* field, float value, float lo, 
     }
 }
 
+void requireRotation(const char* call, const char* field, Rot value) {
+    const std::string name(field);
+    requireFinite(call, (name + ".s").c_str(), value.s);
+    requireFinite(call, (name + ".c").c_str(), value.c);
+    // In double: s and c up to 3.4e38 square beyond float range.
+    const double error = double(value.s) * value.s + double(value.c) * value.c - 1.0;
+    if (!(std::fabs(error) <= kMaxRotationError)) {
+        fail(call, name + " must be a unit rotation, s^2 + c^2 within kMaxRotationError (" +
+                       formatFloat(kMaxRotationError) + ") of 1: build it with Rot(angle) (got s " +
+                       formatFloat(value.s) + ", c " + formatFloat(value.c) + ")");
+    }
+}
+
+void requireTransform(const char* call, const char* field, const Transform& value) {
+    const std::string name(field);
+    requireCoordinate(call, (name + ".p").c_str(), value.p);
+    requireRotation(call, (name + ".q").c_str(), value.q);
+}
+
 void requireDensity(const char* call, const char* field, float value) {
     requireFinite(call, field, value);
     if (value < 0.0f) {

@@ -37,6 +37,10 @@ void requireWithin(const char* call, const char* field, Vec2 value, float limit,
                    const char* limitName);
 /// Finite and within [lo, hi].
 void requireInRange(const char* call, const char* field, float value, float lo, float hi);
+/// A unit rotation: finite, with |s^2 + c^2 - 1| <= kMaxRotationError.
+void requireRotation(const char* call, const char* field, Rot value);
+/// A position within kMaxCoordinate (requireCoordinate) and a unit rotation (requireRotation).
+void requireTransform(const char* call, const char* field, const Transform& value);
 /// 0, or within [kMinDensity, kMaxDensity].
 void requireDensity(const char* call, const char* field, float value);
 

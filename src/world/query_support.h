@@ -18,9 +18,7 @@ inline bool sees(const QueryFilter& filter, const Shape& shape) {
 }
 
 inline void checkTransform(const char* call, const Transform& xf) {
-    requireCoordinate(call, "xf.p", xf.p);
-    requireFinite(call, "xf.q.c", xf.q.c);
-    requireFinite(call, "xf.q.s", xf.q.s);
+    requireTransform(call, "xf", xf);
 }
 
 inline void checkRay(const char* call, Vec2 origin, Vec2 translation) {

@@ -125,9 +125,10 @@ void World::debugDrawBody(BodyId id, const Transform& xf, DebugDraw& draw) const
     const char* call = "World::debugDrawBody";
     const Impl& w = *impl_;
     const Body& body = w.bodies[w.bodyIndex(call, id)];
+    // A pose between two steps (render interpolation) may be drawn beyond kMaxCoordinate, but
+    // its rotation must be one: an interpolated one normalised.
     requireFinite(call, "xf.p", xf.p);
-    requireFinite(call, "xf.q.s", xf.q.s);
-    requireFinite(call, "xf.q.c", xf.q.c);
+    requireRotation(call, "xf.q", xf.q);
     const WorldAccess::DrawScope drawing(w.access, call);
     for (std::int32_t s = body.shapeList; s != -1; s = w.shapes[s].next) {
         drawShape(draw, w.shapes[s], xf, shapeColor(body, w.shapes[s]));

@@ -672,3 +672,56 @@ TEST(WorldQueries, ShapeCastsAgreeWithOverlapQueriesAlongThePath) {
     }
     EXPECT_GT(hits, 50);  // about 30% of the casts hit something
 }
+
+// Every rotation the API takes is a unit one, within kMaxRotationError: a huge one made a shape
+// cast's hit point NaN, and Rot{0, 0} collapsed the shape to a point.
+TEST(WorldQueries, RotationsMustBeUnitOnes) {
+    auto rot = [](float s, float c) {
+        Rot q;
+        q.s = s;
+        q.c = c;
+        return q;
+    };
+    World world;
+    const BodyId ground = world.createBody(BodyDef{});
+    world.createShape(ground, ShapeDef{}, Polygon::box(5.0f, 0.5f));
+    const Capsule capsule{{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f};
+    const Circle circle{{0.0f, 0.0f}, 0.5f};
+    const Polygon box = Polygon::box(0.5f, 0.5f);
+    const std::uint64_t before = world.stateHash();
+    // Just past the tolerance either way: 1 + 2e-4 and 1 - 2e-4 squared.
+    const float over = std::sqrt(1.0f + 2.0f * kMaxRotationError);
+    const float under = std::sqrt(1.0f - 2.0f * kMaxRotationError);
+    for (const Rot bad : {rot(1e20f, 0.0f), rot(0.0f, 0.0f), rot(0.0f, 2.0f), rot(0.0f, over),
+                          rot(under, 0.0f), rot(std::nanf(""), 1.0f)}) {
+        const Transform xf{{0.0f, 3.0f}, bad};
+        EXPECT_THROW(world.castShapeClosest(capsule, xf, {0.0f, -5.0f}), Error);
+        EXPECT_THROW(
+            world.castShape(circle, xf, {0.0f, -5.0f}, {}, [](const RayHit&) { return 1.0f; }),
+            Error);
+        EXPECT_THROW(world.queryShape(box, xf, {}, [](ShapeId) { return true; }), Error);
+        EXPECT_THROW(rayCast(circle, xf, {-3.0f, 3.0f}, {6.0f, 0.0f}), Error);
+        EXPECT_THROW(rayCast(box, xf, {-3.0f, 3.0f}, {6.0f, 0.0f}), Error);
+        EXPECT_THROW(testPoint(capsule, xf, {0.0f, 3.0f}), Error);
+        struct NoDraw : DebugDraw {
+            void drawPolygon(const Vec2*, int, DebugColor) override {}
+            void drawSolidPolygon(const Vec2*, int, float, DebugColor) override {}
+            void drawSolidCircle(Vec2, float, Vec2, DebugColor) override {}
+            void drawSolidCapsule(Vec2, Vec2, float, DebugColor) override {}
+            void drawSegment(Vec2, Vec2, DebugColor) override {}
+            void drawPoint(Vec2, float, DebugColor) override {}
+        } draw;
+        EXPECT_THROW(world.debugDrawBody(ground, xf, draw), Error);
+    }
+    EXPECT_EQ(world.stateHash(), before);
+    // Rot(angle), one just inside the tolerance, and a body's own transform all pass.
+    const float inside = std::sqrt(1.0f + 0.5f * kMaxRotationError);
+    for (const Rot good :
+         {Rot(0.3f), Rot(-2.0f), rot(0.0f, inside), world.bodyTransform(ground).q}) {
+        const Transform xf{{0.0f, 3.0f}, good};
+        const std::optional<RayHit> hit = world.castShapeClosest(capsule, xf, {0.0f, -5.0f});
+        ASSERT_TRUE(hit.has_value());
+        EXPECT_TRUE(std::isfinite(hit->point.x) && std::isfinite(hit->point.y));
+        EXPECT_NEAR(hit->point.y, 0.5f, 0.01f);
+    }
+}
