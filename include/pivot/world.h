@@ -510,9 +510,13 @@ public:
     // enqueueTask): none of it may change the world ("callbacks" above).
     /// Every touching contact, measured at the current poses.
     std::vector<ContactData> contacts() const;
-    /// Contacts that started / stopped touching during the last step. Destroying a shape (or
-    /// its body) that touched another adds its end event at once, until the next step clears
-    /// the list: the event's shape ids are then already stale.
+    /// Contacts that started / stopped touching during the last step: the change the step made.
+    /// Its begin events, then its end events, applied to the pairs touching before it give the
+    /// pairs touching after it; a pair is in both lists only if it began and then ended within
+    /// the step (one that parted and touched again, when continuous collision met it again
+    /// within the step, is in neither). Destroying a shape (or its body) that touched another
+    /// adds its end event at once, until the next step clears the list: the event's shape ids
+    /// are then already stale.
     std::vector<ContactEvent> contactBeginEvents() const;
     std::vector<ContactEvent> contactEndEvents() const;
     /// Sensor overlaps that began and ended during the last step (ShapeDef::isSensor), in

@@ -48,6 +48,39 @@ void ContactManager::reportTouch(const Contact& contact, bool began) {
         .push_back({shapeId(contact.shapeA), shapeId(contact.shapeB)});
 }
 
+// Continuous collision measures contacts again within the step, after the step's contact update:
+// one the update saw stop touching may touch again. Its end event and this begin event would
+// then both be reported although it touched before and after the step, and the two lists do not
+// say in which order they happened. The pair's end event is taken back instead, with the begin
+// just recorded, so that a step's events are the change it made: its begin events and then its
+// end events, applied to the contacts touching before it, give those touching after it. (One
+// that begins and then ends within a step is in both lists, in that order.)
+void ContactManager::takeBackEndOfThisStep(const Contact& contact) {
+    const ShapeId a = shapeId(contact.shapeA);
+    const ShapeId b = shapeId(contact.shapeB);
+    auto same = [&](ShapeId x, ShapeId y) { return x == a && y == b; };
+    if (contact.sensor) {
+        const bool aIsSensor = shapes_[contact.shapeA].sensor;
+        const ShapeId sensor = aIsSensor ? a : b;
+        const ShapeId visitor = aIsSensor ? b : a;
+        for (auto e = sensorEndEvents_.rbegin(); e != sensorEndEvents_.rend(); ++e) {
+            if (e->sensor == sensor && e->visitor == visitor) {
+                sensorEndEvents_.erase(std::next(e).base());
+                sensorBeginEvents_.pop_back();
+                return;
+            }
+        }
+        return;
+    }
+    for (auto e = endEvents_.rbegin(); e != endEvents_.rend(); ++e) {
+        if (same(e->shapeA, e->shapeB)) {
+            endEvents_.erase(std::next(e).base());
+            beginEvents_.pop_back();
+            return;
+        }
+    }
+}
+
 ContactData ContactManager::contactData(const Contact& c) const {
     const Shape& a = shapes_[c.shapeA];
     const Shape& b = shapes_[c.shapeB];
@@ -253,7 +286,10 @@ bool ContactManager::updateContactNow(std::int32_t index) {
     const bool touching =
         updateContact(contact, shapes_[contact.shapeA], bodies_[contact.bodyA()].xf,
                       shapes_[contact.shapeB], bodies_[contact.bodyB()].xf);
-    if (touching != wasTouching) reportTouch(contact, touching);
+    if (touching != wasTouching) {
+        reportTouch(contact, touching);
+        if (touching) takeBackEndOfThisStep(contact);
+    }
     const bool wasEnabled = contact.enabled;
     contact.enabled = true;
     if (wantsPreSolve(contact)) contact.enabled = askPreSolve(contact);

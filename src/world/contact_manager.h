@@ -167,6 +167,9 @@ private:
     bool mayPair(const Shape& a, const Shape& b) const;
     // A touching contact's begin or end, as a contact event or a sensor event.
     void reportTouch(const Contact& contact, bool began);
+    // After reportTouch of a begin within the step (continuous collision): if the pair's end
+    // event was recorded earlier in the step, both events are taken back.
+    void takeBackEndOfThisStep(const Contact& contact);
     // Whether the pre-solve callback is to be asked about the contact: set, and the contact is a
     // touching non-sensor one with a shape that asks for it.
     bool wantsPreSolve(const Contact& contact) const;
