@@ -113,6 +113,16 @@ public:
     /// destroyed one).
     void save(SnapshotWriter& out) const;
     void load(SnapshotReader& in);
+    /// Takes a loaded broad phase's state into this one's storage, keeping this one's capacity
+    /// and scratch (DynamicTree::adopt).
+    void adopt(const BroadPhase& loaded) {
+        boxes_ = loaded.boxes_;
+        moving_.adopt(loaded.moving_);
+        static_.adopt(loaded.static_);
+        moveBuffer_ = loaded.moveBuffer_;
+        buffered_ = loaded.buffered_;
+        sweeps_.clear();
+    }
 
     /// Calls addPair(userDataA, userDataB) once for every pair of distinct proxies whose fat
     /// boxes overlap and at least one of which was buffered since the last call, and for every

@@ -178,6 +178,16 @@ public:
     /// would). load refuses (pivot::Error) a tree isValid would not accept.
     void save(SnapshotWriter& out) const;
     void load(SnapshotReader& in);
+    /// Takes a loaded tree's nodes into this one's storage, keeping this one's capacity and
+    /// scratch: a rollback restores into warm buffers.
+    void adopt(const DynamicTree& loaded) {
+        nodes_ = loaded.nodes_;
+        changed_ = loaded.changed_;
+        root_ = loaded.root_;
+        freeList_ = loaded.freeList_;
+        proxyCount_ = loaded.proxyCount_;
+        margin_ = loaded.margin_;
+    }
 
 private:
     static constexpr std::int32_t kNullNode = -1;

@@ -9,6 +9,7 @@
 // only live entries, so it allocates only when the number of live pairs reaches a new maximum.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -58,6 +59,12 @@ public:
         }
         keys_[hole] = kEmpty;
         --size_;
+    }
+
+    /// Empties the map, keeping its table.
+    void clear() {
+        std::fill(keys_.begin(), keys_.end(), kEmpty);
+        size_ = 0;
     }
 
     std::size_t size() const { return size_; }

@@ -54,9 +54,11 @@ public:
     /// Steps, process-wide, in which nothing the search reads had changed (whatever the mode).
     static std::uint64_t stepsWithIslandsUnchanged();
 
-private:
-    /// Sizes the island set for the world's pool capacities, when they grew.
+    /// Sizes the island set for the world's pool capacities, when they grew (each solve does;
+    /// World::restore too, for the snapshot's pools).
     void reserveStepBuffers(const SolverStorage& storage);
+
+private:
     /// Sizes the workspaces for this step's island totals, when they passed the last record.
     void reserveWorkspaces();
 

@@ -195,15 +195,7 @@ void ContactManager::updateContacts() {
         kUpdated = 8,
         kWasDisabled = 16  // updated, and the last pre-solve answer had disabled it
     };
-    resizeBuffer(contactOutcomes_, static_cast<std::size_t>(contacts_.capacity()));
-    // A contact begins or ends once in the narrow phase and seldom more than once in continuous
-    // collision's impacts: room for twice every one, so that a step with more events than any
-    // before does not allocate (only a contact pool that has doubled does).
-    const auto contactSlots = static_cast<std::size_t>(contacts_.capacity());
-    reserveBuffer(beginEvents_, 2 * contactSlots);
-    reserveBuffer(endEvents_, 2 * contactSlots);
-    reserveBuffer(sensorBeginEvents_, contactSlots);
-    reserveBuffer(sensorEndEvents_, contactSlots);
+    reserveForPools();
     pool_.parallelFor(contacts_.capacity(), 1024, [&](int begin, int end, int) {
         for (std::int32_t index = begin; index < end; ++index) {
             std::uint8_t& outcome = contactOutcomes_[index];
@@ -517,6 +509,18 @@ void ContactManager::refilterBody(std::int32_t bodyIndex) {
     newShapes_ = true;
 }
 
+void ContactManager::reserveForPools() {
+    resizeBuffer(contactOutcomes_, static_cast<std::size_t>(contacts_.capacity()));
+    // A contact begins or ends once in the narrow phase and seldom more than once in continuous
+    // collision's impacts: room for twice every one, so that a step with more events than any
+    // before does not allocate (only a contact pool that has doubled does).
+    const auto contactSlots = static_cast<std::size_t>(contacts_.capacity());
+    reserveBuffer(beginEvents_, 2 * contactSlots);
+    reserveBuffer(endEvents_, 2 * contactSlots);
+    reserveBuffer(sensorBeginEvents_, contactSlots);
+    reserveBuffer(sensorEndEvents_, contactSlots);
+}
+
 void ContactManager::saveState(SnapshotWriter& out) const {
     broadPhase_.save(out);
     out.value(newShapes_);
@@ -555,15 +559,17 @@ ContactManager::State ContactManager::loadState(SnapshotReader& in, std::uint32_
     return state;
 }
 
-void ContactManager::adoptState(State&& state) {
-    broadPhase_ = std::move(state.broadPhase);
+void ContactManager::adoptState(const State& state) {
+    // Copied into this manager's storage, which keeps its capacity, rather than moved: a
+    // rollback's steps then find their buffers as warm as before (reserveForPools).
+    broadPhase_.adopt(state.broadPhase);
     newShapes_ = state.newShapes;
     contactsMade_ = state.contactsMade;
-    beginEvents_ = std::move(state.beginEvents);
-    endEvents_ = std::move(state.endEvents);
-    sensorBeginEvents_ = std::move(state.sensorBeginEvents);
-    sensorEndEvents_ = std::move(state.sensorEndEvents);
-    pairs_ = PairMap{};
+    beginEvents_ = state.beginEvents;
+    endEvents_ = state.endEvents;
+    sensorBeginEvents_ = state.sensorBeginEvents;
+    sensorEndEvents_ = state.sensorEndEvents;
+    pairs_.clear();
     touchingCount_ = 0;
     contacts_.forEach([&](std::int32_t index, const Contact& c) {
         pairs_.insert(PairMap::key(c.shapeA, c.shapeB), index);
@@ -576,6 +582,7 @@ void ContactManager::adoptState(State&& state) {
         countCategories(s.filter, +1);
         if (movesAndStopsTunnelling(bodies_[s.body])) ++movingStopperShapes_;
     });
+    reserveForPools();
 }
 
 }  // namespace pivot

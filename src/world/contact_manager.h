@@ -138,7 +138,10 @@ public:
     static State loadState(SnapshotReader& in, std::uint32_t worldId);
     /// Takes the state and rebuilds what follows from the pools (checked already): the pair map
     /// and the category counts.
-    void adoptState(State&& state);
+    void adoptState(const State& state);
+    /// Reserves the buffers a step sizes by the contact pool, for its present capacity: update
+    /// does, and restore, so that the steps after a restore allocate nothing.
+    void reserveForPools();
 
     /// The first exception a callback threw since the last call, or null.
     std::exception_ptr takeCallbackError() {

@@ -42,21 +42,27 @@ void World::Impl::recordBodyEvents(const IslandSet::Range& island) {
     }
 }
 
+// A warm step does not allocate: room for every contact and body there is.
+void World::Impl::reserveEventBuffers() {
+    reserveBuffer(hitEvents, static_cast<std::size_t>(contacts.capacity()));
+    reserveBuffer(moveEvents, static_cast<std::size_t>(bodies.capacity()));
+    if (hitEventShapeCount > 0) {
+        resizeBuffer(hitMarks, static_cast<std::size_t>(contacts.capacity()));
+    }
+}
+
 // After the whole step (continuous collision moves bodies and re-collides contacts): every
 // non-static body simulated, in island order; the hits of contacts of hit-event shapes (at most
 // one a contact), in island order, then impact order.
 void World::Impl::recordHitAndMoveEvents() {
     const IslandSet& islands = stepper.islands();
-    // A warm step does not allocate: room for every contact and body there is.
-    reserveBuffer(hitEvents, static_cast<std::size_t>(contacts.capacity()));
-    reserveBuffer(moveEvents, static_cast<std::size_t>(bodies.capacity()));
+    reserveEventBuffers();
     for (std::int32_t index : islands.bodies) {
         const Body& body = bodies[index];
         if (body.type == BodyType::Static) continue;
         moveEvents.push_back({bodyId(index), body.xf, !body.awake});
     }
     if (hitEventShapeCount == 0) return;
-    resizeBuffer(hitMarks, static_cast<std::size_t>(contacts.capacity()));
     auto record = [this](std::int32_t index, int point, float speed) {
         const Contact& c = contacts[index];
         if (!c.touching || !c.enabled || hitMarks[static_cast<std::size_t>(index)]) return;

@@ -85,6 +85,8 @@ struct World::Impl {
     void recordLetGoJoints(const IslandSet::Range& island);
     void recordBodyEvents(const IslandSet::Range& island);
     void recordHitAndMoveEvents();
+    /// Reserves the event lists and marks a step fills, for the pools' present capacities.
+    void reserveEventBuffers();
 
     // Handle checks: the slot index of a live object this world issued, or pivot::Error.
     std::int32_t bodyIndex(const char* call, BodyId id) const;

@@ -718,25 +718,32 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     w.id = stamp;
     w.settings = state.settings;
     w.previousInvDt = state.previousInvDt;
-    w.bodies = std::move(state.bodies);
-    w.shapes = std::move(state.shapes);
-    w.joints = std::move(state.joints);
-    w.contacts = std::move(state.contacts);
+    // Copied into the world's storage, which keeps its capacity, rather than moved: the steps
+    // of a rollback (restore, step, restore, ...) find every buffer as warm as before.
+    w.bodies = state.bodies;
+    w.shapes = state.shapes;
+    w.joints = state.joints;
+    w.contacts = state.contacts;
     // Not in the snapshot: they follow from the shapes, checked above.
     w.contacts.forEach([&](std::int32_t, Contact& c) {
         c.radiusA = collisionRadius(w.shapes[c.shapeA]);
         c.radiusB = collisionRadius(w.shapes[c.shapeB]);
     });
-    w.mouseJoints = std::move(state.mouseJoints);
-    w.letGoEvents = std::move(state.letGoEvents);
-    w.edgeEvents = std::move(state.edgeEvents);
-    w.discarded = std::move(state.discarded);
-    w.hitEvents = std::move(state.hitEvents);
-    w.moveEvents = std::move(state.moveEvents);
+    w.mouseJoints = state.mouseJoints;
+    w.letGoEvents = state.letGoEvents;
+    w.edgeEvents = state.edgeEvents;
+    w.discarded = state.discarded;
+    w.hitEvents = state.hitEvents;
+    w.moveEvents = state.moveEvents;
     w.stats = state.stats;
     w.hitEventShapeCount = 0;
     w.shapes.forEach([&](std::int32_t, const Shape& s) { w.hitEventShapeCount += s.hitEvents; });
-    w.contactManager.adoptState(std::move(contactState));
+    w.contactManager.adoptState(contactState);
+    // What a step sizes by the pools, sized now for the snapshot's pools.
+    w.reserveEventBuffers();
+    w.stepper.reserveStepBuffers(SolverStorage{w.bodies, w.shapes, w.joints, w.contacts,
+                                               w.contactManager.census(), w.mouseJoints,
+                                               w.islandRevision});
     w.islandRevision.bump();
 }
 

@@ -64,6 +64,33 @@ TEST_P(EveryScene, StepsWithoutAllocatingOnceWarmUnderFastBodies) {
     EXPECT_EQ(warmStepAllocations(options, std::get<0>(GetParam())), 0) << std::get<0>(GetParam());
 }
 
+// Rollback: a game restores a snapshot and re-simulates a few steps, over and over. Restore
+// copies the snapshot into the world's own storage, keeping its capacity, and reserves what a
+// step sizes by the pools: from the first restore into a warm world on, the steps allocate
+// nothing (restore itself does: it decodes the snapshot). The steps after the first restore
+// allocated 7 times when restore moved freshly decoded buffers into the world.
+TEST_P(EveryScene, StepsWithoutAllocatingAfterARestore) {
+    SceneOptions options;
+    options.workerCount = std::get<1>(GetParam());
+    const std::string name = std::get<0>(GetParam());
+    Scene scene = buildScene(*findScene(name), options);
+    World& world = *scene.world;
+    const int warmUp = std::max(600, scene.disturbanceEndStep + 420);
+    for (int i = 0; i < warmUp; ++i) {
+        if (scene.beforeStep) scene.beforeStep(scene, i);
+        world.step(1.0f / 60.0f);
+    }
+    const std::vector<std::uint8_t> saved = world.snapshot();
+    long long allocations = 0;
+    for (int round = 0; round < 6; ++round) {
+        world.restore(saved);
+        heap::Counter counter;
+        for (int i = 0; i < 4; ++i) world.step(1.0f / 60.0f);
+        allocations += counter.allocations();
+    }
+    EXPECT_EQ(allocations, 0) << name;
+}
+
 namespace {
 std::vector<std::string> sceneNames() {
     std::vector<std::string> names;
