@@ -505,11 +505,16 @@ std::int32_t DynamicTree::splitParts(const BuildTask& task, AABB (&halves)[2]) {
 template <typename Io, typename Tree>
 void DynamicTree::describe(Io& io, Tree& tree) {
     // A node is 41 bytes of snapshot: a corrupt count cannot ask for more than there are.
+    // Charged with its mark and the broad phase's mark (BroadPhase::load), and the world's copy.
+    constexpr std::size_t kNodeCost = 2 * (sizeof(Node) + 2);
     if constexpr (Io::kReading) {
-        tree.nodes_.assign(io.count(41), Node{});
+        const std::size_t n = io.count(41);
+        io.charge(n * kNodeCost);
+        tree.nodes_.assign(n, Node{});
         tree.changed_.assign(tree.nodes_.size(), 0);
     } else {
         io.count(tree.nodes_.size());
+        io.charge(tree.nodes_.size() * kNodeCost);
     }
     for (auto& node : tree.nodes_) {
         // A free node's box is whatever its last use left: any bits.

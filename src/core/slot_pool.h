@@ -85,13 +85,17 @@ public:
 
     /// Snapshots (core/snapshot_io.h): every slot's generation and liveness, the live items
     /// (through `item(io, T&)`), and the free list in its order, so a restored pool hands out the
-    /// same slots and generations. Reading checks the free list names dead slots once each.
+    /// same slots and generations. Reading checks the free list names dead slots once each. Each
+    /// slot is charged its own size and `bytesPerSlot` more (what restore sizes by the pool).
     template <typename Io, typename Pool, typename Item>
-    static void describe(Io& io, Pool& pool, Item&& item) {
+    static void describe(Io& io, Pool& pool, Item&& item, std::size_t bytesPerSlot) {
         if constexpr (Io::kReading) {
-            pool.slots_.assign(io.count(sizeof(Generation) + 1), Slot{});
+            const std::size_t n = io.count(sizeof(Generation) + 1);
+            io.charge(n * (sizeof(Slot) + bytesPerSlot));
+            pool.slots_.assign(n, Slot{});
         } else {
             io.count(pool.slots_.size());
+            io.charge(pool.slots_.size() * (sizeof(Slot) + bytesPerSlot));
         }
         for (auto& slot : pool.slots_) {
             io.value(slot.generation);

@@ -9,6 +9,7 @@
 // objects, lists that must be consistent) is checked by the part that knows it.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -20,6 +21,14 @@
 #include "pivot/math.h"
 
 namespace pivot {
+
+/// The most memory restoring a snapshot may take, in bytes per byte of the snapshot (besides a
+/// fixed few kilobytes). The writer and the reader count the same costs (charge: the objects a
+/// count of them makes the reader allocate, with what restore sizes by them), since both run
+/// the same descriptions; the reader refuses a snapshot whose counts ask for more, before it
+/// allocates, and the writer pads a snapshot whose counts would (a pool of many destroyed
+/// objects: each costs its slot in memory and 5 bytes in the snapshot).
+constexpr std::size_t kSnapshotMemoryPerByte = 16;
 
 /// Writes a snapshot's payload.
 class SnapshotWriter {
@@ -73,13 +82,27 @@ public:
     template <typename T, typename Each>
     void sequence(const std::vector<T>& items, Each&& each) {
         count(items.size());
+        charge(2 * items.size() * sizeof(T));  // decoded, and copied into the world
         for (const T& item : items) each(item);
+    }
+    /// The memory restoring what was just written will take (kSnapshotMemoryPerByte).
+    void charge(std::size_t bytes) { charged_ += bytes; }
+    std::size_t charged() const { return charged_; }
+    /// The payload's last field: a count and that many zero bytes, as many as it takes for the
+    /// payload to be worth its charge (none, unless pools hold many destroyed objects).
+    void padding() {
+        const std::size_t needed = (charged_ + kSnapshotMemoryPerByte - 1) / kSnapshotMemoryPerByte;
+        const std::size_t size = bytes_.size() + 4;
+        const std::size_t pad = needed > size ? needed - size : 0;
+        count(pad);
+        bytes_.insert(bytes_.end(), pad, std::uint8_t{0});
     }
 
     std::vector<std::uint8_t>& bytes() { return bytes_; }
 
 private:
     std::vector<std::uint8_t> bytes_;
+    std::size_t charged_ = 0;
 };
 
 /// Reads a payload back; every problem throws pivot::Error from `call`.
@@ -88,7 +111,7 @@ public:
     static constexpr bool kReading = true;
 
     SnapshotReader(const char* call, const std::uint8_t* data, std::size_t size)
-        : call_(call), data_(data), size_(size) {}
+        : call_(call), data_(data), size_(size), budget_(kSnapshotMemoryPerByte * size) {}
 
     template <typename T>
     void value(T& v) {
@@ -150,10 +173,31 @@ public:
     }
     template <typename T, typename Each>
     void sequence(std::vector<T>& items, Each&& each) {
-        items.assign(count(), T{});
+        const std::size_t n = count();
+        charge(2 * n * sizeof(T));  // decoded, and copied into the world
+        items.assign(n, T{});
         for (T& item : items) each(item);
     }
+    /// Counts memory the snapshot makes the reader allocate against its budget
+    /// (kSnapshotMemoryPerByte times its size): a snapshot asking for more is refused, before
+    /// anything is allocated for it.
+    void charge(std::size_t bytes) {
+        if (bytes > budget_ - charged_) {
+            corrupt("its counts ask for more memory than " +
+                    std::to_string(kSnapshotMemoryPerByte) +
+                    " bytes per byte of the snapshot, and no snapshot pivot2d writes does");
+        }
+        charged_ += bytes;
+    }
 
+    /// SnapshotWriter::padding's field: its zero bytes, skipped.
+    void padding() {
+        const std::size_t n = count();
+        const std::uint8_t* bytes = take(n);
+        if (std::any_of(bytes, bytes + n, [](std::uint8_t b) { return b != 0; })) {
+            corrupt("its padding is not zeros");
+        }
+    }
     bool atEnd() const { return offset_ == size_; }
     [[noreturn]] void corrupt(const std::string& what) const {
         fail(call_, "the snapshot is corrupted: " + what + " (at byte " + std::to_string(offset_) +
@@ -177,6 +221,8 @@ private:
     const std::uint8_t* data_;
     std::size_t size_;
     std::size_t offset_ = 0;
+    std::size_t budget_;
+    std::size_t charged_ = 0;
 };
 
 /// A handle (pivot/id.h) in a snapshot: its index and generation. A restored one is stamped with

@@ -37,6 +37,17 @@ constexpr int kContactCorrections = 3;
 constexpr int kManifoldTypes = 3;
 constexpr int kContinuousCollisions = 2;
 
+// What restore sizes by each pool's slots, per slot, for kSnapshotMemoryPerByte's count: the
+// event lists, marks and island arrays a step fills (World::Impl::reserveEventBuffers,
+// ContactManager::reserveForPools, Stepper::reserveStepBuffers, whose arrays are rounded up to a
+// power of two), and the reader's checks. Measured by Snapshot.RestoreTakesAtMostItsBoundInMemory
+// (tests/alloc), which holds restore to the bound.
+constexpr std::size_t kSizedByBodies = 384;
+constexpr std::size_t kSizedByShapes = 32;
+constexpr std::size_t kSizedByJoints = 192;
+constexpr std::size_t kSizedByContacts = 448;
+constexpr std::size_t kSizedByMouseJoints = 64;
+
 // --- field lists: B is the type or the const type (writing) ----------------------------------
 
 template <typename Io, typename B>
@@ -392,11 +403,17 @@ void describeWorld(Io& io, W& w, std::uint32_t worldId) {
     using Joints = std::remove_reference_t<decltype(w.joints)>;
     using Contacts = std::remove_reference_t<decltype(w.contacts)>;
     using Mice = std::remove_reference_t<decltype(w.mouseJoints)>;
-    Bodies::describe(io, w.bodies, [](Io& o, auto& b) { describeBody(o, b); });
-    Shapes::describe(io, w.shapes, [](Io& o, auto& s) { describeShape(o, s); });
-    Joints::describe(io, w.joints, [](Io& o, auto& j) { describeJoint(o, j); });
-    Contacts::describe(io, w.contacts, [](Io& o, auto& c) { describeContact(o, c); });
-    Mice::describe(io, w.mouseJoints, [](Io& o, auto& m) { describeMouse(o, m); });
+    // Each slot costs restore the decoded slot, the world's copy and what is sized by the pools.
+    Bodies::describe(io, w.bodies, [](Io& o, auto& b) { describeBody(o, b); },
+                     sizeof(typename Bodies::Slot) + kSizedByBodies);
+    Shapes::describe(io, w.shapes, [](Io& o, auto& s) { describeShape(o, s); },
+                     sizeof(typename Shapes::Slot) + kSizedByShapes);
+    Joints::describe(io, w.joints, [](Io& o, auto& j) { describeJoint(o, j); },
+                     sizeof(typename Joints::Slot) + kSizedByJoints);
+    Contacts::describe(io, w.contacts, [](Io& o, auto& c) { describeContact(o, c); },
+                       sizeof(typename Contacts::Slot) + kSizedByContacts);
+    Mice::describe(io, w.mouseJoints, [](Io& o, auto& m) { describeMouse(o, m); },
+                   sizeof(typename Mice::Slot) + kSizedByMouseJoints);
 
     io.sequence(w.letGoEvents, [&](auto& e) {
         snapshotHandle(io, e.joint, worldId);
@@ -632,6 +649,7 @@ std::vector<std::uint8_t> World::snapshot() const {
     // The lineage: the world whose ids the snapshot's ids are (World::restore).
     payload.value(w.id);
     describeState(payload, w);
+    payload.padding();
     const std::vector<std::uint8_t>& body = payload.bytes();
 
     SnapshotWriter out;
@@ -703,6 +721,7 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     WorldState state;
     describeWorld(in, state, stamp);
     ContactManager::State contactState = ContactManager::loadState(in, stamp);
+    in.padding();
     if (!in.atEnd()) in.corrupt("bytes are left over after the last field");
     // Each setting by the rule its setter keeps, so that the world never reports a value its
     // setter would refuse (world_settings.h).

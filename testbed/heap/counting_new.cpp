@@ -10,6 +10,7 @@ namespace {
 // Constant-initialised, so they count from before any static constructor runs.
 std::atomic<long long> gLiveBytes{0};
 std::atomic<long long> gAllocations{0};
+std::atomic<long long> gAllocatedBytes{0};
 }  // namespace
 
 namespace pivot::heap {
@@ -22,12 +23,17 @@ long long allocations() {
     return gAllocations.load();
 }
 
+long long allocatedBytes() {
+    return gAllocatedBytes.load();
+}
+
 }  // namespace pivot::heap
 
 void* operator new(std::size_t size) {
     void* p = std::malloc(size == 0 ? 1 : size);
     if (!p) throw std::bad_alloc();
     gLiveBytes += static_cast<long long>(malloc_usable_size(p));
+    gAllocatedBytes += static_cast<long long>(size);
     ++gAllocations;
     return p;
 }
