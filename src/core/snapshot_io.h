@@ -30,15 +30,20 @@ namespace pivot {
 /// objects: each costs its slot in memory and 5 bytes in the snapshot).
 constexpr std::size_t kSnapshotMemoryPerByte = 16;
 
-/// Writes a snapshot's payload.
+/// Writes a snapshot's payload, or (Sink::Hash) only hashes the bytes it would write: World::
+/// stateHash, which the tests and the fuzz take before and after every refused call, so it
+/// stores nothing and folds 8 bytes at a time.
 class SnapshotWriter {
 public:
     static constexpr bool kReading = false;
+    enum class Sink { Bytes, Hash };
+
+    explicit SnapshotWriter(Sink sink = Sink::Bytes) : sink_(sink) {}
 
     template <typename T>
     void value(const T& v) {
         if constexpr (std::is_same_v<T, bool>) {
-            bytes_.push_back(v ? 1 : 0);
+            put(v ? 1u : 0u, 1);
         } else if constexpr (std::is_enum_v<T>) {
             value(static_cast<std::int32_t>(v));
         } else if constexpr (std::is_same_v<T, float>) {
@@ -47,11 +52,9 @@ public:
             value(bits);
         } else {
             static_assert(std::is_integral_v<T>, "a snapshot field is a number, bool or enum");
+            static_assert(sizeof(T) <= 8);
             using U = std::make_unsigned_t<T>;
-            const U u = static_cast<U>(v);
-            for (std::size_t i = 0; i < sizeof(T); ++i) {
-                bytes_.push_back(static_cast<std::uint8_t>(u >> (8 * i)));
-            }
+            put(static_cast<std::uint64_t>(static_cast<U>(v)), sizeof(T));
         }
     }
     void value(const Vec2& v) {
@@ -85,6 +88,10 @@ public:
         charge(2 * items.size() * sizeof(T));  // decoded, and copied into the world
         for (const T& item : items) each(item);
     }
+    /// Bytes as they are (the header's magic, a payload inside its frame).
+    void raw(const std::uint8_t* data, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) put(data[i], 1);
+    }
     /// The memory restoring what was just written will take (kSnapshotMemoryPerByte).
     void charge(std::size_t bytes) { charged_ += bytes; }
     std::size_t charged() const { return charged_; }
@@ -92,17 +99,74 @@ public:
     /// payload to be worth its charge (none, unless pools hold many destroyed objects).
     void padding() {
         const std::size_t needed = (charged_ + kSnapshotMemoryPerByte - 1) / kSnapshotMemoryPerByte;
-        const std::size_t size = bytes_.size() + 4;
+        const std::size_t size = size_ + 4;
         const std::size_t pad = needed > size ? needed - size : 0;
         count(pad);
-        bytes_.insert(bytes_.end(), pad, std::uint8_t{0});
+        for (std::size_t i = 0; i < pad; ++i) put(0, 1);
     }
 
-    std::vector<std::uint8_t>& bytes() { return bytes_; }
+    /// Sink::Bytes: what was written.
+    std::size_t size() const { return size_; }
+    const std::uint8_t* data() const { return bytes_.data(); }
+    std::vector<std::uint8_t> bytes() const {
+        return {bytes_.begin(), bytes_.begin() + static_cast<std::ptrdiff_t>(size_)};
+    }
+    /// Sink::Bytes: what was written, moved out (the writer is left empty).
+    std::vector<std::uint8_t> take() {
+        bytes_.resize(size_);
+        size_ = 0;
+        return std::move(bytes_);
+    }
+    /// Sink::Hash: the hash of every byte written, 8 at a time as little-endian words (each
+    /// product of FNV-1a's constants folded down, so that a change in any bit reaches every
+    /// later one), then the last few one at a time.
+    std::uint64_t hash() const {
+        std::uint64_t h = hash_;
+        for (std::size_t i = 0; i < pendingBytes_; ++i) {
+            h = (h ^ ((pending_ >> (8 * i)) & 0xFF)) * 0x100000001b3ull;
+        }
+        return h;
+    }
+    /// Empties the writer for another payload, keeping its buffer.
+    void clear() {
+        size_ = 0;
+        charged_ = 0;
+        hash_ = kHashStart;
+        pending_ = 0;
+        pendingBytes_ = 0;
+    }
 
 private:
-    std::vector<std::uint8_t> bytes_;
+    static constexpr std::uint64_t kHashStart = 0xcbf29ce484222325ull;
+
+    /// The low `n` bytes of `little`, lowest first.
+    void put(std::uint64_t little, std::size_t n) {
+        if (sink_ == Sink::Hash) {
+            for (std::size_t i = 0; i < n; ++i) {
+                pending_ |= ((little >> (8 * i)) & 0xFF) << (8 * pendingBytes_);
+                if (++pendingBytes_ == 8) {
+                    hash_ = (hash_ ^ pending_) * 0x100000001b3ull;
+                    hash_ ^= hash_ >> 29;
+                    pending_ = 0;
+                    pendingBytes_ = 0;
+                }
+            }
+            return;
+        }
+        if (bytes_.size() - size_ < n) bytes_.resize(std::max<std::size_t>(2 * bytes_.size(), 256));
+        for (std::size_t i = 0; i < n; ++i) {
+            bytes_[size_ + i] = static_cast<std::uint8_t>(little >> (8 * i));
+        }
+        size_ += n;
+    }
+
+    Sink sink_;
+    std::vector<std::uint8_t> bytes_;  // Sink::Bytes: the first size_ are written
+    std::size_t size_ = 0;
     std::size_t charged_ = 0;
+    std::uint64_t hash_ = kHashStart;  // Sink::Hash
+    std::uint64_t pending_ = 0;        // the bytes since the last whole word
+    std::size_t pendingBytes_ = 0;
 };
 
 /// Reads a payload back; every problem throws pivot::Error from `call`.

@@ -650,26 +650,23 @@ std::vector<std::uint8_t> World::snapshot() const {
     payload.value(w.id);
     describeState(payload, w);
     payload.padding();
-    const std::vector<std::uint8_t>& body = payload.bytes();
 
     SnapshotWriter out;
-    std::vector<std::uint8_t>& bytes = out.bytes();
-    bytes.reserve(kHeaderSize + body.size() + kChecksumSize);
-    bytes.insert(bytes.end(), std::begin(kMagic), std::end(kMagic));
+    out.raw(kMagic, sizeof kMagic);
     out.value(kFormatVersion);
-    out.value(static_cast<std::uint64_t>(body.size()));
-    bytes.insert(bytes.end(), body.begin(), body.end());
-    out.value(snapshotChecksum(body.data(), body.size()));
-    return std::move(bytes);
+    out.value(static_cast<std::uint64_t>(payload.size()));
+    out.raw(payload.data(), payload.size());
+    out.value(snapshotChecksum(payload.data(), payload.size()));
+    return out.take();
 }
 
-// The bits of the state a snapshot holds (its lineage aside): two worlds that hash alike take
-// the same calls to the same results, ids included (docs/snapshots.md, "What the hash covers").
+// A hash of the state a snapshot holds (its lineage aside): two worlds that hash alike take the
+// same calls to the same results, ids included (docs/snapshots.md, "What the hash covers").
 std::uint64_t World::stateHash() const {
     impl_->requireRead("World::stateHash");
-    SnapshotWriter state;
+    SnapshotWriter state(SnapshotWriter::Sink::Hash);
     describeState(state, *impl_);
-    return snapshotChecksum(state.bytes().data(), state.bytes().size());
+    return state.hash();
 }
 
 void World::restore(const std::vector<std::uint8_t>& bytes) {

@@ -1,6 +1,7 @@
 #include "fuzz_driver.h"
 
 #include "journal.h"
+#include "reentry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -516,6 +517,7 @@ private:
             {2, &Driver::freeFunctions},
             {1, &Driver::destroyWhileIterating},
             {1, &Driver::snapshots},
+            {1, &Driver::reentry},
         };
         int total = 0;
         for (const Entry& e : kOperations) total += e.weight;
@@ -2372,6 +2374,28 @@ private:
         if (!draw.finite && options_.requireFinite) failure("debugDraw drew a non-finite point");
     }
 
+    // A rotation: Rot(angle) as a rule; in hostile draws now and then one that is not a unit
+    // one (scaled a little or a lot, zero, not finite), which every call must refuse.
+    Arg<Rot> rotation() {
+        Rot q(random_.uniform(-4.0f, 4.0f));
+        if (hostile_ > 0.0f && random_.chance(0.3f)) {
+            switch (random_.below(4)) {
+                case 0: q.s = values_->garbage(); break;
+                case 1: q.s = q.c = 0.0f; break;
+                case 2: {
+                    const float scale = 1.0f + random_.uniform(-1e-3f, 1e-3f);
+                    q.s *= scale;
+                    q.c *= scale;
+                    break;
+                }
+                default: q.c = 1e20f; break;
+            }
+        }
+        auto plain = [](float v) { return std::isfinite(v) && std::fpclassify(v) != FP_SUBNORMAL; };
+        const double error = double(q.s) * q.s + double(q.c) * q.c - 1.0;
+        return {q, !plain(q.s) || !plain(q.c) || !(std::fabs(error) <= kMaxRotationError)};
+    }
+
     void worldQueries() {
         if (random_.chance(0.1f)) {
             trace("debugDraw");
@@ -2464,11 +2488,13 @@ private:
                 });
                 {
                     Arg<float> radius = values_->radius();
+                    const Arg<Rot> q = rotation();
+                    const Capsule capsule{{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.2f};
                     attempt(
                         "World::castShapeClosest",
-                        verdict(origin.bad || radius.bad || translation.bad), [&] {
-                            if (auto hit = w.castShapeClosest(Circle{{0.0f, 0.0f}, radius.value},
-                                                              Transform{origin.value, Rot(0.5f)},
+                        verdict(origin.bad || q.bad || translation.bad), [&] {
+                            if (auto hit = w.castShapeClosest(capsule,
+                                                              Transform{origin.value, q.value},
                                                               translation.value, filter)) {
                                 if (!isFinite(hit->point) || !(hit->fraction >= 0.0f) ||
                                     !(hit->fraction <= 1.0f)) {
@@ -2476,9 +2502,9 @@ private:
                                 }
                             }
                         });
-                    attempt("World::queryShape", verdict(origin.bad || radius.bad), [&] {
+                    attempt("World::queryShape", verdict(origin.bad || radius.bad || q.bad), [&] {
                         w.queryShape(Circle{{0.0f, 0.0f}, radius.value},
-                                     Transform{origin.value, Rot(0.5f)}, filter,
+                                     Transform{origin.value, q.value}, filter,
                                      [&](ShapeId found) {
                                          if (!w.isValid(found)) {
                                              failure("queryShape reported a dead shape");
@@ -2585,6 +2611,44 @@ private:
         }
     }
 
+    // Changing calls made where the world must refuse them (world_access.h): from a step's
+    // task callbacks and another thread during it (a crowd on a meddling task system), and
+    // structural ones from a query's callback on this world, where a change of state works.
+    void reentry() {
+        if (random_.chance(0.3f)) {
+            if (!crowd_) crowd_ = std::make_unique<MeddlingCrowd>();
+            trace("a step of the meddling crowd");
+            std::vector<std::string> failures;
+            const int refused = crowd_->step(random_, random_.between(1, 3), failures);
+            report_.refusedDuringSteps += refused;
+            for (const std::string& f : failures) failure(f);
+            return;
+        }
+        World& w = *world_;
+        Targets targets;
+        targets.body = pickBody().value;
+        targets.shape = pickShape().value;
+        targets.joint = pickJoint().value;
+        if (random_.chance(0.2f)) targets.snapshot = w.snapshot();
+        trace("structural calls inside queryAABB");
+        attempt("World::queryAABB", Verdict::Valid, [&] {
+            w.queryAABB({{-40.0f, -40.0f}, {40.0f, 40.0f}}, {}, [&](ShapeId found) {
+                if (!w.isValid(found)) failure("queryAABB reported a dead shape");
+                try {
+                    makeRandomChange(w, random_, targets, true);
+                    failure("a structural change inside a query's callback was not refused");
+                } catch (const Error&) {
+                    ++report_.refusedInQueries;
+                }
+                // A change of state is fine there: the shape's own friction, set again.
+                if (random_.chance(0.3f)) {
+                    journal_.setShapeFriction(found, w.shapeFriction(found));
+                }
+                return random_.chance(0.8f);
+            });
+        });
+    }
+
     // The lists the API returns are copies: destroying while iterating them must be safe.
     // Snapshots: a world restored from this one's snapshot (on 1 or 2 workers, with the same
     // callbacks) hashes the same and steps the same; damaged bytes, re-sealed past the checksum
@@ -2594,6 +2658,11 @@ private:
         WorldDef def;
         def.workerCount = random_.chance(0.5f) ? 1 : 2;
         World copy(def);
+        // Ids the copy issued before the restore, one stale and one live: neither may name
+        // anything after it (another world's snapshot takes the copy to a new id).
+        const BodyId stale = copy.createBody(BodyDef{});
+        copy.destroyBody(stale);
+        const BodyId live = copy.createBody(BodyDef{});
         trace("snapshot round trip (" + std::to_string(bytes.size()) + " bytes)");
         try {
             copy.restore(bytes);
@@ -2603,6 +2672,16 @@ private:
         }
         ++report_.snapshots;
         if (copy.stateHash() != world_->stateHash()) failure("a restored world hashes differently");
+        ++report_.staleIdsChecked;
+        if (copy.isValid(stale) || copy.isValid(live)) {
+            failure("an id a world issued before restoring another's snapshot names a body");
+        }
+        for (BodyId id : world_->bodyIds()) {
+            if (copy.isValid(id)) failure("an id of the snapshotted world is valid in its copy");
+        }
+        for (BodyId id : copy.bodyIds()) {
+            if (!copy.isValid(id)) failure("a restored world lists an id it refuses");
+        }
         installFuzzCallbacks(copy, preSolveInstalled_, filterInstalled_);
         if (random_.chance(0.5f)) {
             trace("step both");
@@ -2613,19 +2692,66 @@ private:
                     failure("a restored world stepped differently from its original");
                 }
             }
+        } else if (world_->bodyCount() < kMaxBodies) {
+            // Worlds that hash alike go on alike: the same calls make the same ids, and the
+            // same steps the same states.
+            trace("the same body made in both, then steps");
+            BodyDef body;
+            body.type = BodyType::Dynamic;
+            body.position = {random_.uniform(-10.0f, 10.0f), random_.uniform(0.0f, 10.0f)};
+            const BodyId mine = journal_.createBody(body);
+            noteTag(mine);
+            bodies_.remember(mine);
+            const BodyId theirs = copy.createBody(body);
+            journal_.createShape(mine, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.3f});
+            copy.createShape(theirs, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.3f});
+            if (mine.index != theirs.index || mine.generation != theirs.generation) {
+                failure("two worlds that hashed alike gave a new body different ids");
+            }
+            for (int i = 0; i < 3; ++i) {
+                if (!attempt("World::step", Verdict::Valid,
+                             [&] { journal_.step(1.0f / 60.0f, 8, 3); })) {
+                    break;
+                }
+                copy.step(1.0f / 60.0f, 8, 3);
+                if (copy.stateHash() != world_->stateHash()) {
+                    failure("two worlds that hashed alike stepped apart");
+                    break;
+                }
+            }
+            ++report_.equalFuturesChecked;
         }
 
         std::vector<std::uint8_t> bad = bytes;
         const int damage = random_.between(1, 4);
         for (int i = 0; i < damage && !bad.empty(); ++i) {
             const auto at = static_cast<std::size_t>(random_.below(static_cast<int>(bad.size())));
-            switch (random_.below(4)) {
+            switch (random_.below(7)) {
                 case 0:
                     bad[at] = static_cast<std::uint8_t>(bad[at] ^ (1u << random_.below(8)));
                     break;
                 case 1: bad[at] = static_cast<std::uint8_t>(random_.below(256)); break;
                 case 2: bad.resize(at); break;
-                default: bad.insert(bad.begin() + static_cast<std::ptrdiff_t>(at), bad[at]); break;
+                case 3: bad.insert(bad.begin() + static_cast<std::ptrdiff_t>(at), bad[at]); break;
+                case 4:
+                    // A setting (the state's first 59 bytes): any 32 bits in one of its fields.
+                    if (bad.size() > kSnapshotState + 64) {
+                        putInt(bad, kSnapshotState + 4 * std::size_t(random_.below(15)),
+                               static_cast<std::int32_t>(random_.next()));
+                    }
+                    break;
+                default:
+                    // A cross-reference or a count: a small number (an index, a list key, a
+                    // count) made another small one, or a huge one.
+                    for (std::size_t k = at; k + 4 <= bad.size(); ++k) {
+                        const std::int32_t v = getInt(bad, k);
+                        if (v < -1 || v > 64) continue;
+                        putInt(bad, k,
+                               random_.chance(0.7f) ? random_.between(-1, 64)
+                                                    : random_.between(1000, 1 << 30));
+                        break;
+                    }
+                    break;
             }
         }
         if (bad.size() > 28 && random_.chance(0.7f)) resealSnapshot(bad);
@@ -2639,6 +2765,18 @@ private:
             ++report_.damagedSnapshotsRefused;
             if (scratch.stateHash() != empty) failure("a refused snapshot changed the world");
         }
+    }
+
+    // docs/snapshots.md: a 20-byte header, the 4-byte lineage, then the state.
+    static constexpr std::size_t kSnapshotState = 24;
+    static std::int32_t getInt(const std::vector<std::uint8_t>& bytes, std::size_t at) {
+        std::uint32_t u = 0;
+        for (int i = 0; i < 4; ++i) u |= std::uint32_t(bytes[at + std::size_t(i)]) << (8 * i);
+        return static_cast<std::int32_t>(u);
+    }
+    static void putInt(std::vector<std::uint8_t>& bytes, std::size_t at, std::int32_t value) {
+        const auto u = static_cast<std::uint32_t>(value);
+        for (int i = 0; i < 4; ++i) bytes[at + std::size_t(i)] = std::uint8_t(u >> (8 * i));
     }
 
     // The checksum of docs/snapshots.md over a changed payload (header 20 bytes, checksum 8).
@@ -2927,6 +3065,7 @@ private:
     bool filterInstalled_ = false;
     Journal journal_;
     std::unique_ptr<World> other_;
+    std::unique_ptr<MeddlingCrowd> crowd_;  // made at the first reentry that needs it
     std::uint32_t tag_ = 0;  // the world field of this world's ids
     BodyId otherBody_;
     ShapeId otherShape_;

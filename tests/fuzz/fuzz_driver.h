@@ -61,6 +61,14 @@ struct Report {
     long snapshots = 0;                 ///< snapshots restored into a second world and compared
     long damagedSnapshotsRefused = 0;   ///< damaged snapshots World::restore refused
     long damagedSnapshotsRestored = 0;  ///< damaged (re-sealed) snapshots it took, then stepped
+    /// Changing calls and reads refused from a step's task callbacks and other threads during
+    /// a step, and structural calls refused from query callbacks.
+    long refusedDuringSteps = 0;
+    long refusedInQueries = 0;
+    /// Foreign snapshots restored over a world whose earlier ids were checked to stay stale,
+    /// and pairs of worlds (one restored) that hashed alike and then went on alike.
+    long staleIdsChecked = 0;
+    long equalFuturesChecked = 0;
     long maxBodies = 0;
     /// Worlds in which a body or joint came to report a non-finite number, and the operation
     /// at which each was first seen.

@@ -119,6 +119,12 @@ int main(int argc, char** argv) {
         "snapshots: %ld restored into a second world and compared; damaged ones: %ld refused, "
         "%ld (re-sealed) restored and stepped\n",
         report.snapshots, report.damagedSnapshotsRefused, report.damagedSnapshotsRestored);
+    std::printf(
+        "refused as they must be: %ld calls from task callbacks and other threads during a step, "
+        "%ld structural calls from query callbacks; %ld foreign restores left the old ids stale; "
+        "%ld pairs of worlds that hashed alike went on alike\n",
+        report.refusedDuringSteps, report.refusedInQueries, report.staleIdsChecked,
+        report.equalFuturesChecked);
     std::printf("worlds that came to report a non-finite number: %zu",
                 report.nonFiniteWorlds.size());
     for (std::size_t i = 0; i < report.nonFiniteWorlds.size() && i < 10; ++i) {
