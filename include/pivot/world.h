@@ -765,26 +765,30 @@ public:
     /// contacts with their manifolds and impulses, the broad phase, and the last step's events
     /// and statistics. Not in it: the worker count, the task system and the callbacks, which
     /// belong to the world a snapshot is restored into. The bytes are read by the same pivot2d
-    /// version (format version 4), on a machine of the same float behaviour as stateHash needs.
+    /// version (format version 5), on a machine of the same float behaviour as stateHash needs.
     std::vector<std::uint8_t> snapshot() const;
     /// Replaces this world's state with a snapshot's, so that stepping on gives, bit for bit,
     /// what stepping the snapshotted world gives (the same stateHash at once and after any
     /// number of steps, on any worker count). Ids keep their index and generation and are
-    /// stamped with this world: restored into the world that made the snapshot (a rollback),
-    /// the ids a game holds stay valid; restored into another world, take them from bodyIds(),
-    /// jointIds(), bodyShapes() or user data. Bytes that are not a pivot2d snapshot, of another
-    /// format version, truncated or corrupted throw pivot::Error saying which, and the world
-    /// is left unchanged.
+    /// stamped with this world: restoring a snapshot of this world's own lineage (a rollback),
+    /// the ids a game held then work again; restoring any other, the world takes a new id and
+    /// every id it issued before is refused from then on (take the new ones from bodyIds(),
+    /// jointIds(), bodyShapes() or user data). Bytes that are not a pivot2d snapshot, of
+    /// another format version, truncated or corrupted, or re-sealed with contents the reader
+    /// refuses (docs/snapshots.md lists its checks), throw pivot::Error saying which, and the
+    /// world is left unchanged. Restoring n bytes allocates at most 16 n bytes plus a few
+    /// kilobytes; the steps after a restore allocate nothing once the world has stepped a
+    /// state as large.
     void restore(const std::vector<std::uint8_t>& bytes);
     void restore(const std::uint8_t* data, std::size_t size);
 
     // --- inspection -------------------------------------------------------------------------
-    /// A 64-bit hash of the exact bits of everything a call can change: the world's settings,
-    /// every body (pose, velocities, pending forces, mass properties, damping, sleep state),
-    /// shape (geometry, material, filter, broad-phase box), joint (anchors, limit, motor,
-    /// solver, bias, impulses) and mouse joint, the contacts with their manifolds, the last
-    /// step's events and statistics. Equal hashes mean a bit-for-bit equal world; a refused
-    /// call leaves it unchanged. Values are not promised across compilers or CPUs.
+    /// A 64-bit hash of the exact bits of the state a snapshot holds (its lineage aside):
+    /// everything that decides what later calls do and report, from the settings and every
+    /// object's fields to the pools' generations and free lists (the ids to come), the broad
+    /// phase's trees and the last step's events and statistics. Two worlds that hash alike give
+    /// the same ids and bits to the same calls; a refused call leaves it unchanged. Values are
+    /// not promised across compilers or CPUs.
     std::uint64_t stateHash() const;
 
     struct Impl;
