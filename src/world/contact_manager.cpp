@@ -58,7 +58,6 @@ void ContactManager::reportTouch(const Contact& contact, bool began) {
 void ContactManager::takeBackEndOfThisStep(const Contact& contact) {
     const ShapeId a = shapeId(contact.shapeA);
     const ShapeId b = shapeId(contact.shapeB);
-    auto same = [&](ShapeId x, ShapeId y) { return x == a && y == b; };
     if (contact.sensor) {
         const bool aIsSensor = shapes_[contact.shapeA].sensor;
         const ShapeId sensor = aIsSensor ? a : b;
@@ -73,7 +72,7 @@ void ContactManager::takeBackEndOfThisStep(const Contact& contact) {
         return;
     }
     for (auto e = endEvents_.rbegin(); e != endEvents_.rend(); ++e) {
-        if (same(e->shapeA, e->shapeB)) {
+        if (e->shapeA == a && e->shapeB == b) {
             endEvents_.erase(std::next(e).base());
             beginEvents_.pop_back();
             return;

@@ -145,8 +145,10 @@ std::int32_t checkHandle(const char* call, const char* what, detail::Handle<Tag>
     const std::string name(what);
     if (id.isNull()) fail(call, name + " id is null (default-constructed)");
     if (id.world != worldId) {
-        fail(call, name + " id was issued by another world (world " + std::to_string(id.world) +
-                       ", this is world " + std::to_string(worldId) + ")");
+        fail(call, name + " id was issued by another world, or by this one before it restored "
+                          "another world's snapshot (world " +
+                       std::to_string(id.world) + ", this is world " + std::to_string(worldId) +
+                       ")");
     }
     if (id.index < 0 || id.index >= pool.capacity()) {
         fail(call, name + " id has index " + std::to_string(id.index) +
