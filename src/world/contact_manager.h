@@ -119,8 +119,8 @@ public:
 
     // The user's callbacks (World::setPreSolveCallback, setCustomFilterCallback). They run on
     // the thread that steps, in contact order, each in a WorldAccess::CallbackScope (it may
-    // read the world, not change it: world_access.h). An exception a callback throws is kept (the callback counts as
-    // having said yes) until takeCallbackError.
+    // read the world, not change it: world_access.h). An exception a callback throws is kept (the
+    // callback counts as having said yes) until takeCallbackError.
     void setPreSolve(PreSolveCallback callback) { preSolve_ = std::move(callback); }
     void setCustomFilter(CustomFilterCallback callback) { customFilter_ = std::move(callback); }
     /// Snapshots (world/world_snapshot.cpp): the broad phase, the pair bookkeeping that is not

@@ -86,7 +86,8 @@ void World::Impl::recordHitAndMoveEvents() {
         }
         if (fastest >= 0) record(index, fastest, speed);
     }
-    if (settings.enableContinuous && settings.continuousCollision == ContinuousCollision::Substeps) {
+    if (settings.enableContinuous &&
+        settings.continuousCollision == ContinuousCollision::Substeps) {
         // Impacts: the bodies met within the step; their contact may have touched before.
         for (const ContinuousSolver::Impact& impact : continuous.impacts()) {
             if (impact.approachSpeed > settings.hitEventThreshold) {

@@ -17,9 +17,10 @@ std::uint32_t newWorldId(const char* call) {
     static std::atomic<std::uint64_t> counter{0};
     const std::uint64_t id = ++counter;
     if (id > 0xFFFFFFFFull) {
-        fail(call, "this process has used 2^32 - 1 world ids, every id a handle can carry "
-                   "(each world takes one, and one more for each snapshot of another world it "
-                   "restores)");
+        fail(call,
+             "this process has used 2^32 - 1 world ids, every id a handle can carry "
+             "(each world takes one, and one more for each snapshot of another world it "
+             "restores)");
     }
     return static_cast<std::uint32_t>(id);
 }

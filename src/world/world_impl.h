@@ -26,9 +26,9 @@
 #include "solver/stepper.h"
 #include "world/contact_manager.h"
 #include "world/continuous_solver.h"
+#include "world/fast_body_sweeps.h"
 #include "world/world_access.h"
 #include "world/world_settings.h"
-#include "world/fast_body_sweeps.h"
 
 namespace pivot {
 
@@ -145,8 +145,9 @@ std::int32_t checkHandle(const char* call, const char* what, detail::Handle<Tag>
     const std::string name(what);
     if (id.isNull()) fail(call, name + " id is null (default-constructed)");
     if (id.world != worldId) {
-        fail(call, name + " id was issued by another world, or by this one before it restored "
-                          "another world's snapshot (world " +
+        fail(call, name +
+                       " id was issued by another world, or by this one before it restored "
+                       "another world's snapshot (world " +
                        std::to_string(id.world) + ", this is world " + std::to_string(worldId) +
                        ")");
     }

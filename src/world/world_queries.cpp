@@ -116,9 +116,11 @@ void World::queryPoint(Vec2 point, const QueryFilter& filter, ShapeCallback call
     const char* call = "World::queryPoint";
     const Impl& w = *impl_;
     requireCoordinate(call, "point", point);
-    forEachCandidate(call, w, AABB{point, point}, filter, [&](std::int32_t index, const Shape& shape) {
-        return !shapeContains(shape, w.bodies[shape.body].xf, point) || callback(w.shapeId(index));
-    });
+    forEachCandidate(call, w, AABB{point, point}, filter,
+                     [&](std::int32_t index, const Shape& shape) {
+                         return !shapeContains(shape, w.bodies[shape.body].xf, point) ||
+                                callback(w.shapeId(index));
+                     });
 }
 
 // --- one shape, outside any world -------------------------------------------------------------

@@ -23,8 +23,8 @@ struct WorldSettings {
     bool enableSleep = true;
     bool enableContinuous = true;
     ContinuousCollision continuousCollision = ContinuousCollision::Substeps;
-    float jointLetGoSeparation = 0.0f;  // m; 0: never
-    int substepCount = 1;               // [1, kMaxSubsteps]
+    float jointLetGoSeparation = 0.0f;                    // m; 0: never
+    int substepCount = 1;                                 // [1, kMaxSubsteps]
     float hitEventThreshold = kDefaultHitEventThreshold;  // m/s
 
     /// The settings a WorldDef asks for (unchecked: checkSettings).

@@ -53,11 +53,12 @@ AABB boxOf(const DistanceProxy& proxy, const Transform& xf) {
 
 void queryOverlaps(const char* call, const World::Impl& w, const DistanceProxy& query,
                    const Transform& xf, const QueryFilter& filter, ShapeCallback callback) {
-    forEachCandidate(call, w, boxOf(query, xf), filter, [&](std::int32_t index, const Shape& shape) {
-        const DistanceResult d =
-            shapeDistance(query, xf, proxyOf(shape), w.bodies[shape.body].xf, true);
-        return !d.overlap || callback(w.shapeId(index));
-    });
+    forEachCandidate(
+        call, w, boxOf(query, xf), filter, [&](std::int32_t index, const Shape& shape) {
+            const DistanceResult d =
+                shapeDistance(query, xf, proxyOf(shape), w.bodies[shape.body].xf, true);
+            return !d.overlap || callback(w.shapeId(index));
+        });
 }
 
 }  // namespace
@@ -86,17 +87,18 @@ void castShapeNamed(const char* call, const World::Impl& w, const DistanceProxy&
     const AABB start = boxOf(mover, xf);
     const AABB end = boxOf(mover, Transform{xf.p + translation, xf.q});
     float maxFraction = 1.0f;
-    forEachCandidate(call, w, combine(start, end), filter, [&](std::int32_t index, const Shape& shape) {
-        const std::optional<CastEntry> entry =
-            castShape(mover, xf, translation, proxyOf(shape), w.bodies[shape.body].xf, maxFraction);
-        if (!entry) return true;
-        const float answer =
-            callback(RayHit{w.shapeId(index), entry->point, entry->normal, entry->fraction});
-        if (answer < 0.0f) return true;      // ignore this shape
-        if (!(answer > 0.0f)) return false;  // 0 or NaN: stop
-        maxFraction = std::min(maxFraction, answer);
-        return true;
-    });
+    forEachCandidate(
+        call, w, combine(start, end), filter, [&](std::int32_t index, const Shape& shape) {
+            const std::optional<CastEntry> entry = castShape(mover, xf, translation, proxyOf(shape),
+                                                             w.bodies[shape.body].xf, maxFraction);
+            if (!entry) return true;
+            const float answer =
+                callback(RayHit{w.shapeId(index), entry->point, entry->normal, entry->fraction});
+            if (answer < 0.0f) return true;      // ignore this shape
+            if (!(answer > 0.0f)) return false;  // 0 or NaN: stop
+            maxFraction = std::min(maxFraction, answer);
+            return true;
+        });
 }
 
 template <typename Geometry>

@@ -40,7 +40,7 @@ constexpr int kContinuousCollisions = 2;
 // What restore sizes by each pool's slots, per slot, for kSnapshotMemoryPerByte's count: the
 // event lists, marks and island arrays a step fills (World::Impl::reserveEventBuffers,
 // ContactManager::reserveForPools, Stepper::reserveStepBuffers, whose arrays are rounded up to a
-// power of two), and the reader's checks. Measured by Snapshot.RestoreTakesAtMostItsBoundInMemory
+// power of two), and the reader's checks. Measured by SnapshotMemory.RestoreTakesAtMostItsBound
 // (tests/alloc), which holds restore to the bound.
 constexpr std::size_t kSizedByBodies = 384;
 constexpr std::size_t kSizedByShapes = 32;
@@ -404,16 +404,21 @@ void describeWorld(Io& io, W& w, std::uint32_t worldId) {
     using Contacts = std::remove_reference_t<decltype(w.contacts)>;
     using Mice = std::remove_reference_t<decltype(w.mouseJoints)>;
     // Each slot costs restore the decoded slot, the world's copy and what is sized by the pools.
-    Bodies::describe(io, w.bodies, [](Io& o, auto& b) { describeBody(o, b); },
-                     sizeof(typename Bodies::Slot) + kSizedByBodies);
-    Shapes::describe(io, w.shapes, [](Io& o, auto& s) { describeShape(o, s); },
-                     sizeof(typename Shapes::Slot) + kSizedByShapes);
-    Joints::describe(io, w.joints, [](Io& o, auto& j) { describeJoint(o, j); },
-                     sizeof(typename Joints::Slot) + kSizedByJoints);
-    Contacts::describe(io, w.contacts, [](Io& o, auto& c) { describeContact(o, c); },
-                       sizeof(typename Contacts::Slot) + kSizedByContacts);
-    Mice::describe(io, w.mouseJoints, [](Io& o, auto& m) { describeMouse(o, m); },
-                   sizeof(typename Mice::Slot) + kSizedByMouseJoints);
+    Bodies::describe(
+        io, w.bodies, [](Io& o, auto& b) { describeBody(o, b); },
+        sizeof(typename Bodies::Slot) + kSizedByBodies);
+    Shapes::describe(
+        io, w.shapes, [](Io& o, auto& s) { describeShape(o, s); },
+        sizeof(typename Shapes::Slot) + kSizedByShapes);
+    Joints::describe(
+        io, w.joints, [](Io& o, auto& j) { describeJoint(o, j); },
+        sizeof(typename Joints::Slot) + kSizedByJoints);
+    Contacts::describe(
+        io, w.contacts, [](Io& o, auto& c) { describeContact(o, c); },
+        sizeof(typename Contacts::Slot) + kSizedByContacts);
+    Mice::describe(
+        io, w.mouseJoints, [](Io& o, auto& m) { describeMouse(o, m); },
+        sizeof(typename Mice::Slot) + kSizedByMouseJoints);
 
     io.sequence(w.letGoEvents, [&](auto& e) {
         snapshotHandle(io, e.joint, worldId);
@@ -536,9 +541,8 @@ void checkContactPair(SnapshotReader& in, const WorldState& w, const Contact& co
     if (contact.needsFiltering) return;
     const BodyType typeA = w.bodies[a.body].type;
     const BodyType typeB = w.bodies[b.body].type;
-    const bool mayTouch = contact.sensor
-                              ? typeA != BodyType::Static || typeB != BodyType::Static
-                              : typeA == BodyType::Dynamic || typeB == BodyType::Dynamic;
+    const bool mayTouch = contact.sensor ? typeA != BodyType::Static || typeB != BodyType::Static
+                                         : typeA == BodyType::Dynamic || typeB == BodyType::Dynamic;
     if (!mayTouch) in.corrupt("a contact joins bodies that cannot collide");
 }
 
@@ -628,10 +632,6 @@ void checkLinks(SnapshotReader& in, const WorldState& w, const BroadPhase& broad
         if (!mouseSeen[static_cast<std::size_t>(m)]) in.corrupt("a mouse joint is on no list");
     });
 }
-
-}  // namespace
-
-namespace {
 
 // The state: everything of the world that decides what later calls do and report, as the
 // snapshot's payload holds it after its lineage. stateHash hashes exactly this.
@@ -724,13 +724,13 @@ void World::restore(const std::uint8_t* data, std::size_t size) {
     // setter would refuse (world_settings.h).
     checkSettings(call, "the snapshot's ", state.settings);
     // 1/h of the last step: 0 before the first step, else within the time step's limits.
-    if (state.previousInvDt != 0.0f &&
-        !(state.previousInvDt >= 1.0f / kMaxTimeStep && state.previousInvDt <= 1.0f / kMinTimeStep)) {
+    if (state.previousInvDt != 0.0f && !(state.previousInvDt >= 1.0f / kMaxTimeStep &&
+                                         state.previousInvDt <= 1.0f / kMinTimeStep)) {
         in.corrupt("the last step's 1/dt is " + formatFloat(state.previousInvDt));
     }
     checkLinks(in, state, contactState.broadPhase, contactState.contactsMade);
 
-    // Checked: take it. Nothing below can fail.
+    // Checked: take it. Nothing below can fail (but for running out of memory).
     w.id = stamp;
     w.settings = state.settings;
     w.previousInvDt = state.previousInvDt;

@@ -58,77 +58,77 @@ void expectWithinBound(const std::string& what, const std::vector<std::uint8_t>&
 // Worlds that keep many destroyed objects' slots, of each pool, and one of live objects; the
 // counts just past a power of two (restore reserves the step's arrays rounded up to one) and not.
 TEST(SnapshotMemory, RestoreTakesAtMostItsBound) {
-  for (const int n : {16385, 20000}) {
-    {
-        World world;
-        std::vector<BodyId> bodies;
-        for (int i = 0; i < n; ++i) bodies.push_back(world.createBody(BodyDef{}));
-        for (BodyId b : bodies) world.destroyBody(b);
-        expectWithinBound("destroyed bodies", world.snapshot());
-    }
-    {
-        World world;
-        const BodyId body = world.createBody(BodyDef{});
-        std::vector<ShapeId> shapes;
-        for (int i = 0; i < n; ++i) {
-            shapes.push_back(world.createShape(body, ShapeDef{}, Polygon::box(0.5f, 0.5f)));
+    for (const int n : {16385, 20000}) {
+        {
+            World world;
+            std::vector<BodyId> bodies;
+            for (int i = 0; i < n; ++i) bodies.push_back(world.createBody(BodyDef{}));
+            for (BodyId b : bodies) world.destroyBody(b);
+            expectWithinBound("destroyed bodies", world.snapshot());
         }
-        for (ShapeId s : shapes) world.destroyShape(s);
-        expectWithinBound("destroyed shapes", world.snapshot());
-    }
-    {
-        World world;
-        const BodyId a = ballAt(world, {0.0f, 0.0f});
-        const BodyId b = ballAt(world, {2.0f, 0.0f});
-        std::vector<JointId> joints;
-        for (int i = 0; i < n; ++i) {
-            DistanceJointDef def;
-            def.bodyA = a;
-            def.bodyB = b;
-            joints.push_back(world.createJoint(def));
+        {
+            World world;
+            const BodyId body = world.createBody(BodyDef{});
+            std::vector<ShapeId> shapes;
+            for (int i = 0; i < n; ++i) {
+                shapes.push_back(world.createShape(body, ShapeDef{}, Polygon::box(0.5f, 0.5f)));
+            }
+            for (ShapeId s : shapes) world.destroyShape(s);
+            expectWithinBound("destroyed shapes", world.snapshot());
         }
-        for (JointId j : joints) world.destroyJoint(j);
-        expectWithinBound("destroyed joints", world.snapshot());
-    }
-    {
-        // Contacts: a pile of overlapping balls makes them; destroying the balls frees them.
-        World world;
-        const BodyId ground = world.createBody(BodyDef{});
-        world.createShape(ground, ShapeDef{}, Polygon::box(100.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
-        std::vector<BodyId> balls;
-        for (int i = 0; i < 2000; ++i) {
-            balls.push_back(ballAt(world, {-50.0f + 0.05f * float(i), 0.5f}));
+        {
+            World world;
+            const BodyId a = ballAt(world, {0.0f, 0.0f});
+            const BodyId b = ballAt(world, {2.0f, 0.0f});
+            std::vector<JointId> joints;
+            for (int i = 0; i < n; ++i) {
+                DistanceJointDef def;
+                def.bodyA = a;
+                def.bodyB = b;
+                joints.push_back(world.createJoint(def));
+            }
+            for (JointId j : joints) world.destroyJoint(j);
+            expectWithinBound("destroyed joints", world.snapshot());
         }
-        world.step(1.0f / 60.0f);
-        for (BodyId b : balls) world.destroyBody(b);
-        expectWithinBound("destroyed contacts", world.snapshot());
-    }
-    {
-        World world;
-        const BodyId ball = ballAt(world, {0.0f, 0.0f});
-        std::vector<MouseJointId> mice;
-        for (int i = 0; i < n; ++i) {
-            MouseJointDef def;
-            def.body = ball;
-            mice.push_back(world.createMouseJoint(def));
+        {
+            // Contacts: a pile of overlapping balls makes them; destroying the balls frees them.
+            World world;
+            const BodyId ground = world.createBody(BodyDef{});
+            world.createShape(ground, ShapeDef{}, Polygon::box(100.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+            std::vector<BodyId> balls;
+            for (int i = 0; i < 2000; ++i) {
+                balls.push_back(ballAt(world, {-50.0f + 0.05f * float(i), 0.5f}));
+            }
+            world.step(1.0f / 60.0f);
+            for (BodyId b : balls) world.destroyBody(b);
+            expectWithinBound("destroyed contacts", world.snapshot());
         }
-        for (MouseJointId m : mice) world.destroyMouseJoint(m);
-        expectWithinBound("destroyed mouse joints", world.snapshot());
-    }
-    {
-        World world;
-        const BodyId ground = world.createBody(BodyDef{});
-        world.createShape(ground, ShapeDef{}, Polygon::box(100.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
-        BodyId previous = ground;
-        for (int i = 0; i < 2000; ++i) {
-            const BodyId b = ballAt(world, {-50.0f + 0.05f * float(i), 0.5f});
-            world.createJoint(RevoluteJointDef::atWorldAnchor(previous, b, {0.0f, 3.0f}));
-            previous = b;
+        {
+            World world;
+            const BodyId ball = ballAt(world, {0.0f, 0.0f});
+            std::vector<MouseJointId> mice;
+            for (int i = 0; i < n; ++i) {
+                MouseJointDef def;
+                def.body = ball;
+                mice.push_back(world.createMouseJoint(def));
+            }
+            for (MouseJointId m : mice) world.destroyMouseJoint(m);
+            expectWithinBound("destroyed mouse joints", world.snapshot());
         }
-        for (int i = 0; i < 3; ++i) world.step(1.0f / 60.0f);
-        expectWithinBound("live bodies, joints and contacts", world.snapshot());
+        {
+            World world;
+            const BodyId ground = world.createBody(BodyDef{});
+            world.createShape(ground, ShapeDef{}, Polygon::box(100.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+            BodyId previous = ground;
+            for (int i = 0; i < 2000; ++i) {
+                const BodyId b = ballAt(world, {-50.0f + 0.05f * float(i), 0.5f});
+                world.createJoint(RevoluteJointDef::atWorldAnchor(previous, b, {0.0f, 3.0f}));
+                previous = b;
+            }
+            for (int i = 0; i < 3; ++i) world.step(1.0f / 60.0f);
+            expectWithinBound("live bodies, joints and contacts", world.snapshot());
+        }
     }
-  }
 }
 
 // A crafted snapshot claiming 2 million destroyed bodies, 5 bytes of it each: refused, having

@@ -78,8 +78,8 @@ TEST(WorldAccess, EveryChangingCallIsListed) {
     }
     EXPECT_GT(changing.size(), 70u);
     for (const std::string& name : changing) {
-        EXPECT_TRUE(hasCall(name)) << "World::" << name
-                                   << " changes the world but is not in world_calls.h";
+        EXPECT_TRUE(hasCall(name))
+            << "World::" << name << " changes the world but is not in world_calls.h";
     }
 }
 
@@ -105,7 +105,8 @@ TEST(WorldAccess, EveryChangeIsRefusedFromTheStepsCallbacks) {
             if (asked++ > 0) return;
             for (const ChangingCall& call : everyChangingCall()) {
                 const std::string error = errorOf([&] { call.make(world, e); });
-                EXPECT_TRUE(contains(error, "inside a step's callback")) << call.name << ": " << error;
+                EXPECT_TRUE(contains(error, "inside a step's callback"))
+                    << call.name << ": " << error;
             }
             // Reading is fine.
             EXPECT_NO_THROW(world.bodyPosition(e.a));
@@ -159,8 +160,12 @@ TEST(WorldAccess, EveryChangeIsRefusedFromTaskCallbacksAndOtherThreads) {
                  [&] { stepping->stateHash(); },
                  [&] { stepping->snapshot(); },
                  [&] { stepping->lastStepStats(); },
-                 [&] { stepping->castRayClosest({-5.0f, 1.0f}, {10.0f, 0.0f}); },
-                 [&] { stepping->queryAABB({{-1, -1}, {1, 1}}, {}, [](ShapeId) { return true; }); },
+                 [&] {
+                     stepping->castRayClosest({-5.0f, 1.0f}, {10.0f, 0.0f});
+                 },
+                 [&] {
+                     stepping->queryAABB({{-1, -1}, {1, 1}}, {}, [](ShapeId) { return true; });
+                 },
              }) {
             const std::string error = errorOf(read);
             if (contains(error, "while World::step runs")) {
@@ -300,8 +305,18 @@ TEST(WorldAccess, EveryQueryRefusesStructuralChangesAndFinishesItsWalk) {
     const Polygon wide = Polygon::box(100.0f, 1.0f);
     const Transform origin{{0.0f, 0.0f}, Rot(0.0f)};
     const std::vector<std::function<void()>> queries = {
-        [&] { world.queryAABB(everywhere, {}, [&](ShapeId s) { visit(s); return true; }); },
-        [&] { world.queryShape(wide, origin, {}, [&](ShapeId s) { visit(s); return true; }); },
+        [&] {
+            world.queryAABB(everywhere, {}, [&](ShapeId s) {
+                visit(s);
+                return true;
+            });
+        },
+        [&] {
+            world.queryShape(wide, origin, {}, [&](ShapeId s) {
+                visit(s);
+                return true;
+            });
+        },
         [&] {
             world.castRay({-100.0f, 0.2f}, {200.0f, 0.0f}, {}, [&](const RayHit& hit) {
                 visit(hit.shape);
@@ -309,8 +324,8 @@ TEST(WorldAccess, EveryQueryRefusesStructuralChangesAndFinishesItsWalk) {
             });
         },
         [&] {
-            world.castShape(Circle{{}, 0.1f}, Transform{{-100.0f, 0.2f}, Rot(0.0f)},
-                            {200.0f, 0.0f}, {}, [&](const RayHit& hit) {
+            world.castShape(Circle{{}, 0.1f}, Transform{{-100.0f, 0.2f}, Rot(0.0f)}, {200.0f, 0.0f},
+                            {}, [&](const RayHit& hit) {
                                 visit(hit.shape);
                                 return -1.0f;
                             });

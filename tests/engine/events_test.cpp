@@ -438,9 +438,12 @@ TEST(ContactEvents, ApplyBeginsThenEndsToGetTheTouchingPairs) {
             scenes::SceneOptions options;
             options.continuousCollision = policy;
             scenes::Scene scene = scenes::buildScene(info, options);
-            follow(*scene.world, [&](int i) {
-                if (scene.beforeStep) scene.beforeStep(scene, i);
-            }, 200, info.name);
+            follow(
+                *scene.world,
+                [&](int i) {
+                    if (scene.beforeStep) scene.beforeStep(scene, i);
+                },
+                200, info.name);
         }
     }
     World shower;

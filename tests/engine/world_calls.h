@@ -32,15 +32,16 @@ inline BodyId dynamicCircleAt(World& world, Vec2 position, float radius) {
 }
 
 /// A ground box whose top is y = 0 that asks pre-solve about its contacts, with a ball resting
-/// on it (so that the step callbacks run from the second step); bodies a, b, c, d; a spare dynamic body with nothing
-/// on it; a kinematic box; a joint of every type, the gear on the revolute and prismatic ones;
-/// a mouse joint on c.
+/// on it (so that the step callbacks run from the second step); bodies a, b, c, d; a spare dynamic
+/// body with nothing on it; a kinematic box; a joint of every type, the gear on the revolute and
+/// prismatic ones; a mouse joint on c.
 inline Everything buildEverything(World& world) {
     Everything e;
     e.ground = world.createBody(BodyDef{});
     ShapeDef asking;
     asking.enablePreSolve = true;
-    e.groundShape = world.createShape(e.ground, asking, Polygon::box(20.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
+    e.groundShape =
+        world.createShape(e.ground, asking, Polygon::box(20.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
     e.resting = dynamicCircleAt(world, {-3.0f, 0.25f}, 0.25f);
     e.a = dynamicCircleAt(world, {0.0f, 1.5f}, 0.5f);
     e.shapeA = world.bodyShapes(e.a)[0];
@@ -84,8 +85,7 @@ inline Everything buildEverything(World& world) {
     motor.bodyB = e.d;
     e.motor = world.createJoint(motor);
     e.weld = world.createJoint(WeldJointDef::atWorldAnchor(e.c, e.d, {7.5f, 3.0f}));
-    e.wheel = world.createJoint(
-        WheelJointDef::atWorldAnchor(e.b, e.d, {9.0f, 3.0f}, {0.0f, 1.0f}));
+    e.wheel = world.createJoint(WheelJointDef::atWorldAnchor(e.b, e.d, {9.0f, 3.0f}, {0.0f, 1.0f}));
     MouseJointDef mouse;
     mouse.body = e.c;
     mouse.target = {6.0f, 3.0f};

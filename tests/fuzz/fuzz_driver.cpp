@@ -2490,22 +2490,20 @@ private:
                     Arg<float> radius = values_->radius();
                     const Arg<Rot> q = rotation();
                     const Capsule capsule{{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.2f};
-                    attempt(
-                        "World::castShapeClosest",
-                        verdict(origin.bad || q.bad || translation.bad), [&] {
-                            if (auto hit = w.castShapeClosest(capsule,
-                                                              Transform{origin.value, q.value},
-                                                              translation.value, filter)) {
-                                if (!isFinite(hit->point) || !(hit->fraction >= 0.0f) ||
-                                    !(hit->fraction <= 1.0f)) {
-                                    failure("castShapeClosest gave a hit off its path");
+                    attempt("World::castShapeClosest",
+                            verdict(origin.bad || q.bad || translation.bad), [&] {
+                                if (auto hit = w.castShapeClosest(capsule,
+                                                                  Transform{origin.value, q.value},
+                                                                  translation.value, filter)) {
+                                    if (!isFinite(hit->point) || !(hit->fraction >= 0.0f) ||
+                                        !(hit->fraction <= 1.0f)) {
+                                        failure("castShapeClosest gave a hit off its path");
+                                    }
                                 }
-                            }
-                        });
+                            });
                     attempt("World::queryShape", verdict(origin.bad || radius.bad || q.bad), [&] {
                         w.queryShape(Circle{{0.0f, 0.0f}, radius.value},
-                                     Transform{origin.value, q.value}, filter,
-                                     [&](ShapeId found) {
+                                     Transform{origin.value, q.value}, filter, [&](ShapeId found) {
                                          if (!w.isValid(found)) {
                                              failure("queryShape reported a dead shape");
                                          }
@@ -3066,7 +3064,7 @@ private:
     Journal journal_;
     std::unique_ptr<World> other_;
     std::unique_ptr<MeddlingCrowd> crowd_;  // made at the first reentry that needs it
-    std::uint32_t tag_ = 0;  // the world field of this world's ids
+    std::uint32_t tag_ = 0;                 // the world field of this world's ids
     BodyId otherBody_;
     ShapeId otherShape_;
     JointId otherJoint_;
