@@ -139,18 +139,21 @@ public:
 private:
     static constexpr std::uint64_t kHashStart = 0xcbf29ce484222325ull;
 
-    /// The low `n` bytes of `little`, lowest first.
+    /// The low `n` bytes (n <= 8) of `little`, lowest first; its higher bytes are zero.
     void put(std::uint64_t little, std::size_t n) {
         if (sink_ == Sink::Hash) {
-            for (std::size_t i = 0; i < n; ++i) {
-                pending_ |= ((little >> (8 * i)) & 0xFF) << (8 * pendingBytes_);
-                if (++pendingBytes_ == 8) {
-                    hash_ = (hash_ ^ pending_) * 0x100000001b3ull;
-                    hash_ ^= hash_ >> 29;
-                    pending_ = 0;
-                    pendingBytes_ = 0;
-                }
+            // Into the word being gathered; a filled word is folded into the hash, and what
+            // did not fit starts the next one.
+            pending_ |= little << (8 * pendingBytes_);
+            const std::size_t room = 8 - pendingBytes_;
+            if (n < room) {
+                pendingBytes_ += n;
+                return;
             }
+            hash_ = (hash_ ^ pending_) * 0x100000001b3ull;
+            hash_ ^= hash_ >> 29;
+            pending_ = room < 8 ? little >> (8 * room) : 0;
+            pendingBytes_ = n - room;
             return;
         }
         if (bytes_.size() - size_ < n) bytes_.resize(std::max<std::size_t>(2 * bytes_.size(), 256));
