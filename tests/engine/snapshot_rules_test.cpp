@@ -168,6 +168,7 @@ TEST(SnapshotRules, AContactIsOneTheContactManagerCouldHaveMade) {
     int refused = 0;
     for (std::size_t at : find(good, shapes)) {
         const std::size_t sensor = at + 8 + 72 + 8 + 2;
+        if (sensor >= good.size() - 8) continue;  // the pair found elsewhere, near the end
         if (good[sensor - 2] != 1 || good[sensor] != 0) continue;  // touching, not a sensor
         std::vector<std::uint8_t> bad = good;
         bad[sensor] = 1;
