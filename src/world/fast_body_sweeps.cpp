@@ -137,7 +137,9 @@ float FastBodySweeps::earliestHit(std::int32_t index, const SlotPool<Body>& bodi
 int FastBodySweeps::solve(const std::vector<std::int32_t>& solvedBodies, SlotPool<Body>& bodies,
                           const SlotPool<Shape>& shapes, ContactManager& contactManager) {
     reserveBuffer(bullets_, solvedBodies.size());
+    reserveBuffer(heldAtEdge_, solvedBodies.size());
     bullets_.clear();
+    heldAtEdge_.clear();
     int stopped = 0;
     const auto sweep = [&](std::int32_t index) {
         const float t = earliestHit(index, bodies, shapes, contactManager);
@@ -148,6 +150,7 @@ int FastBodySweeps::solve(const std::vector<std::int32_t>& solvedBodies, SlotPoo
         body.angle = between(body.angle0, body.angle, t);
         restartSweep(body);  // what is left of its motion is the next step's
         synchronizeTransform(body);
+        if (holdAtWorldEdge(body)) heldAtEdge_.push_back(index);
         contactManager.synchronizeShapes(index, false);  // it starts the next step here
         ++stopped;
     };

@@ -17,7 +17,11 @@
 //
 // A hit puts the body where its sweep was at t (centre and angle interpolated, never past
 // either end), its velocity kept: nothing is solved, and the next step's contacts stop it. Its
-// shapes' boxes follow, and the new pairs are found once, after every fast body is swept.
+// shapes' boxes follow, and the new pairs are found once, after every fast body is swept. The
+// origin follows the centre and the angle: a body spinning at the world's edge, its centre of
+// mass off its origin, can have its origin put past the edge although both ends of its sweep
+// were within it, and is then held at the edge (holdAtWorldEdge) like a body the solver moved
+// there (bodiesHeldAtEdge).
 //
 // Bullets are swept after the other fast bodies, so they meet those where their sweeps left
 // them. A sweep moves only its own body and reads only bodies no sweep of its round moves
@@ -41,13 +45,16 @@ public:
     /// are skipped). Returns how many were stopped at a hit.
     int solve(const std::vector<std::int32_t>& solvedBodies, SlotPool<Body>& bodies,
               const SlotPool<Shape>& shapes, ContactManager& contactManager);
+    /// The bodies the last solve held at the world's edge, in the order it stopped them.
+    const std::vector<std::int32_t>& bodiesHeldAtEdge() const { return heldAtEdge_; }
 
 private:
     /// The earliest hit of body `index`'s sweep in (0, 1), or 1 when there is none.
     float earliestHit(std::int32_t index, const SlotPool<Body>& bodies,
                       const SlotPool<Shape>& shapes, ContactManager& contactManager) const;
 
-    std::vector<std::int32_t> bullets_;  // fast bullets, swept after the rest
+    std::vector<std::int32_t> bullets_;     // fast bullets, swept after the rest
+    std::vector<std::int32_t> heldAtEdge_;  // stopped past the world's edge, held there
 };
 
 }  // namespace pivot

@@ -158,17 +158,23 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     const bool substepped =
         settings.enableContinuous && settings.continuousCollision == ContinuousCollision::Substeps;
     contactManager.afterSolve(islands.bodies, substepped);
-    if (settings.enableContinuous && !substepped) {
-        stats.impactCount = fastBodies.solve(islands.bodies, bodies, shapes, contactManager);
-    } else if (substepped) {
-        stats.impactCount =
-            continuous.solve(bodies, shapes, contacts, contactManager, pool, context);
-        for (std::int32_t index : continuous.bodiesHeldAtEdge()) {
+    // Continuous collision moves bodies after the solver held them within the world's edge,
+    // and holds those it moves past it.
+    auto recordHeldAtEdge = [this](const std::vector<std::int32_t>& held) {
+        for (std::int32_t index : held) {
             Body& body = bodies[index];
             edgeEvents.push_back({bodyId(index), body.edgeReached});
             body.heldAtEdge = false;
             ++stats.edgeBodyCount;
         }
+    };
+    if (settings.enableContinuous && !substepped) {
+        stats.impactCount = fastBodies.solve(islands.bodies, bodies, shapes, contactManager);
+        recordHeldAtEdge(fastBodies.bodiesHeldAtEdge());
+    } else if (substepped) {
+        stats.impactCount =
+            continuous.solve(bodies, shapes, contacts, contactManager, pool, context);
+        recordHeldAtEdge(continuous.bodiesHeldAtEdge());
         for (std::int32_t index : continuous.discardedBodies()) {
             discarded.push_back(bodyId(index));
             ++stats.discardedBodyCount;

@@ -4,7 +4,8 @@
 //              [--verify-islands] [--verify-census]
 //   pivot-fuzz --replay FILE
 // Exit status 0 when every check held, 1 on a failure, 2 on bad arguments. --replay replays a
-// journal written with --journal and exits with 3 if a body or joint turns non-finite.
+// journal written with --journal and exits with 3 if a body or joint turns non-finite, 4 if a
+// body's state goes beyond the input limits.
 // --verify-islands searches every step's islands and fails if a step whose islands would have
 // been kept from the step before (nothing counted in IslandRevision changed) found others.
 // --verify-census checks the contact census (model/contact_census.h) against the contacts at
@@ -49,7 +50,12 @@ int replay(const char* path) {
                     r.nonFinite.c_str());
         return 3;
     }
-    std::printf("every body and joint finite\n");
+    if (r.beyondLimitsLine > 0) {
+        std::printf("beyond the input limits after the step of line %d: %s\n",
+                    r.beyondLimitsLine, r.beyondLimits.c_str());
+        return 4;
+    }
+    std::printf("every body and joint finite, every body within the input limits\n");
     return 0;
 }
 

@@ -593,6 +593,23 @@ bool worldIsFinite(const World& world, std::string* what) {
     return true;
 }
 
+bool worldWithinLimits(const World& world, std::string* what) {
+    for (BodyId b : world.bodyIds()) {
+        const Vec2 p = world.bodyPosition(b), v = world.bodyLinearVelocity(b);
+        const float a = world.bodyAngle(b), w = world.bodyAngularVelocity(b);
+        if (std::fabs(p.x) > kMaxCoordinate || std::fabs(p.y) > kMaxCoordinate ||
+            std::fabs(v.x) > kMaxSpeed || std::fabs(v.y) > kMaxSpeed ||
+            std::fabs(w) > kMaxAngularSpeed || std::fabs(a) > kMaxMagnitude) {
+            if (what) {
+                *what = "body " + std::to_string(b.index) + " p " + num(p) + " v " + num(v) +
+                        " a " + num(a) + " w " + num(w);
+            }
+            return false;
+        }
+    }
+    return true;
+}
+
 namespace {
 
 // Reads one journal line's fields in order; any failure marks the line unreadable.
@@ -1311,6 +1328,10 @@ ReplayResult replay(std::istream& in) {
         }
         if (command == "step" && !worldIsFinite(w, &result.nonFinite)) {
             result.nonFiniteLine = result.lines;
+            return result;
+        }
+        if (command == "step" && !worldWithinLimits(w, &result.beyondLimits)) {
+            result.beyondLimitsLine = result.lines;
             return result;
         }
     }

@@ -138,6 +138,10 @@ struct ReplayResult {
     /// The first line (1-based) after whose step a body or joint reported a non-finite number.
     int nonFiniteLine = 0;
     std::string nonFinite;  ///< what was not finite
+    /// The first line after whose step a body's state was beyond the input limits (one the
+    /// API would refuse to be given back), and which.
+    int beyondLimitsLine = 0;
+    std::string beyondLimits;
     /// Joints the world reported let go, and body-steps whose non-finite solved state it
     /// discarded (StepStats), over the whole replay.
     long letGoJoints = 0;
@@ -145,10 +149,14 @@ struct ReplayResult {
     std::string error;  ///< a line that could not be read
 };
 
-/// Replays a journal into a fresh world, stopping at the first non-finite number.
+/// Replays a journal into a fresh world, stopping at the first non-finite number or state
+/// beyond the input limits.
 ReplayResult replay(std::istream& in);
 
 /// Whether every body and joint of the world reports finite numbers; if not, what did not.
 bool worldIsFinite(const World& world, std::string* what = nullptr);
+/// Whether every body's position, angle and velocities are within the input limits, so that
+/// the API would take them back; if not, which body.
+bool worldWithinLimits(const World& world, std::string* what = nullptr);
 
 }  // namespace pivot::fuzz

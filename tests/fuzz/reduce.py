@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""Cuts a pivot-fuzz journal down to a short one that still turns a world non-finite.
+"""Cuts a pivot-fuzz journal down to a short one that still fails its replay the same way.
 
     reduce.py PIVOT_FUZZ JOURNAL [OUT]
 
 Delta debugging (ddmin) over the journal's lines, keeping the first (the world) line: a
-candidate is kept when `PIVOT_FUZZ --replay candidate` still exits with 3. Then each step line
+candidate is kept when `PIVOT_FUZZ --replay candidate` still exits as the journal does: 3 for
+a world turned non-finite, 4 for a body's state beyond the input limits. Then each step line
 is tried with fewer iterations, and every line with rounder numbers, so the result is short
 and readable. Writes OUT (default: JOURNAL with .min appended) and prints it.
 """
@@ -14,16 +15,23 @@ import sys
 import tempfile
 
 
-def still_fails(fuzz, lines):
+FAILURE = 3  # the replay's exit status being reduced (main sets it from the journal's)
+
+
+def replay_status(fuzz, lines):
     with tempfile.NamedTemporaryFile("w", suffix=".journal", delete=False) as f:
         f.write("\n".join(lines) + "\n")
         path = f.name
     try:
         result = subprocess.run([fuzz, "--replay", path], stdout=subprocess.DEVNULL,
                                 stderr=subprocess.DEVNULL)
-        return result.returncode == 3
+        return result.returncode
     finally:
         os.unlink(path)
+
+
+def still_fails(fuzz, lines):
+    return replay_status(fuzz, lines) == FAILURE
 
 
 def round_field(text, digits):
@@ -64,8 +72,10 @@ def main():
     fuzz, journal = sys.argv[1], sys.argv[2]
     out = sys.argv[3] if len(sys.argv) > 3 else journal + ".min"
     lines = [l for l in open(journal).read().splitlines() if l and not l.startswith("#")]
-    if not still_fails(fuzz, lines):
-        print("the journal does not turn its world non-finite")
+    global FAILURE
+    FAILURE = replay_status(fuzz, lines)
+    if FAILURE not in (3, 4):
+        print("the journal's replay does not fail (exit status %d)" % FAILURE)
         return 1
     head, body = lines[:1], lines[1:]
     body = ddmin(fuzz, head, body)
