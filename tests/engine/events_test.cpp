@@ -443,7 +443,7 @@ TEST(ContactEvents, ApplyBeginsThenEndsToGetTheTouchingPairs) {
                 [&](int i) {
                     if (scene.beforeStep) scene.beforeStep(scene, i);
                 },
-                200, info.name);
+                120, info.name);
         }
     }
     World shower;

@@ -2613,7 +2613,7 @@ private:
     // task callbacks and another thread during it (a crowd on a meddling task system), and
     // structural ones from a query's callback on this world, where a change of state works.
     void reentry() {
-        if (random_.chance(0.3f)) {
+        if (random_.chance(0.15f)) {
             if (!crowd_) crowd_ = std::make_unique<MeddlingCrowd>();
             trace("a step of the meddling crowd");
             std::vector<std::string> failures;

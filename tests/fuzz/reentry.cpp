@@ -40,11 +40,11 @@ namespace {
 void addCrowd(World& world) {
     const BodyId ground = world.createBody(BodyDef{});
     world.createShape(ground, ShapeDef{}, Polygon::box(40.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
-    for (int row = 0; row < 40; ++row) {
-        for (int i = 0; i < 40 - row; ++i) {
+    for (int row = 0; row < 30; ++row) {
+        for (int i = 0; i < 30 - row; ++i) {
             BodyDef def;
             def.type = BodyType::Dynamic;
-            def.position = {-20.0f + 0.5f * float(row) + float(i), 0.5f + float(row)};
+            def.position = {-15.0f + 0.5f * float(row) + float(i), 0.5f + float(row)};
             world.createShape(world.createBody(def), ShapeDef{}, Polygon::box(0.45f, 0.45f));
         }
     }

@@ -32,7 +32,7 @@ enum class ChangeKind { State, Structure };
 ChangeKind makeRandomChange(World& world, Random& random, const Targets& targets,
                             bool structureOnly = false);
 
-/// A crowd of 820 boxes (enough contacts for every step to hand work to helpers) stepped on a
+/// A crowd of 465 boxes (over 1,024 contacts: every step hands work to helpers) stepped on a
 /// game's task system whose callbacks meddle: each callback of an armed step makes changing
 /// calls on the stepping thread and from a thread of its own, and reads the world, all of which
 /// must be refused. A twin stepped without meddling must hash the same afterwards.
