@@ -26,8 +26,9 @@ void WorldAccess::requireChange(const char* call, Change change) const {
     if (change == Change::Structure && queryDepth_ > 0) {
         fail(call,
              "called from inside a query's callback (a query may read the world and change its "
-             "bodies' motion and settings, but not create, destroy, move or re-type anything, "
-             "restore or step: do that after the query returns)");
+             "bodies' motion and settings, but not create or destroy anything, teleport or "
+             "re-type a body, switch a sensor, restore or step: do that after the query "
+             "returns)");
     }
 }
 
