@@ -1,9 +1,9 @@
-// World's private state: the settings, the object pools, and the three parts that work on
-// them: the contact manager (broad phase, pairs, narrow phase, contact events), the stepper
-// (islands and their solving, on the task pool) and, in world_hash.cpp, the state hash. The
-// public facade is split by concept: world.cpp (lifetime, settings), world_bodies.cpp,
+// World's private state: the settings, the object pools, who may call in (world_access.h), and
+// the parts that work on them: the contact manager (broad phase, pairs, narrow phase, contact
+// events), the stepper (islands and their solving, on the task pool) and continuous collision.
+// The public facade is split by concept: world.cpp (lifetime, settings), world_bodies.cpp,
 // world_shapes.cpp, world_joints.cpp, world_mouse.cpp, world_contacts.cpp; step.cpp runs the
-// stages of a step.
+// stages of a step; world_snapshot.cpp writes, reads and hashes the state.
 #pragma once
 
 #include <array>
