@@ -8,8 +8,12 @@
 //   - after every step the invariants visible through the API hold: the id lists match the
 //     counts and hold only valid ids, every shape is listed by its body, every joint's bodies
 //     are valid, contacts and events name valid shapes, the statistics add up, and every body
-//     and joint reports finite numbers.
-// The same seed gives the same run on every platform (see random.h).
+//     and joint reports finite numbers;
+//   - changes made where the world must refuse them are refused: from a step's task callbacks
+//     and other threads, structural ones from query callbacks (reentry.h);
+//   - snapshots restore to the same hash and go on alike, leave every id the target issued
+//     before stale, and damaged or re-sealed ones are refused or restore a world that steps.
+// The same seed gives the same run on every platform and compiler (see random.h).
 #pragma once
 
 #include <cstdint>
