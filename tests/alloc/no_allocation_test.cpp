@@ -17,22 +17,26 @@ class EveryScene : public testing::TestWithParam<std::tuple<std::string, int>> {
 
 namespace {
 
+// Steps the scene past every scripted event (drops, grabs, releases: they create bodies and
+// joints, which may allocate) and until the number of contacts has peaked: 10 s, or 7 s after a
+// late disturbance (the platformer's crate, dropped at 8 s, breaks a bridge whose planks tumble
+// into a pit for seconds after). A new peak may still come later (the far chain's swinging
+// links reach a new most of contacts now and then, long after their first seconds): the step's
+// arrays are reserved for the contact pool rounded up to a power of two, so only a pool that
+// has doubled allocates.
+void warmUp(Scene& scene) {
+    const int steps = std::max(600, scene.disturbanceEndStep + 420);
+    for (int i = 0; i < steps; ++i) {
+        if (scene.beforeStep) scene.beforeStep(scene, i);
+        scene.world->step(1.0f / 60.0f);
+    }
+}
+
 // Steps the scene past its warm-up, then returns what 300 more steps allocated.
 long long warmStepAllocations(SceneOptions options, const std::string& name) {
     Scene scene = buildScene(*findScene(name), options);
     World& world = *scene.world;
-    // Warm up past every scripted event (drops, grabs, releases: they create bodies and joints,
-    // which may allocate) and until the number of contacts has peaked: 10 s, or 7 s after a
-    // late disturbance (the platformer's crate, dropped at 8 s, breaks a bridge whose planks
-    // tumble into a pit for seconds after). A new peak may still come later (the far chain's
-    // swinging links reach a new most of contacts now and then, long after their first
-    // seconds): the step's arrays are reserved for the contact pool rounded up to a power of
-    // two, so only a pool that has doubled allocates.
-    const int warmUp = std::max(600, scene.disturbanceEndStep + 420);
-    for (int i = 0; i < warmUp; ++i) {
-        if (scene.beforeStep) scene.beforeStep(scene, i);
-        world.step(1.0f / 60.0f);
-    }
+    warmUp(scene);
     heap::Counter counter;
     for (int i = 0; i < 300; ++i) world.step(1.0f / 60.0f);
     return counter.allocations();
@@ -75,11 +79,7 @@ TEST_P(EveryScene, StepsWithoutAllocatingAfterARestore) {
     const std::string name = std::get<0>(GetParam());
     Scene scene = buildScene(*findScene(name), options);
     World& world = *scene.world;
-    const int warmUp = std::max(600, scene.disturbanceEndStep + 420);
-    for (int i = 0; i < warmUp; ++i) {
-        if (scene.beforeStep) scene.beforeStep(scene, i);
-        world.step(1.0f / 60.0f);
-    }
+    warmUp(scene);
     const std::vector<std::uint8_t> saved = world.snapshot();
     long long allocations = 0;
     for (int round = 0; round < 6; ++round) {

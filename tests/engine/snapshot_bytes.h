@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
+
+#include "pivot/pivot.h"
 
 namespace pivot::test_support {
 
@@ -24,6 +27,16 @@ inline void reseal(std::vector<std::uint8_t>& bytes) {
     }
     for (int i = 0; i < 8; ++i)
         bytes[bytes.size() - 8 + i] = static_cast<std::uint8_t>(h >> (8 * i));
+}
+
+/// What World::restore throws for `bytes`, or "" when it takes them.
+inline std::string restoreError(World& world, const std::vector<std::uint8_t>& bytes) {
+    try {
+        world.restore(bytes);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
 }
 
 /// The state a snapshot holds: its bytes without the header, the lineage and the checksum.

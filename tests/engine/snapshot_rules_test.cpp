@@ -17,15 +17,6 @@ namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 
-std::string errorOf(World& world, const std::vector<std::uint8_t>& bytes) {
-    try {
-        world.restore(bytes);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
-
 BodyId dynamicBox(World& world, Vec2 position) {
     BodyDef def;
     def.type = BodyType::Dynamic;
@@ -65,7 +56,7 @@ TEST(SnapshotRules, ASettingIsRestoredOnlyAsItsSetterWouldTakeIt) {
         std::vector<std::uint8_t> bad = good;
         put(bad, kSnapshotState + field.offset, field.bad);
         reseal(bad);
-        const std::string error = errorOf(target, bad);
+        const std::string error = restoreError(target, bad);
         EXPECT_NE(error.find(std::string("the snapshot's ") + field.name), std::string::npos)
             << field.name << ": " << error;
         EXPECT_EQ(target.stateHash(), before) << field.name;
@@ -76,12 +67,12 @@ TEST(SnapshotRules, ASettingIsRestoredOnlyAsItsSetterWouldTakeIt) {
         std::vector<std::uint8_t> bad = good;
         put(bad, kSnapshotState + offset, value);
         reseal(bad);
-        EXPECT_NE(errorOf(target, bad).find("substepCount"), std::string::npos) << value;
+        EXPECT_NE(restoreError(target, bad).find("substepCount"), std::string::npos) << value;
     }
     std::vector<std::uint8_t> bad = good;
     put(bad, kSnapshotState + 55, -60.0f);
     reseal(bad);
-    EXPECT_NE(errorOf(target, bad).find("1/dt"), std::string::npos);
+    EXPECT_NE(restoreError(target, bad).find("1/dt"), std::string::npos);
     EXPECT_EQ(target.stateHash(), before);
     // A value the setter takes restores, and reads back as the setter would have left it.
     source.setGravity({0.0f, kMaxGravity});
@@ -128,7 +119,7 @@ TEST(SnapshotRules, AGearIsCheckedAgainstTheJointsItCouples) {
         std::vector<std::uint8_t> bad = good;
         put(bad, base, other.index);
         reseal(bad);
-        EXPECT_NE(errorOf(target, bad).find("gear joint's bodies"), std::string::npos)
+        EXPECT_NE(restoreError(target, bad).find("gear joint's bodies"), std::string::npos)
             << "base " << other.index;
         EXPECT_EQ(target.stateHash(), empty);
     }
@@ -136,7 +127,7 @@ TEST(SnapshotRules, AGearIsCheckedAgainstTheJointsItCouples) {
     std::vector<std::uint8_t> bad = good;
     put(bad, base + 4, -2.0f);
     reseal(bad);
-    EXPECT_NE(errorOf(target, bad).find("copy of a joint"), std::string::npos);
+    EXPECT_NE(restoreError(target, bad).find("copy of a joint"), std::string::npos);
     // The good one restores and steps.
     target.restore(good);
     for (int i = 0; i < 5; ++i) target.step(kDt);
@@ -173,7 +164,7 @@ TEST(SnapshotRules, AContactIsOneTheContactManagerCouldHaveMade) {
         std::vector<std::uint8_t> bad = good;
         bad[sensor] = 1;
         reseal(bad);
-        if (errorOf(target, bad).find("sensor flag") != std::string::npos) ++refused;
+        if (restoreError(target, bad).find("sensor flag") != std::string::npos) ++refused;
         EXPECT_EQ(target.stateHash(), empty);
     }
     EXPECT_EQ(refused, 1);

@@ -19,16 +19,8 @@ namespace {
 constexpr float kDt = 1.0f / 60.0f;
 constexpr std::size_t kHeader = test_support::kSnapshotHeader;
 using test_support::reseal;
+using test_support::restoreError;
 using test_support::stateOf;
-
-std::string errorOf(World& world, const std::vector<std::uint8_t>& bytes) {
-    try {
-        world.restore(bytes);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
 
 // A small world of every kind of object: shapes of each type, a joint of each type, a mouse
 // joint, sleeping and awake bodies, contacts.
@@ -169,25 +161,25 @@ TEST(Snapshot, RefusesWhatIsNotASnapshotAndChangesNothing) {
     World target;
     buildSmallWorld(target);
     const std::uint64_t before = target.stateHash();
-    EXPECT_NE(errorOf(target, {}).find("not a pivot2d snapshot"), std::string::npos);
-    EXPECT_NE(errorOf(target, {'h', 'e', 'l', 'l', 'o'}).find("not a pivot2d snapshot"),
+    EXPECT_NE(restoreError(target, {}).find("not a pivot2d snapshot"), std::string::npos);
+    EXPECT_NE(restoreError(target, {'h', 'e', 'l', 'l', 'o'}).find("not a pivot2d snapshot"),
               std::string::npos);
     std::vector<std::uint8_t> version = good;
     version[8] = 99;  // a later pivot2d's
-    EXPECT_NE(errorOf(target, version).find("format version 99"), std::string::npos);
+    EXPECT_NE(restoreError(target, version).find("format version 99"), std::string::npos);
     // Every cut is truncated.
     for (std::size_t size = 8; size < good.size(); size += 1 + size / 64) {
         const std::vector<std::uint8_t> cut(good.begin(), good.begin() + size);
-        EXPECT_NE(errorOf(target, cut).find("truncated"), std::string::npos) << size;
+        EXPECT_NE(restoreError(target, cut).find("truncated"), std::string::npos) << size;
     }
     std::vector<std::uint8_t> longer = good;
     longer.push_back(0);
-    EXPECT_NE(errorOf(target, longer).find("after its end"), std::string::npos);
+    EXPECT_NE(restoreError(target, longer).find("after its end"), std::string::npos);
     // Every flipped byte of the payload or checksum is caught by the checksum.
     for (std::size_t i = kHeader; i < good.size(); i += 1 + i / 97) {
         std::vector<std::uint8_t> bad = good;
         bad[i] ^= 0x5A;
-        EXPECT_NE(errorOf(target, bad).find("corrupted"), std::string::npos) << i;
+        EXPECT_NE(restoreError(target, bad).find("corrupted"), std::string::npos) << i;
     }
     EXPECT_EQ(target.stateHash(), before);
 }

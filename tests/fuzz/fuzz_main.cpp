@@ -51,8 +51,8 @@ int replay(const char* path) {
         return 3;
     }
     if (r.beyondLimitsLine > 0) {
-        std::printf("beyond the input limits after the step of line %d: %s\n",
-                    r.beyondLimitsLine, r.beyondLimits.c_str());
+        std::printf("beyond the input limits after the step of line %d: %s\n", r.beyondLimitsLine,
+                    r.beyondLimits.c_str());
         return 4;
     }
     std::printf("every body and joint finite, every body within the input limits\n");
