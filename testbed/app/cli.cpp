@@ -69,7 +69,7 @@ std::string usage() {
     std::ostringstream out;
     out << "usage: pivot-testbed [options]\n"
            "       pivot-testbed reference [--csv FILE]\n"
-           "       pivot-testbed report [--docs DIR] [--steps N] [--check]\n"
+           "       pivot-testbed report [--docs DIR] [--steps N] [--jobs N] [--check]\n"
            "\n"
            "Runs pivot2d's test scenes headless and prints, for each run, how far the joints\n"
            "came apart, the energy drift, whether the run blew up, and the cost per step.\n"
@@ -86,7 +86,9 @@ std::string usage() {
            "SVG plots in DIR/results/, and the measured observations of the seed note into\n"
            "DIR/position-correction.md (DIR defaults to docs: run it from the repository root).\n"
            "With --check it writes nothing: it regenerates the report in a scratch folder and\n"
-           "fails if anything but a timing differs from DIR's (what CI runs).\n"
+           "fails if anything but a timing differs from DIR's (what CI runs). --jobs N runs\n"
+           "its trials on N threads (default: 1, whose timings the report quotes; with --check,\n"
+           "every hardware thread).\n"
            "\n"
            "options:\n"
            "  --scene NAME      run only this scene: "
@@ -205,6 +207,9 @@ CliOptions parseCli(const std::vector<std::string>& args) {
             options.csvPath = value();
         } else if (arg == "--docs") {
             options.docsDir = value();
+        } else if (arg == "--jobs") {
+            if (options.command != Command::Report) throw CliError("--jobs goes with report");
+            options.jobs = static_cast<int>(parseInteger(arg, value(), 1, 64));
         } else if (arg == "--check") {
             if (options.command != Command::Report) throw CliError("--check goes with report");
             options.check = true;

@@ -32,6 +32,9 @@ struct CliOptions {
     std::string docsDir = "docs";         ///< report: where results.md goes
     /// report: regenerate into a scratch folder and compare with docsDir, timings masked.
     bool check = false;
+    /// report: threads running its trials. Timings are taken from one-thread reports; --check
+    /// masks them and runs on every hardware thread unless told.
+    int jobs = 0;  ///< 0: one, or with --check every hardware thread
     bool help = false;
     bool list = false;
 };

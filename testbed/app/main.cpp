@@ -1,4 +1,5 @@
 // pivot-testbed: runs the scenes headless and prints what each position solver does.
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
         if (options.command == testbed::Command::Report) {
             if (options.check) {
                 const std::string differences =
-                    report::checkReport(options.docsDir, options.steps, std::cout);
+                    report::checkReport(options.docsDir, options.steps, options.jobs, std::cout);
                 if (!differences.empty()) {
                     std::cerr << "pivot-testbed: the committed report no longer says what the code "
                                  "does; regenerate it with `pivot-testbed report`:\n"
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
             report::ReportSettings settings;
             settings.docsDir = options.docsDir;
             settings.steps = options.steps;
+            settings.threads = std::max(1, options.jobs);
             std::string problem = report::generateReport(settings, std::cout);
             if (!problem.empty()) {
                 std::cerr << "pivot-testbed: " << problem << "\n";

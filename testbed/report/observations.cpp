@@ -39,6 +39,18 @@ std::string recovery(double seconds) {
     return num(seconds) + " s";
 }
 
+// The largest separation's median over a configuration's trials, with its range.
+std::string separationRange(const RunRecord& r) {
+    return spreadOf(r.trials, [](const scenes::RunMetrics& t) { return t.maxSeparation; })
+        .text(" m");
+}
+
+int blownUpTrials(const RunRecord& r) {
+    int blown = 0;
+    for (const scenes::RunMetrics& t : r.trials) blown += t.blewUp ? 1 : 0;
+    return blown;
+}
+
 std::string verdict(bool confirmed) {
     return confirmed ? "confirmed" : "not confirmed";
 }
@@ -257,64 +269,87 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
                                     : "not confirmed"});
     }
     {
-        const RunRecord& mn = get(m, "pendulum", kMNGS);
-        const RunRecord& f = get(m, "pendulum", kFNGS);
+        // Spun at 100 rad/s the ball starts at 500 m/s, and in its first steps the translation
+        // and rotation clamps, not the solver, decide where it goes; at 20 rad/s no clamp acts.
+        const RunRecord& fast = get(m, "pendulum", kMNGS);
+        const RunRecord& fastFull = get(m, "pendulum", kFNGS);
+        const RunRecord& slow = get(m, "pendulum_20", kMNGS);
+        const RunRecord& slowFull = get(m, "pendulum_20", kFNGS);
         const RunRecord& drag = get(m, "pendulum_drag", kMNGS);
-        bool unstable = mn.metrics.blewUp || mn.metrics.maxSeparation > 0.1;
-        std::string v = !unstable           ? "not confirmed"
-                        : mn.metrics.blewUp ? "confirmed"
-                                            : "partly: the joint flies apart, but recovers "
-                                              "instead of blowing up";
-        out.push_back({"ModifiedNGS",
-                       "the simple pendulum goes unstable at high angular velocities",
-                       "pendulum at 100 rad/s: largest and final separation and blow-up "
-                       "(non-finite or faster than 1e4 m/s); confirmed if it blows up",
-                       "max separation " + metres(mn.metrics.maxSeparation) + " (FullNGS " +
-                           metres(f.metrics.maxSeparation) + "), final " +
-                           metres(mn.metrics.finalSeparation) +
-                           ", blew up: " + (mn.metrics.blewUp ? "yes" : "no") +
-                           "; pendulum_drag: " + metres(drag.metrics.maxSeparation),
-                       v});
+        const bool unstable = blownUpTrials(slow) > 0 || slow.metrics.maxSeparation > 0.1;
+        out.push_back(
+            {"ModifiedNGS", "the simple pendulum goes unstable at high angular velocities",
+             "the pendulum at 20 rad/s (pendulum_20: 100 m/s, below the speed clamps) "
+             "and at 100 rad/s (pendulum: 500 m/s, cut by the clamps in its first "
+             "steps), and pendulum_drag: largest separation and blow-ups over the "
+             "perturbed runs, and the body-steps the clamps cut; confirmed if at "
+             "20 rad/s, where the solver alone decides, ModifiedNGS's median largest "
+             "separation passes 10 cm or a run blows up",
+             "20 rad/s: " + separationRange(slow) + " (FullNGS " + separationRange(slowFull) +
+                 "), clamped body-steps " + std::to_string(slow.metrics.clampedBodySteps()) +
+                 ", blown up " + std::to_string(blownUpTrials(slow)) + "; 100 rad/s: " +
+                 separationRange(fast) + " (FullNGS " + separationRange(fastFull) +
+                 "), clamped body-steps " + std::to_string(fast.metrics.clampedBodySteps()) +
+                 ", settled " + metres(fast.metrics.settledSeparation) + ", blown up " +
+                 std::to_string(blownUpTrials(fast)) + "; pendulum_drag: " + separationRange(drag),
+             unstable ? "confirmed"
+             : fast.metrics.maxSeparation > 0.1
+                 ? "not confirmed: below the clamps it holds; the separation at "
+                   "100 rad/s comes with the clamps, and it recovers"
+                 : "not confirmed"});
     }
     {
-        // The note's open question, on the scalar constraints built so far: the distance joint's
-        // rod (distance_pendulum, the note's pendulum on a rod) and rope limits (rope), tied at
-        // the bodies' centres, the pulley, tied at the boxes' tops (lever arms), the wheel
-        // joint's line and limits (car), and the gears (pulley_gear).
+        // The note's open question on the scalar constraints. Where a row's effective mass
+        // cannot change with the pose (rows through the centres of mass: distance_pendulum,
+        // rope; gears between revolute joints: pulley_gear), ModifiedNGS's frozen K is FullNGS's
+        // K and the two agree by construction: shown, not judged. Judged where it changes: the
+        // pulley (boxes hung by their tops), the car's wheel lines and suspension limits, the
+        // rope of planks tied by their ends, and the rod tied to the ball's rim.
         const RunRecord& pin = get(m, "pendulum", kMNGS);
         const RunRecord& pinFull = get(m, "pendulum", kFNGS);
-        std::string result = "pendulum (revolute pin, 2x2 block): ModifiedNGS " +
-                             metres(pin.metrics.maxSeparation) + ", FullNGS " +
-                             metres(pinFull.metrics.maxSeparation);
-        bool viable = true;
-        for (const char* scene : {"distance_pendulum", "rope", "pulley", "car", "pulley_gear"}) {
+        std::string same;
+        for (const char* scene : {"distance_pendulum", "rope", "pulley_gear"}) {
+            same += std::string(same.empty() ? "" : ", ") + scene + " " +
+                    metres(get(m, scene, kMNGS).metrics.maxSeparation) + " and " +
+                    metres(get(m, scene, kFNGS).metrics.maxSeparation);
+        }
+        std::string result;
+        std::string failed;
+        for (const char* scene : {"pulley", "car", "plank_rope", "distance_pendulum_offset"}) {
             const RunRecord& mn = get(m, scene, kMNGS);
             const RunRecord& f = get(m, scene, kFNGS);
-            viable = viable && !mn.metrics.blewUp &&
-                     mn.metrics.maxSeparation <= 1.5 * f.metrics.maxSeparation + 1e-4;
-            result += std::string("; ") + scene + ": ModifiedNGS " +
-                      metres(mn.metrics.maxSeparation) + ", FullNGS " +
-                      metres(f.metrics.maxSeparation) +
-                      (mn.metrics.blewUp ? ", ModifiedNGS blew up" : "");
+            const bool close = blownUpTrials(mn) == 0 &&
+                               mn.metrics.maxSeparation <= 1.5 * f.metrics.maxSeparation + 1e-4;
+            if (!close) failed += std::string(failed.empty() ? "" : ", ") + scene;
+            result += std::string(result.empty() ? "" : "; ") + scene + ": ModifiedNGS " +
+                      separationRange(mn) + ", FullNGS " + separationRange(f) +
+                      (blownUpTrials(mn) > 0
+                           ? ", ModifiedNGS blew up in " + std::to_string(blownUpTrials(mn))
+                           : "");
         }
+        result += "; where K cannot change (ModifiedNGS and FullNGS): " + same +
+                  "; for contrast the revolute pendulum (2x2 block): ModifiedNGS " +
+                  metres(pin.metrics.maxSeparation) + ", FullNGS " +
+                  metres(pinFull.metrics.maxSeparation);
         out.push_back({"ModifiedNGS on scalar constraints",
                        "Modified NGS is not a robust method for the revolute joint ... Perhaps "
                        "it is viable with other constraint types, especially scalar constraints "
                        "where the effective mass is a scalar",
-                       "the distance joint's rod (distance_pendulum: the note's pendulum, its "
-                       "stick a distance joint, at 100 rad/s) and its rope limits (rope), tied "
-                       "at the bodies' centres where the scalar effective mass never changes, "
-                       "the pulley, tied at the boxes' tops where it changes as they swing, and "
-                       "the wheel joints' lines and suspension limits (car, the chassis "
-                       "pitching over bumps), and two gears in a train (pulley_gear: a motor "
-                       "drives a rack into its limits through both, against a counterweight on "
-                       "a pulley; the scene's largest separation over all its joints, the "
-                       "gears' in rad): largest separation beside FullNGS, and the revolute "
-                       "pendulum for contrast; confirmed if ModifiedNGS never blows up and "
-                       "stays within 50% (or 0.1 mm) of FullNGS on all five. The prismatic "
-                       "axis's one position row, its limit, joins the prismatic joint's block "
-                       "(next observation)",
-                       result, verdict(viable)});
+                       "the scalar rows whose effective mass changes with the pose: the pulley "
+                       "(boxes hung by their tops, swinging), the car's wheel lines and "
+                       "suspension limits (the chassis pitching over bumps), plank_rope (planks "
+                       "tied end to end by rope limits) and distance_pendulum_offset (the rod "
+                       "tied to the ball's rim, at 100 rad/s): median largest separation beside "
+                       "FullNGS over the perturbed runs; confirmed if ModifiedNGS never blows up "
+                       "and its median stays within 50% (or 0.1 mm) of FullNGS's on all four. "
+                       "Rows through the centres of mass (distance_pendulum, rope) and gears "
+                       "between revolute joints (pulley_gear) have an effective mass no pose "
+                       "changes, where the two agree by construction; they are shown, not "
+                       "judged",
+                       result,
+                       failed.empty()
+                           ? "confirmed"
+                           : "not confirmed: more than 50% beyond FullNGS on " + failed});
     }
     {
         // The same question on the block constraints: the weld's 3x3 (point and angle) and the
@@ -349,7 +384,9 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
         double worst = 0.0;
         for (const scenes::SceneInfo& info : scenes::allScenes()) {
             const RunRecord& f = get(m, info.name, kFNGS);
-            if (f.metrics.blewUp) ++blowUps;
+            blowUps += blownUpTrials(f);
+            // Scenes with no joint that holds a position tie at 0 and say nothing of stiffness.
+            if (f.positionJoints == 0) continue;
             double others = 1e30;
             for (PositionSolver s : {kB, kPV, kMNGS}) {
                 others = std::min(others, get(m, info.name, s).metrics.maxSeparation);
@@ -363,11 +400,13 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
         }
         bool confirmed = blowUps == 0 && 2 * best > total;
         out.push_back({"FullNGS", "stable in all tests. The joints display good stiffness",
-                       "every scene: blow-ups, and in how many scenes FullNGS's largest "
-                       "separation is the smallest of the four (within 10%); confirmed if it "
-                       "never blows up and is the stiffest in most scenes",
-                       std::to_string(blowUps) + " blow-ups; stiffest in " + std::to_string(best) +
-                           " of " + std::to_string(total) + " scenes; its largest separation " +
+                       "every scene, every perturbed run: blow-ups; and, over the scenes with a "
+                       "joint that holds a position, in how many FullNGS's median largest "
+                       "separation is the smallest of the seed note's four (within 10%); "
+                       "confirmed if no run blows up and it is the stiffest in most of them",
+                       std::to_string(blowUps) + " runs blown up; stiffest in " +
+                           std::to_string(best) + " of " + std::to_string(total) +
+                           " scenes with position joints; its largest median separation " +
                            metres(worst) + " (" + worstScene + ")",
                        verdict(confirmed)});
     }
@@ -386,16 +425,26 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
                        verdict(sag.mean < 5.0 && f.metrics.maxSeparation < 0.1)});
     }
     {
+        // A question of robustness (does the simulation survive and recover?), not of accuracy:
+        // the accuracy is reported beside it.
         std::string result;
         bool robust = true;
         for (const std::string& scene : iterationSweepScenes()) {
             const RunRecord& one = get(m, scene, kFNGS, -1.0f, 1);
             const RunRecord& three = get(m, scene, kFNGS);
-            robust = robust && !one.metrics.blewUp &&
-                     one.metrics.maxSeparation <= 2.0 * three.metrics.maxSeparation;
-            result += std::string(result.empty() ? "" : "; ") + scene + ": max separation " +
-                      metres(one.metrics.maxSeparation) + " with 1 iteration, " +
-                      metres(three.metrics.maxSeparation) + " with 3; " +
+            const bool threeRecovers = three.metrics.recoverySeconds >= 0.0;
+            const bool oneRecovers = one.metrics.recoverySeconds >= 0.0;
+            robust = robust && one.torn() == 0 && (oneRecovers || !threeRecovers);
+            result += std::string(result.empty() ? "" : "; ") + scene + ": torn " +
+                      std::to_string(one.torn()) + " of " + std::to_string(kTrials) +
+                      " with 1 iteration, " + std::to_string(three.torn()) +
+                      " with 3; back "
+                      "within slop " +
+                      recovery(one.metrics.recoverySeconds) + " and " +
+                      recovery(three.metrics.recoverySeconds) + "; max separation " +
+                      separationRange(one) + " and " + separationRange(three) + "; " +
+                      num(three.metrics.meanPositionIterations) +
+                      " NGS iterations run per step of the 3 allowed; " +
                       num(one.metrics.microsecondsPerStep) + " us against " +
                       num(three.metrics.microsecondsPerStep) + " us per step";
         }
@@ -403,8 +452,10 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
                        "the number of NGS iterations can be reduced for better performance "
                        "without harming robustness much",
                        "FullNGS with 1 position iteration instead of 3 on chain, bridge_heavy "
-                       "and ragdoll; confirmed if it never blows up and never separates more "
-                       "than twice as far",
+                       "and ragdoll, over the perturbed runs; robustness is surviving and "
+                       "recovering, so: confirmed if no run with 1 iteration tears or blows up, "
+                       "and wherever 3 iterations bring the joints back within the slop (the "
+                       "median run), 1 does too; the separation and cost are reported beside",
                        result, verdict(robust)});
     }
     {

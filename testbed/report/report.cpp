@@ -12,6 +12,8 @@
 #include "report/run_matrix.h"
 #include "report/substep_study.h"
 #include "report/svg.h"
+#include "report/trials.h"
+#include "scenes/perturbation.h"
 
 namespace pivot::report {
 
@@ -57,14 +59,25 @@ bool writeFile(const fs::path& path, const std::string& text, std::string& probl
     return static_cast<bool>(out);
 }
 
+// "k/n" trials, bold when any.
+std::string countOf(int count) {
+    const std::string text = std::to_string(count) + "/" + std::to_string(kTrials);
+    return count > 0 ? "**" + text + "**" : text;
+}
+
 std::string runRow(const RunRecord& r) {
     const scenes::RunMetrics& m = r.metrics;
+    int blewUp = 0;
+    for (const scenes::RunMetrics& t : r.trials) blewUp += t.blewUp ? 1 : 0;
+    const Spread maxSeparation =
+        spreadOf(r.trials, [](const scenes::RunMetrics& t) { return t.maxSeparation; });
     std::ostringstream row;
     row << "| " << positionSolverName(r.solver) << " | " << num("%.2f", r.bias) << " | "
-        << num("%.2e", m.maxSeparation) << " | " << num("%.2e", m.rmsSeparation) << " | "
-        << num("%.2e", m.finalSeparation) << " | " << optional("%.2f s", m.recoverySeconds) << " | "
-        << optional("%.2e", m.jitter) << " | " << num("%.3f", m.maxLimitViolation) << " | "
-        << num("%.4g", m.energyDrift()) << " | " << (m.blewUp ? "**yes**" : "no") << " | "
+        << maxSeparation.text() << " | " << num("%.2e", m.settledSeparation) << " | "
+        << countOf(r.torn()) << " | " << num("%.2e", m.rmsSeparation) << " | "
+        << optional("%.2f s", m.recoverySeconds) << " | " << optional("%.2e", m.jitter) << " | "
+        << num("%.3f", m.maxLimitViolation) << " | " << num("%.4g", m.energyDrift()) << " | "
+        << countOf(blewUp) << " | " << m.clampedBodySteps() << " | "
         << num("%.2f", m.meanPositionIterations) << " | " << num("%.1f", m.microsecondsPerStep)
         << " |\n";
     return row.str();
@@ -176,8 +189,9 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
     fs::create_directories(figures, ec);
     if (ec) return "cannot create " + figures.string() + ": " + ec.message();
 
-    RunMatrix matrix = runMatrix(
-        settings.steps, [&](const std::string& scene) { log << "running " << scene << "\n"; });
+    RunMatrix matrix = runMatrix(settings.steps, settings.threads, [&](const std::string& scene) {
+        log << "running " << scene << "\n";
+    });
     std::vector<Observation> observations = evaluateObservations(matrix);
 
     std::string problem;
@@ -187,10 +201,20 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
           "this page, its figures in `docs/results/` and the observations in "
           "`docs/position-correction.md`). Every scene runs "
        << settings.steps << " steps at 60 Hz with 8 velocity and 3 position iterations and "
-       << "the NGS contact correction. Microseconds per step depend on the machine: this run: "
-       << machine() << ", " << today() << ".\n\n"
+       << "the NGS contact correction. Every configuration runs " << kTrials
+       << " times, each with its own perturbation (seeds 1 to " << kTrials
+       << ": gravity tilted and scaled, and every body's initial velocity scaled, each by up "
+          "to "
+       << num("%g", scenes::kPerturbation)
+       << " relative; `testbed/scenes/perturbation.h`), and every figure is the median over "
+          "those runs; *max sep* also gives their range. Microseconds per step depend on the "
+          "machine: this run: "
+       << machine() << ", " << today() << ", the runs of a scene interleaved on one thread.\n\n"
        << "Columns: *max*, *RMS* and *final sep* are the joint separation |anchorB - anchorA| "
-          "(largest over joints; max and RMS over the run, final after the last step); "
+          "(largest over joints; max and RMS over the run, *settled* over its last "
+       << num("%g", scenes::kSettleSeconds) << " s); *torn* counts the runs still further than "
+       << num("%g", scenes::kTornSeparation)
+       << " m apart then, or blown up; "
           "*recovery* is the time from the end of the scene's disturbance until every joint is "
           "back within the linear slop (5 mm) for good (`never` when it is not back by the "
           "end, `-` when the scene has no disturbance); *jitter* is the RMS speed of the "
@@ -198,7 +222,9 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
           "the furthest a limited joint went past its limit (rad); *drift* is the change of "
           "kinetic plus potential energy (J; bodies a scene adds count from the moment they "
           "appear; the tumbler is driven); *blew up* is a non-finite state or a body faster "
-          "than 1e4 m/s; *NGS its* the position iterations actually run per step.\n\n";
+          "than 1e4 m/s (runs of n); *clamps* the body-steps cut short by the translation or "
+          "rotation clamp (where they are many, the clamps shape the run more than the "
+          "solver); *NGS its* the position iterations actually run per step.\n\n";
 
     md << "## The seed note's observations\n\n"
        << "Each observation of `shared/seed/position-correction.txt`, the measurement that "
@@ -214,10 +240,10 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
         const std::string name = info.name;
         md << "### " << name << "\n\n"
            << info.description << ".\n\n"
-           << "| solver | bias | max sep (m) | RMS sep (m) | final sep (m) | recovery | jitter "
-              "(m/s) | limit (rad) | drift (J) | blew up | NGS its | us/step |\n"
-           << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: "
-              "|\n";
+           << "| solver | bias | max sep (m) | settled (m) | torn | RMS sep (m) | recovery | "
+              "jitter (m/s) | limit (rad) | drift (J) | blew up | clamps | NGS its | us/step |\n"
+           << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: "
+              "| ---: | ---: |\n";
         for (const RunRecord& r : matrix.runs) {
             if (r.scene == name && r.positionIterations == kDefaultPositionIterations) {
                 md << runRow(r);
@@ -237,8 +263,9 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
     }
 
     md << "## Cost against error\n\n"
-       << "Each point is one run: a position solver at 1, 2, 3, 5 or 10 position iterations "
-          "(the label), its cost in microseconds per step against its RMS joint separation.\n\n";
+       << "Each point is one configuration: a position solver at 1, 2, 3, 5 or 10 position "
+          "iterations (the label), its median cost in microseconds per step against its median "
+          "RMS joint separation.\n\n";
     for (const std::string& scene : iterationSweepScenes()) {
         const std::string file = "cost-" + scene + ".svg";
         if (!writeFile(figures / file, costPlot(matrix, scene), problem)) return problem;
@@ -259,8 +286,9 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
         md << "\n";
     }
 
-    const SubstepStudy study = runSubstepStudy(
-        settings.steps, [&](const std::string& what) { log << "running " << what << "\n"; });
+    const SubstepStudy study =
+        runSubstepStudy(settings.steps, settings.threads,
+                        [&](const std::string& what) { log << "running " << what << "\n"; });
     md << study.markdown;
     for (const auto& [file, svg] : study.figures) {
         if (!writeFile(figures / file, svg, problem)) return problem;
@@ -268,7 +296,7 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
 
     double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     md << "This page took " << num("%.0f", seconds) << " s to generate ("
-       << matrix.runs.size() + study.runs.size() << " runs).\n";
+       << (matrix.runs.size() + study.runs.size()) * kTrials << " runs).\n";
     if (!writeFile(docs / "results.md", md.str(), problem)) return problem;
 
     if (settings.updatePositionCorrection) {

@@ -15,6 +15,9 @@ constexpr const char* kObservationsEnd = "<!-- observations:end -->";
 struct ReportSettings {
     std::string docsDir = "docs";  ///< where results.md and results/ go
     int steps = 600;
+    /// Threads running the trials. Timings taken with more than one share the machine: the
+    /// committed report's are from one.
+    int threads = 1;
     /// Also rewrite the observations block of <docsDir>/position-correction.md.
     bool updatePositionCorrection = true;
 };

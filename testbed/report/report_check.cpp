@@ -7,6 +7,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 #include "report/report.h"
@@ -145,7 +146,7 @@ std::string firstDifferences(const std::string& committed, const std::string& re
 
 }  // namespace
 
-std::string checkReport(const std::string& docsDir, int steps, std::ostream& log) {
+std::string checkReport(const std::string& docsDir, int steps, int threads, std::ostream& log) {
     const fs::path docs(docsDir);
     const fs::path scratch =
         fs::temp_directory_path() / ("pivot-report-check-" + std::to_string(::getpid()));
@@ -158,6 +159,8 @@ std::string checkReport(const std::string& docsDir, int steps, std::ostream& log
     ReportSettings settings;
     settings.docsDir = scratch.string();
     settings.steps = steps;
+    settings.threads =
+        threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     std::ostringstream quiet;
     const std::string problem = generateReport(settings, quiet);
     if (!problem.empty()) return problem;

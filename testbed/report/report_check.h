@@ -19,6 +19,7 @@ std::string maskTimings(const std::string& text);
 
 /// Regenerates the report beside `docsDir` and compares. Returns an empty string when they
 /// agree, else what differs (the first lines of each differing file); progress goes to `log`.
-std::string checkReport(const std::string& docsDir, int steps, std::ostream& log);
+/// `threads` runs the trials (0: every hardware thread).
+std::string checkReport(const std::string& docsDir, int steps, int threads, std::ostream& log);
 
 }  // namespace pivot::report

@@ -1,7 +1,9 @@
 #include "report/run_matrix.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <mutex>
 
 #include "scenes/parts.h"
 
@@ -99,50 +101,112 @@ SnapshotFrame captureFrame(const World& world, const std::string& caption) {
 
 namespace {
 
-RunRecord runOne(const scenes::SceneInfo& info, PositionSolver solver, float bias,
-                 int positionIterations, int steps, bool withSnapshots) {
+// One configuration of the matrix.
+struct Config {
+    const scenes::SceneInfo* info = nullptr;
+    PositionSolver solver = PositionSolver::FullNGS;
+    float bias = 0.0f;
+    int positionIterations = kDefaultPositionIterations;
+    bool withSnapshots = false;
+};
+
+// One trial of a configuration: its metrics and time series.
+struct Trial {
+    scenes::RunMetrics metrics;
+    std::vector<float> maxSeparation;
+    std::vector<float> jointMaxSeparation;
+    std::vector<SnapshotFrame> snapshots;
+    Vec2 origin;
+    int positionJoints = 0;
+};
+
+bool holdsAPosition(JointType type) {
+    return type != JointType::Friction && type != JointType::Motor;
+}
+
+Trial runTrial(const Config& config, int trial, int steps) {
     scenes::SceneOptions options;
-    options.solver = solver;
-    options.biasFactor = bias;
-    scenes::Scene scene = scenes::buildScene(info, options);
-    RunRecord record;
-    record.scene = info.name;
-    record.solver = solver;
-    record.bias = bias;
-    record.positionIterations = positionIterations;
-    record.jointMaxSeparation.assign(scene.joints.size(), 0.0f);
-    record.origin = scene.origin;
+    options.solver = config.solver;
+    options.biasFactor = config.bias;
+    options.perturbation = trialSeed(trial);
+    scenes::Scene scene = scenes::buildScene(*config.info, options);
+    Trial out;
+    out.jointMaxSeparation.assign(scene.joints.size(), 0.0f);
+    out.origin = scene.origin;
+    for (JointId joint : scene.joints) {
+        out.positionJoints += holdsAPosition(scene.world->jointType(joint)) ? 1 : 0;
+    }
 
     scenes::RunSettings settings;
     settings.steps = steps;
-    settings.positionIterations = positionIterations;
+    settings.positionIterations = config.positionIterations;
+    const bool withSnapshots = config.withSnapshots && trial == 0;
     const int snapshotEvery = std::max(1, steps / 5);
     auto snapshot = [&](int stepsDone) {
         char caption[32];
         std::snprintf(caption, sizeof caption, "t = %.1f s", stepsDone / settings.hz);
-        record.snapshots.push_back(captureFrame(*scene.world, caption));
+        out.snapshots.push_back(captureFrame(*scene.world, caption));
     };
     if (withSnapshots) snapshot(0);
-    record.metrics = scenes::runScene(scene, settings, [&](int step) {
+    out.metrics = scenes::runScene(scene, settings, [&](int step) {
         float worst = 0.0f;
         for (std::size_t j = 0; j < scene.joints.size(); ++j) {
             float s = scene.world->jointSeparation(scene.joints[j]);
-            if (!(s <= record.jointMaxSeparation[j])) record.jointMaxSeparation[j] = s;
+            if (!(s <= out.jointMaxSeparation[j])) out.jointMaxSeparation[j] = s;
             if (!(s <= worst)) worst = s;
         }
-        record.maxSeparation.push_back(worst);
+        out.maxSeparation.push_back(worst);
         if (withSnapshots && (step + 1) % snapshotEvery == 0) snapshot(step + 1);
     });
+    return out;
+}
+
+// Element by element, the median over the trials that have the element (a run that blew up
+// stops early, and a scene may add joints as it runs).
+std::vector<float> medianSeries(const std::vector<Trial>& trials,
+                                std::vector<float> Trial::*series) {
+    std::size_t length = 0;
+    for (const Trial& t : trials) length = std::max(length, (t.*series).size());
+    std::vector<float> out(length);
+    std::vector<double> values;
+    for (std::size_t i = 0; i < length; ++i) {
+        values.clear();
+        for (const Trial& t : trials) {
+            if (i < (t.*series).size()) values.push_back((t.*series)[i]);
+        }
+        out[i] = static_cast<float>(spreadOf(values).median);
+    }
+    return out;
+}
+
+RunRecord combine(const Config& config, std::vector<Trial>& trials) {
+    RunRecord record;
+    record.scene = config.info->name;
+    record.solver = config.solver;
+    record.bias = config.bias;
+    record.positionIterations = config.positionIterations;
+    for (const Trial& t : trials) record.trials.push_back(t.metrics);
+    record.metrics = medianMetrics(record.trials);
+    record.maxSeparation = medianSeries(trials, &Trial::maxSeparation);
+    record.jointMaxSeparation = medianSeries(trials, &Trial::jointMaxSeparation);
+    record.snapshots = std::move(trials.front().snapshots);
+    record.origin = trials.front().origin;
+    record.positionJoints = trials.front().positionJoints;
     return record;
 }
 
 }  // namespace
 
-RunMatrix runMatrix(int steps, const std::function<void(const std::string&)>& progress) {
-    RunMatrix matrix;
-    matrix.steps = steps;
+int RunRecord::torn() const {
+    return tornCount(trials);
+}
+
+RunMatrix runMatrix(int steps, int threads,
+                    const std::function<void(const std::string&)>& progress) {
+    std::vector<Config> configs;
+    std::vector<std::size_t> sceneStart;  // index of each scene's first configuration
     for (const scenes::SceneInfo& info : scenes::allScenes()) {
-        if (progress) progress(info.name);
+        sceneStart.push_back(configs.size());
         for (int s = 0; s < kPositionSolverCount; ++s) {
             auto solver = static_cast<PositionSolver>(s);
             bool velocityLevel =
@@ -150,22 +214,54 @@ RunMatrix runMatrix(int steps, const std::function<void(const std::string&)>& pr
             std::vector<float> biases = {defaultBiasFactor(solver)};
             if (velocityLevel) biases = sweptBiases();
             for (float bias : biases) {
-                matrix.runs.push_back(runOne(info, solver, bias, kDefaultPositionIterations, steps,
-                                             solver == PositionSolver::FullNGS));
+                configs.push_back({&info, solver, bias, kDefaultPositionIterations,
+                                   solver == PositionSolver::FullNGS});
             }
         }
-    }
-    for (const std::string& name : iterationSweepScenes()) {
-        const scenes::SceneInfo* info = scenes::findScene(name);
-        if (!info) continue;
+        if (std::find(iterationSweepScenes().begin(), iterationSweepScenes().end(), info.name) ==
+            iterationSweepScenes().end()) {
+            continue;
+        }
         for (int s = 0; s < kPositionSolverCount; ++s) {
             auto solver = static_cast<PositionSolver>(s);
             for (int iterations : sweptIterations()) {
                 if (iterations == kDefaultPositionIterations) continue;  // a main run already
-                matrix.runs.push_back(
-                    runOne(*info, solver, defaultBiasFactor(solver), iterations, steps, false));
+                configs.push_back({&info, solver, defaultBiasFactor(solver), iterations, false});
             }
         }
+    }
+    sceneStart.push_back(configs.size());
+
+    // Jobs in the order the timings want: a scene at a time, within it trial by trial, every
+    // configuration of the scene in each.
+    struct Job {
+        std::size_t config;
+        int trial;
+        bool firstOfScene;
+    };
+    std::vector<Job> jobs;
+    for (std::size_t scene = 0; scene + 1 < sceneStart.size(); ++scene) {
+        for (int trial = 0; trial < kTrials; ++trial) {
+            for (std::size_t c = sceneStart[scene]; c < sceneStart[scene + 1]; ++c) {
+                jobs.push_back({c, trial, trial == 0 && c == sceneStart[scene]});
+            }
+        }
+    }
+    std::vector<std::vector<Trial>> results(configs.size(), std::vector<Trial>(kTrials));
+    std::mutex progressMutex;
+    runJobs(jobs.size(), threads, [&](std::size_t i) {
+        const Job& job = jobs[i];
+        if (job.firstOfScene && progress) {
+            std::lock_guard<std::mutex> lock(progressMutex);
+            progress(configs[job.config].info->name);
+        }
+        results[job.config][job.trial] = runTrial(configs[job.config], job.trial, steps);
+    });
+
+    RunMatrix matrix;
+    matrix.steps = steps;
+    for (std::size_t c = 0; c < configs.size(); ++c) {
+        matrix.runs.push_back(combine(configs[c], results[c]));
     }
     return matrix;
 }

@@ -1,6 +1,7 @@
 // The runs behind the generated report: every scene with every position solver, the bias sweep
 // for the velocity-level solvers, and the position-iteration sweep behind the cost-against-
-// error plots. Each run keeps its metrics and the time series the plots need.
+// error plots. Each configuration runs kTrials perturbed times (report/trials.h) and keeps every
+// trial's metrics, their medians, and the median time series the plots need.
 #pragma once
 
 #include <functional>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "report/svg.h"
+#include "report/trials.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
 
@@ -18,11 +20,15 @@ struct RunRecord {
     PositionSolver solver = PositionSolver::FullNGS;
     float bias = 0.0f;
     int positionIterations = kDefaultPositionIterations;
-    scenes::RunMetrics metrics;
-    std::vector<float> maxSeparation;       ///< per step, m
-    std::vector<float> jointMaxSeparation;  ///< per joint (in scene order), over the run, m
-    std::vector<SnapshotFrame> snapshots;   ///< only for the FullNGS main runs
-    Vec2 origin;                            ///< the scene's (Scene::origin)
+    scenes::RunMetrics metrics;              ///< each field the median over `trials`
+    std::vector<scenes::RunMetrics> trials;  ///< one per perturbation seed, trial order
+    std::vector<float> maxSeparation;        ///< per step, the trials' median, m
+    std::vector<float> jointMaxSeparation;   ///< per joint (scene order), the trials' median, m
+    std::vector<SnapshotFrame> snapshots;    ///< only for the FullNGS main runs, first trial
+    Vec2 origin;                             ///< the scene's (Scene::origin)
+    int positionJoints = 0;                  ///< joints that hold a position (not friction, motor)
+
+    int torn() const;  ///< trials that came apart (RunMetrics::torn)
 };
 
 struct RunMatrix {
@@ -42,9 +48,12 @@ const std::vector<float>& sweptBiases();
 /// Position iterations of the cost-against-error sweep.
 const std::vector<int>& sweptIterations();
 
-/// Runs the whole matrix (NGS contact correction, 8 velocity iterations). `progress` is told
-/// each scene as it starts.
-RunMatrix runMatrix(int steps, const std::function<void(const std::string&)>& progress);
+/// Runs the whole matrix (NGS contact correction, 8 velocity iterations) on `threads` threads.
+/// `progress` is told each scene as its first run starts. With one thread the trials alternate
+/// between the solvers (trial 1 of every configuration of a scene, then trial 2, ...), so that a
+/// timing comparison between them is made from interleaved runs.
+RunMatrix runMatrix(int steps, int threads,
+                    const std::function<void(const std::string&)>& progress);
 
 /// The world drawn now, for a snapshot strip.
 SnapshotFrame captureFrame(const World& world, const std::string& caption);

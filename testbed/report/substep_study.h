@@ -7,7 +7,10 @@
 // A sweep is one pass over every constraint of the island: each velocity iteration, each
 // position iteration (a relax sweep, an NGS sweep or a pseudo-velocity iteration) counts one.
 // A step of n substeps with v velocity and p position iterations costs n (v + p) sweeps
-// (NGS may stop its sweeps early; the count is the budget, not what it used).
+// (NGS may stop its sweeps early; the count is the budget, not what it used). Baumgarte has no
+// position phase, so its share of a budget goes to velocity iterations: its p is always 0.
+//
+// Every configuration runs kTrials perturbed times (report/trials.h); figures are medians.
 #pragma once
 
 #include <functional>
@@ -16,6 +19,7 @@
 #include <vector>
 
 #include "report/observations.h"
+#include "report/trials.h"
 #include "scenes/metrics.h"
 
 namespace pivot::report {
@@ -28,8 +32,10 @@ struct StudyRun {
     int substeps = 1;
     int velocityIterations = 1;
     int positionIterations = 1;
-    scenes::RunMetrics metrics;
+    scenes::RunMetrics metrics;              ///< each field the median over `trials`
+    std::vector<scenes::RunMetrics> trials;  ///< one per perturbation seed
 
+    int torn() const;
     int sweeps() const { return substeps * (velocityIterations + positionIterations); }
 };
 
@@ -44,7 +50,9 @@ struct SubstepStudy {
 /// The scenes of the substep and equal-cost sweeps: chain, ball_chain, mass_ratio.
 const std::vector<std::string>& substepStudyScenes();
 
-/// Runs the study (`steps` steps per run at 60 Hz). `progress` is told what runs.
-SubstepStudy runSubstepStudy(int steps, const std::function<void(const std::string&)>& progress);
+/// Runs the study (`steps` steps per run at 60 Hz; each configuration's trials on `threads`
+/// threads). `progress` is told what runs.
+SubstepStudy runSubstepStudy(int steps, int threads,
+                             const std::function<void(const std::string&)>& progress);
 
 }  // namespace pivot::report

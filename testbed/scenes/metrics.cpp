@@ -91,6 +91,8 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
     int lastStepApart = -1;  // the last step after which some joint was beyond the slop
     double restSpeedSquares = 0.0;
     long restSamples = 0;
+    const int settleFrom =
+        settings.steps - static_cast<int>(kSettleSeconds * double(settings.hz) + 0.5);
 
     for (int i = 0; i < settings.steps; ++i) {
         if (scene.beforeStep) {
@@ -115,6 +117,7 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
         sumSquares += s.sumSquares;
         samples += s.count;
         m.finalSeparation = s.max;
+        if (i >= settleFrom && !(s.max <= m.settledSeparation)) m.settledSeparation = s.max;
         if (!(s.max <= kLinearSlop)) lastStepApart = i;
         m.maxLimitViolation = std::max(m.maxLimitViolation, limitViolation(scene));
         if (scene.restFromStep >= 0 && i >= scene.restFromStep) {

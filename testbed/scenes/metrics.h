@@ -11,6 +11,13 @@ namespace pivot::scenes {
 /// bodies below 120 m/s, so only a broken solver gets near this.
 constexpr float kRunawaySpeed = 1.0e4f;
 
+/// The closing stretch of a run over which its settled error is measured, s.
+constexpr double kSettleSeconds = 2.0;
+/// A joint further apart than this at the end of a run has come apart, m: a link's length in
+/// the chains, far beyond any error a holding joint shows (centimetres), far below the tens of
+/// metres a torn chain stretches to.
+constexpr double kTornSeparation = 1.0;
+
 /// Kinetic plus gravitational potential energy of the scene's bodies, J, with potential
 /// measured from y = 0 along the world's gravity: sum 1/2 m v^2 + 1/2 I w^2 - m g.c.
 double mechanicalEnergy(const Scene& scene);
@@ -41,8 +48,10 @@ struct RunMetrics {
     double maxSeparation = 0;    ///< m, over all joints and steps
     double rmsSeparation = 0;    ///< m, over all joints and steps
     double finalSeparation = 0;  ///< m, largest over joints after the last step
-    double energyStart = 0;      ///< J, before the first step
-    double energyEnd = 0;        ///< J, after the last step
+    /// m, largest over joints and the last kSettleSeconds of the run (the whole run if shorter)
+    double settledSeparation = 0;
+    double energyStart = 0;  ///< J, before the first step
+    double energyEnd = 0;    ///< J, after the last step
     bool blewUp = false;
     long translationClamps = 0;         ///< body-steps limited by kMaxTranslation
     long rotationClamps = 0;            ///< body-steps limited by kMaxRotation
@@ -62,6 +71,11 @@ struct RunMetrics {
     static constexpr double kNotApplicable = -2.0;
 
     double energyDrift() const { return energyEnd - energyStart; }
+    /// Settled further apart than kTornSeparation, or blown up.
+    bool torn() const { return blewUp || !(settledSeparation <= kTornSeparation); }
+    /// Body-steps cut short by the translation or the rotation clamp (a body clamped in both
+    /// counts twice): where these are many, the clamps, not the solver, shape the run.
+    long clampedBodySteps() const { return translationClamps + rotationClamps; }
 };
 
 /// rad, how far the scene's limited joints are beyond their limits now (0 within).

@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include "perturbation.h"
+
 namespace pivot::scenes {
 
 RevoluteJointDef SceneOptions::jointAt(BodyId a, BodyId b, Vec2 anchor) const {
@@ -41,6 +43,9 @@ const std::vector<SceneInfo>& allScenes() {
     static const std::vector<SceneInfo> scenes = {
         {"pendulum", "1 m ball on a massless 5 m stick, spun at 100 rad/s about the pivot",
          buildPendulum},
+        {"pendulum_20",
+         "the pendulum spun at 20 rad/s: 100 m/s, below the speed clamps that act at 100 rad/s",
+         buildSlowPendulum},
         {"pendulum_limit", "the pendulum released level, swinging into a -60 degree limit",
          buildLimitedPendulum},
         {"double_pendulum", "two 1 m balls on 2.5 m sticks, released level (chaotic)",
@@ -65,8 +70,16 @@ const std::vector<SceneInfo>& allScenes() {
         {"distance_pendulum",
          "the pendulum on a 5 m distance joint (a rod) instead of a pin, spun at 100 rad/s",
          buildDistancePendulum},
+        {"distance_pendulum_offset",
+         "the distance pendulum with its rod tied to the ball's rim, so that its effective mass "
+         "changes as the ball turns",
+         buildOffsetDistancePendulum},
         {"rope", "30 beads tied by 0.5-1 m ropes (distance joint limits), released level",
          buildRope},
+        {"plank_rope",
+         "30 planks of 0.4 m tied end to end by 0.3-0.6 m ropes, released level (the ropes' "
+         "effective masses change with the pose)",
+         buildPlankRope},
         {"pulley", "two boxes on a 1.5:1 pulley, the lighter hung off its wheel and swinging",
          buildPulley},
         {"top_down", "12 boxes sliding and spinning on a table seen from above (friction joints)",
@@ -125,7 +138,7 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
     Scene scene;
     scene.name = info.name;
     WorldDef def;
-    def.gravity = options.gravity;
+    def.gravity = perturbedGravity(options.gravity, options.perturbation);
     def.defaultPositionSolver = options.solver;
     def.contactCorrection = options.contactCorrection;
     def.workerCount = options.workerCount;
@@ -135,6 +148,7 @@ Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
     scene.world = std::make_unique<World>(def);
     info.build(scene, options);
     if (options.continuous) scene.world->setContinuousEnabled(*options.continuous);
+    perturbVelocities(scene, options.perturbation);
     return scene;
 }
 

@@ -3,6 +3,7 @@
 // joints that its metrics look at.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -30,6 +31,9 @@ struct SceneOptions {
     /// Continuous collision switched on or off after the scene is built; unset: as the scene
     /// has it (on, unless the scene calls keepContinuousOffForJoints).
     std::optional<bool> continuous;
+    /// A seed for a perturbed run (scenes/perturbation.h): 0 builds the scene exactly; others
+    /// tilt and scale gravity and scale the initial velocities by about 1e-3.
+    std::uint32_t perturbation = 0;
 
     /// A revolute joint def at a world anchor carrying this scene's solver and bias.
     RevoluteJointDef jointAt(BodyId a, BodyId b, Vec2 anchor) const;
@@ -95,6 +99,9 @@ void buildRagdoll(Scene& scene, const SceneOptions& options);
 void buildMotorizedRagdoll(Scene& scene, const SceneOptions& options);
 void buildDistancePendulum(Scene& scene, const SceneOptions& options);
 void buildRope(Scene& scene, const SceneOptions& options);
+void buildPlankRope(Scene& scene, const SceneOptions& options);
+void buildSlowPendulum(Scene& scene, const SceneOptions& options);
+void buildOffsetDistancePendulum(Scene& scene, const SceneOptions& options);
 void buildPulley(Scene& scene, const SceneOptions& options);
 void buildElevator(Scene& scene, const SceneOptions& options);
 void buildPulleyGear(Scene& scene, const SceneOptions& options);

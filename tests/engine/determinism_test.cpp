@@ -80,6 +80,7 @@ struct RecordedHashes {
 const RecordedHashes kRecorded[] = {
     // scene               baumgarte             pseudo_velocity       modified_ngs          full_ngs
     {"pendulum",          {0xb6a90cec82227fa4ull, 0xfb868db6b0c37c0dull, 0xe418ee8e5eba8677ull, 0x8471a93ebcb7e986ull, 0x94a5546e4832002dull, 0xdf68ace10280581aull}},
+    {"pendulum_20",       {0xddf237eb487f1637ull, 0xbe2bb8447398939bull, 0x243aec7147ba2badull, 0xb6ef8e010771af0bull, 0xb4506497fe810f9full, 0x35d4cf50084fc231ull}},
     {"pendulum_limit",    {0x966e7fb29f9e3665ull, 0xdba46b0db802c0f3ull, 0x3e57b66840c60b3cull, 0x54ca4795d2f5d226ull, 0x3337ea603998a018ull, 0x055cdc09f0fa3e21ull}},
     {"double_pendulum",   {0x4525368ddb81308eull, 0xee245567db989353ull, 0x073bfe09f5d4fb96ull, 0x70c44995184295fdull, 0x7bb3c56f1fbc4307ull, 0x0b977c073bf5736aull}},
     {"motor_wheel",       {0xc0b08eedcf0ea036ull, 0x7c8acac6fbe2a54bull, 0x67160b2f22ab5e32ull, 0xf5557c5eab53bddcull, 0x453e8fc67737aab5ull, 0xac5d22c9ea508fe3ull}},
@@ -93,7 +94,9 @@ const RecordedHashes kRecorded[] = {
     {"ragdoll",           {0x68318dd3b0dd2ab8ull, 0xc184a787f09e2cecull, 0x36a878ecf06f8f36ull, 0x11b15899eda4df9dull, 0xe05522e5a8a9f791ull, 0x3ee0f5784e284196ull}},
     {"ragdoll_motorized", {0x7910df5fcecd2f80ull, 0x3cccafe791e1c5acull, 0xd0c1ecf10d558d1dull, 0xeee9a8da7209e0a1ull, 0xa74e27051ef938adull, 0xa4b74fde88e0de91ull}},
     {"distance_pendulum", {0x63256cf5928db335ull, 0xc3ab6f9f12e46332ull, 0x19f75dcc1ba52a8aull, 0x024b5b274fa830acull, 0x35b04ab74d354f11ull, 0x5112c6a0e6ec2139ull}},
+    {"distance_pendulum_offset",      {0xd7dac16e3c3c8926ull, 0xf23c258341acf813ull, 0x770091c01bd03babull, 0x98ba16d532c37ab2ull, 0x38a043897f2220aaull, 0xcc3709ef817aedf1ull}},
     {"rope",              {0x425a421d1287faedull, 0xa9898f595fbe4bc8ull, 0x68a2facdcfa153f3ull, 0x1c94a95674fc43eaull, 0x45aa8dee4d3fc689ull, 0xc3f91c33d5507421ull}},
+    {"plank_rope",        {0xad24f437d2f09068ull, 0x1f44481422545fc8ull, 0x949e100376b56420ull, 0x3018174b3a56bf26ull, 0x989471f9cda11759ull, 0xa74fb9b2b5ae0c6dull}},
     {"pulley",            {0xb24b3eadf5126d9bull, 0x1c5e62255119d7deull, 0x7a43b6230e7db0abull, 0xa16fcc617af4485cull, 0x054e19740f0b9e13ull, 0xdef363b288855e44ull}},
     {"top_down",          {0x0f06a280753964b2ull, 0xf638178d2e82fa1dull, 0x48fe47407f07b29cull, 0x2441a9076a17674aull, 0x47a9de81ab93f046ull, 0xfd14e8b4345c3fc2ull}},
     {"motor_drive",       {0xc53e8d1688f250b9ull, 0xf85d49699e8042a7ull, 0x0db1df380cb5d932ull, 0x35dce3a8ff63049bull, 0x8cfa8ccf30a4ec69ull, 0x7bcacc3ad2e2a063ull}},
@@ -154,6 +157,7 @@ struct RecordedSubsteppedHash {
 // clang-format off
 const RecordedSubsteppedHash kRecordedSubstepped[] = {
     {"pendulum",          0x8e42a993fbcd0346ull},
+    {"pendulum_20",       0x2248de9723bb043dull},
     {"pendulum_limit",    0x4b4440b50e29d29full},
     {"double_pendulum",   0xe5234846a076d2d6ull},
     {"motor_wheel",       0x6c55f5871647f77bull},
@@ -167,7 +171,9 @@ const RecordedSubsteppedHash kRecordedSubstepped[] = {
     {"ragdoll",           0x047ce1c13009ef0cull},
     {"ragdoll_motorized", 0x7466049671ba9092ull},
     {"distance_pendulum", 0x499139b578afe957ull},
+    {"distance_pendulum_offset",      0x30ad1d257632c330ull},
     {"rope",              0x66fe0bf75fe50b94ull},
+    {"plank_rope",        0x3a36ba4e6f904f21ull},
     {"pulley",            0xda25cea9bc448358ull},
     {"top_down",          0x4afadbdb41cec0f6ull},
     {"motor_drive",       0x08f83c1a1df4ff21ull},
