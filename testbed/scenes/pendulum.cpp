@@ -43,33 +43,33 @@ void buildSpinningPendulum(Scene& scene, const SceneOptions& options, float spin
     scene.joints.push_back(world.createJoint(options.jointAt(ground, ball, pivot)));
 }
 
-// The pendulum with the stick made a distance joint: the ball's centre is held 5 m from the
-// pivot. Where the revolute joint's pin is a 2x2 block, the rod is one scalar row along the
-// stick, the shape of constraint for which the note wonders whether Modified NGS is viable.
-void buildDistancePendulum(Scene& scene, const SceneOptions& options) {
+namespace {
+// The ball spun at 100 rad/s on a 5 m distance joint from the pivot to `anchorOnBall`.
+void buildRodPendulum(Scene& scene, const SceneOptions& options, Vec2 anchorOnBall) {
     World& world = *scene.world;
     const Vec2 pivot{0.0f, 10.0f};
     BodyId ground = world.createBody(BodyDef{});
     BodyId ball = spinningBall(world, pivot, 100.0f);
     DistanceJointDef jd = options.distanceJoint(ground, ball);
     jd.localAnchorA = pivot;
+    jd.localAnchorB = anchorOnBall;
     scene.bodies.push_back(ball);
     scene.joints.push_back(world.createJoint(jd));
+}
+}  // namespace
+
+// The pendulum with the stick made a distance joint: the ball's centre is held 5 m from the
+// pivot. Where the revolute joint's pin is a 2x2 block, the rod is one scalar row along the
+// stick, the shape of constraint for which the note wonders whether Modified NGS is viable.
+void buildDistancePendulum(Scene& scene, const SceneOptions& options) {
+    buildRodPendulum(scene, options, {0.0f, 0.0f});
 }
 
 // The rod tied to the ball's rim, a quarter turn round from the pivot's side: the row's lever arm
 // on the ball (rB x u) is half a metre at the start and changes as the ball turns against the rod,
 // so its effective mass changes with the pose, which the centred rod's never does.
 void buildOffsetDistancePendulum(Scene& scene, const SceneOptions& options) {
-    World& world = *scene.world;
-    const Vec2 pivot{0.0f, 10.0f};
-    BodyId ground = world.createBody(BodyDef{});
-    BodyId ball = spinningBall(world, pivot, 100.0f);
-    DistanceJointDef jd = options.distanceJoint(ground, ball);
-    jd.localAnchorA = pivot;
-    jd.localAnchorB = {0.5f, 0.0f};
-    scene.bodies.push_back(ball);
-    scene.joints.push_back(world.createJoint(jd));
+    buildRodPendulum(scene, options, {0.5f, 0.0f});
 }
 
 }  // namespace pivot::scenes
