@@ -129,8 +129,10 @@ struct RevoluteJointDef {
     bool collideConnected = false;
     /// N and N m, each in [0, kMaxMagnitude]; 0 (the default): never. Breakable joints: the
     /// joint is let go (JointLetGoReason::Force, Torque) in the step where the force, or the
-    /// torque, it applies to body B (jointReactionForce's length, |jointReactionTorque|) passes
-    /// this, measured per substep.
+    /// torque, it applies to body B passes this, measured over the step: the mean of its
+    /// substeps' forces, so that a threshold reads the same at any WorldDef::substepCount (an
+    /// impact given within one substep would read substepCount times stronger per substep).
+    /// With one substep it is jointReactionForce's length, |jointReactionTorque|.
     float breakForce = 0.0f;
     float breakTorque = 0.0f;
     std::uint64_t userData = 0;  ///< yours; pivot2d never reads it

@@ -54,6 +54,11 @@ struct Joint {
     float letGoReaction = 0.0f;     // N or N m, the force or torque that broke it (Force, Torque)
     float breakForce = 0.0f;        // N; 0: never (the def's breakForce)
     float breakTorque = 0.0f;       // N m; 0: never
+    // A breakable joint's reaction force and torque summed over the substeps of the step being
+    // solved: the break thresholds compare their mean, the force over the step. Scratch within
+    // one step (set at its first substep), so no snapshot or hash needs it.
+    Vec2 stepForceSum;
+    float stepTorqueSum = 0.0f;
     bool hasLetGoOverride = false;  // letGoOverride replaces WorldDef::jointLetGoSeparation
     float letGoOverride = 0.0f;     // m; 0: never
     std::int32_t gearCount = 0;     // gear joints built on this one (destroyed before it)

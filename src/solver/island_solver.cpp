@@ -253,8 +253,9 @@ void warmStartRemeasuring(const Team& team, IslandWorkspace& work, const StepCon
 // only when the island diverged, and then their bodies' solved state is not finite either (they
 // are discarded at the end of the step); the joint is let go then.
 void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>& joints,
-                        const SlotPool<Body>& bodies, const StepContext& step, bool lastSubstep,
+                        const SlotPool<Body>& bodies, const StepContext& step, int substep,
                         bool afterPositionPhase, IslandReport* reports) {
+    const bool lastSubstep = substep == step.substepCount - 1;
     const bool nextRemeasures =
         !lastSubstep && laterSubstepsRemeasure(step) && !work.schedule.jointsMayBreak;
     const float invDt = step.invDt;
@@ -283,11 +284,24 @@ void storeJointImpulses(const Team& team, IslandWorkspace& work, SlotPool<Joint>
                     letGo = 1;
                     ++report.letGoJoints;
                 } else if (joint.breakForce > 0.0f || joint.breakTorque > 0.0f) {
+                    // The thresholds are for the force over the step, the mean of its substeps'
+                    // (each substep's impulse over the substep): an impact given within one
+                    // substep reads the same at any substep count. With one substep the mean is
+                    // that substep's force, bit for bit.
+                    if (substep == 0) {
+                        joint.stepForceSum = joint.reactionForce();
+                        joint.stepTorqueSum = joint.reactionTorque();
+                    } else {
+                        joint.stepForceSum += joint.reactionForce();
+                        joint.stepTorqueSum += joint.reactionTorque();
+                    }
+                    if (!lastSubstep) continue;
+                    const float substeps = static_cast<float>(step.substepCount);
                     // Finite components can still square past the float range: such a force is
                     // reported as the largest float.
-                    const float force =
-                        std::min(length(joint.reactionForce()), std::numeric_limits<float>::max());
-                    const float torque = std::fabs(joint.reactionTorque());
+                    const float force = std::min(length(joint.stepForceSum) / substeps,
+                                                 std::numeric_limits<float>::max());
+                    const float torque = std::fabs(joint.stepTorqueSum) / substeps;
                     const bool forceBroke = joint.breakForce > 0.0f && force > joint.breakForce;
                     if (forceBroke || (joint.breakTorque > 0.0f && torque > joint.breakTorque)) {
                         joint.letGoFor(
@@ -455,7 +469,7 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
         });
     }
 
-    storeJointImpulses(team, work, storage.joints, bodies, step, lastSubstep, false, mine);
+    storeJointImpulses(team, work, storage.joints, bodies, step, substep, false, mine);
     if (hasMouse) {
         team.once([&] {
             for (const MouseConstraint& c : work.mouseConstraints) {
@@ -471,7 +485,7 @@ void solveSubstep(const Team& team, const IslandView& island, IslandWorkspace& w
     solvePositionPhase(team, work.groups, schedule, work.contactSolver, work.positions.data(),
                        velocities, work.positionScratch, step.positionIterations, step.dt, substep);
     // After the relax sweeps, which add to the impulses (the contacts' NGS solves do not).
-    storeJointImpulses(team, work, storage.joints, bodies, step, lastSubstep, true, mine);
+    storeJointImpulses(team, work, storage.joints, bodies, step, substep, true, mine);
     // Constraints rebuilt each substep read the impulses back from the manifolds; those built
     // once a step keep them until its end, where they also keep the first substep's approach.
     const bool builtOnce = work.contactSolver.builtOncePerStep();

@@ -189,7 +189,7 @@ const RecordedSubsteppedHash kRecordedSubstepped[] = {
     {"far_chain",         0xc69522a04bbeaaaaull},
     {"ramps",             0xe53721970cc59fe9ull},
     {"bullets",           0x6215ae81757d89e2ull},
-    {"platformer",        0x38da634a5326881aull},
+    {"platformer",        0x2a0da22ebf1fda87ull},
 };
 // clang-format on
 

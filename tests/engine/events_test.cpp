@@ -312,6 +312,63 @@ TEST(BreakableJoints, LetGoWhenTheirForceOrTorquePassesTheThreshold) {
     EXPECT_EQ(world.stateHash(), before);
 }
 
+// A break force is a force over the step, whatever the substeps: a 36 kg crate dropped on a 40 kg
+// plank pinned at both ends is stopped within one substep, which per substep would read four or
+// eight times the force of the step it lands in. Thresholds set from the largest force of a step
+// at one substep (at 1.5 and 0.5 times it) decide the same at 1, 4 and 8 substeps. (A plank much
+// lighter than the crate gives way under it at one substep, and its joints' impulses stop the
+// crate over several steps: there the force itself differs with the substeps, not its reading.)
+TEST(BreakableJoints, BreakTheSameWhateverTheSubsteps) {
+    struct Drop {
+        World world;
+        JointId left, right;
+        explicit Drop(int substeps) : world(makeDef(substeps)) {
+            const BodyId ground = world.createBody(BodyDef{});
+            const BodyId plank = bodyAt(world, BodyType::Dynamic, {0.0f, 5.0f});
+            ShapeDef plankShape;
+            plankShape.density = 80.0f;  // 40 kg
+            world.createShape(plank, plankShape, Polygon::box(1.0f, 0.125f));
+            left = world.createJoint(RevoluteJointDef::atWorldAnchor(ground, plank, {-1.0f, 5.0f}));
+            right = world.createJoint(RevoluteJointDef::atWorldAnchor(ground, plank, {1.0f, 5.0f}));
+            const BodyId crate = bodyAt(world, BodyType::Dynamic, {0.0f, 7.0f});
+            ShapeDef heavy;
+            heavy.density = 36.0f;  // 36 kg
+            world.createShape(crate, heavy, Polygon::box(0.5f, 0.5f));
+        }
+        static WorldDef makeDef(int substeps) {
+            WorldDef def;
+            def.substepCount = substeps;
+            return def;
+        }
+        // The largest force either pin applied in a step, over `steps` steps.
+        float peakForce(int steps) {
+            float peak = 0.0f;
+            for (int i = 0; i < steps; ++i) {
+                world.step(kDt);
+                for (JointId j : {left, right}) {
+                    peak = std::max(peak, length(world.jointReactionForce(j)));
+                }
+            }
+            return peak;
+        }
+        bool breaks(float threshold, int steps) {
+            world.setJointBreakForce(left, threshold);
+            world.setJointBreakForce(right, threshold);
+            for (int i = 0; i < steps; ++i) {
+                world.step(kDt);
+                if (!world.jointLetGoEvents().empty()) return true;
+            }
+            return false;
+        }
+    };
+    const float peak = Drop(1).peakForce(120);
+    EXPECT_GT(peak, 3.0f * 36.0f * 10.0f / 2.0f) << "the landing is an impact, not the weight";
+    for (int substeps : {1, 4, 8}) {
+        EXPECT_FALSE(Drop(substeps).breaks(1.5f * peak, 120)) << substeps << " substeps";
+        EXPECT_TRUE(Drop(substeps).breaks(0.5f * peak, 120)) << substeps << " substeps";
+    }
+}
+
 // Every awake dynamic or kinematic body is listed with its transform; one falling asleep is
 // listed once more with the flag, then no longer.
 TEST(BodyMoveEvents, ListAwakeBodiesAndTheirFallingAsleep) {
