@@ -8,6 +8,7 @@
 #include <sstream>
 #include <thread>
 
+#include "report/contact_study.h"
 #include "report/observations.h"
 #include "report/run_matrix.h"
 #include "report/substep_study.h"
@@ -293,10 +294,14 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
     for (const auto& [file, svg] : study.figures) {
         if (!writeFile(figures / file, svg, problem)) return problem;
     }
+    const ContactStudy contacts =
+        runContactStudy(settings.steps, settings.threads,
+                        [&](const std::string& what) { log << "running " << what << "\n"; });
+    md << contacts.markdown;
 
     double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     md << "This page took " << num("%.0f", seconds) << " s to generate ("
-       << (matrix.runs.size() + study.runs.size()) * kTrials << " runs).\n";
+       << (matrix.runs.size() + study.runs.size()) * kTrials + contacts.runs << " runs).\n";
     if (!writeFile(docs / "results.md", md.str(), problem)) return problem;
 
     if (settings.updatePositionCorrection) {

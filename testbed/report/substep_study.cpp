@@ -66,36 +66,24 @@ std::string splitText(int velocity, int position) {
     return std::to_string(velocity) + "/" + std::to_string(position);
 }
 
-scenes::RunMetrics runTrial(const scenes::SceneInfo& info, PositionSolver solver, int substeps,
-                            int velocity, int position, int steps, ContactCorrection contacts,
-                            float jointHertz, int trial) {
-    scenes::SceneOptions options;
-    options.solver = solver;
-    options.contactCorrection = contacts;
-    options.substepCount = substeps;
-    options.perturbation = trialSeed(trial);
-    scenes::Scene scene = scenes::buildScene(info, options);
-    if (jointHertz > 0.0f) {
-        for (JointId joint : scene.joints) {
-            scene.world->setJointSoftness(joint, {jointHertz, kDefaultJointDampingRatio});
-        }
-    }
-    scenes::RunSettings settings;
-    settings.steps = steps;
-    settings.velocityIterations = velocity;
-    settings.positionIterations = position;
-    return scenes::runScene(scene, settings);
-}
-
 StudyRun run(const std::string& sceneName, PositionSolver solver, int substeps, int velocity,
              int position, int steps, ContactCorrection contacts, float jointHertz, int threads) {
     const scenes::SceneInfo* info = scenes::findScene(sceneName);
     if (!info) throw std::logic_error("report: no scene " + sceneName);
+    scenes::SceneOptions options;
+    options.solver = solver;
+    options.contactCorrection = contacts;
+    options.substepCount = substeps;
+    scenes::RunSettings settings;
+    settings.steps = steps;
+    settings.velocityIterations = velocity;
+    settings.positionIterations = position;
     StudyRun r;
-    r.trials.resize(kTrials);
-    runJobs(kTrials, threads, [&](std::size_t trial) {
-        r.trials[trial] = runTrial(*info, solver, substeps, velocity, position, steps, contacts,
-                                   jointHertz, static_cast<int>(trial));
+    r.trials = runTrials(*info, options, settings, threads, [&](scenes::Scene& scene) {
+        if (jointHertz <= 0.0f) return;
+        for (JointId joint : scene.joints) {
+            scene.world->setJointSoftness(joint, {jointHertz, kDefaultJointDampingRatio});
+        }
     });
     r.scene = sceneName;
     r.solver = solver;

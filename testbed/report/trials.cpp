@@ -77,6 +77,10 @@ scenes::RunMetrics medianMetrics(const std::vector<scenes::RunMetrics>& trials) 
     m.microsecondsPerStep = medianField(trials, &M::microsecondsPerStep);
     m.maxLimitViolation = medianField(trials, &M::maxLimitViolation);
     m.jitter = medianField(trials, &M::jitter);  // kNotApplicable in all or none of them
+    m.maxPenetration = medianField(trials, &M::maxPenetration);
+    m.settledPenetration = medianField(trials, &M::settledPenetration);
+    m.maxSpeed = medianField(trials, &M::maxSpeed);
+    m.heightLost = medianField(trials, &M::heightLost);
     // A recovery that never came is the longest; a scene without a disturbance has none at all.
     std::vector<double> recovery;
     for (const M& t : trials) {
@@ -94,6 +98,21 @@ int tornCount(const std::vector<scenes::RunMetrics>& trials) {
     int torn = 0;
     for (const scenes::RunMetrics& m : trials) torn += m.torn() ? 1 : 0;
     return torn;
+}
+
+std::vector<scenes::RunMetrics> runTrials(const scenes::SceneInfo& info,
+                                          const scenes::SceneOptions& options,
+                                          const scenes::RunSettings& settings, int threads,
+                                          const std::function<void(scenes::Scene&)>& adjust) {
+    std::vector<scenes::RunMetrics> trials(kTrials);
+    runJobs(kTrials, threads, [&](std::size_t trial) {
+        scenes::SceneOptions perturbed = options;
+        perturbed.perturbation = trialSeed(static_cast<int>(trial));
+        scenes::Scene scene = scenes::buildScene(info, perturbed);
+        if (adjust) adjust(scene);
+        trials[trial] = scenes::runScene(scene, settings);
+    });
+    return trials;
 }
 
 void runJobs(std::size_t count, int threads, const std::function<void(std::size_t)>& job) {

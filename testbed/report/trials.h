@@ -47,6 +47,13 @@ scenes::RunMetrics medianMetrics(const std::vector<scenes::RunMetrics>& trials);
 /// How many of the trials came apart (RunMetrics::torn).
 int tornCount(const std::vector<scenes::RunMetrics>& trials);
 
+/// Runs `info` kTrials times, trial t built with `options` and perturbation trialSeed(t), then
+/// given to `adjust` (when set) before it runs with `settings`; the trials on `threads` threads.
+std::vector<scenes::RunMetrics> runTrials(const scenes::SceneInfo& info,
+                                          const scenes::SceneOptions& options,
+                                          const scenes::RunSettings& settings, int threads,
+                                          const std::function<void(scenes::Scene&)>& adjust = {});
+
 /// Runs job(0) ... job(count - 1) on `threads` threads (1: in order on this one). Jobs must touch
 /// only their own results. Timings taken in parallel runs share the machine: the report measures
 /// its timings with one thread.

@@ -76,6 +76,36 @@ bool isBlownUp(const Scene& scene) {
     return false;
 }
 
+namespace {
+
+// m, the deepest overlap among the world's touching contacts (0 when none overlaps).
+double deepestPenetration(const World& world) {
+    double deepest = 0.0;
+    for (const ContactData& c : world.contacts()) {
+        for (int p = 0; p < c.pointCount; ++p)
+            deepest = std::max(deepest, -double(c.points[p].separation));
+    }
+    return deepest;
+}
+
+// m, the mass-weighted height of the scene's bodies along the world's gravity.
+double centreOfMassHeight(const Scene& scene) {
+    const World& world = *scene.world;
+    const Vec2 g = world.gravity();
+    const double gLength = std::sqrt(double(g.x) * g.x + double(g.y) * g.y);
+    if (gLength == 0.0) return 0.0;
+    double mass = 0.0, moment = 0.0;
+    for (BodyId id : scene.bodies) {
+        const double m = world.bodyMass(id);
+        const Vec2 c = world.bodyWorldCenter(id);
+        mass += m;
+        moment -= m * (double(g.x) * c.x + double(g.y) * c.y) / gLength;
+    }
+    return mass > 0.0 ? moment / mass : 0.0;
+}
+
+}  // namespace
+
 RunMetrics runScene(Scene& scene, const RunSettings& settings,
                     const std::function<void(int)>& afterStep) {
     using Clock = std::chrono::steady_clock;
@@ -84,6 +114,7 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
 
     RunMetrics m;
     m.energyStart = mechanicalEnergy(scene);
+    const double heightStart = centreOfMassHeight(scene);
     double sumSquares = 0.0;
     long samples = 0;
     long positionIterations = 0;
@@ -120,6 +151,12 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
         if (i >= settleFrom && !(s.max <= m.settledSeparation)) m.settledSeparation = s.max;
         if (!(s.max <= kLinearSlop)) lastStepApart = i;
         m.maxLimitViolation = std::max(m.maxLimitViolation, limitViolation(scene));
+        const double penetration = deepestPenetration(world);
+        m.maxPenetration = std::max(m.maxPenetration, penetration);
+        if (i >= settleFrom) m.settledPenetration = std::max(m.settledPenetration, penetration);
+        for (BodyId id : scene.bodies) {
+            m.maxSpeed = std::max(m.maxSpeed, double(length(world.bodyLinearVelocity(id))));
+        }
         if (scene.restFromStep >= 0 && i >= scene.restFromStep) {
             for (BodyId id : scene.bodies) {
                 restSpeedSquares += lengthSquared(world.bodyLinearVelocity(id));
@@ -133,6 +170,7 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
         }
     }
     m.energyEnd = mechanicalEnergy(scene);
+    m.heightLost = heightStart - centreOfMassHeight(scene);
     if (scene.disturbanceEndStep >= 0) {
         if (m.blewUp || lastStepApart == m.steps - 1) {
             m.recoverySeconds = RunMetrics::kNever;

@@ -66,6 +66,16 @@ struct RunMetrics {
     /// m/s, RMS speed of the scene's bodies once it should be at rest (kNotApplicable if it
     /// never should be).
     double jitter = kNotApplicable;
+    /// m, the deepest overlap of any touching contact after any step, and over the last
+    /// kSettleSeconds (0 without contacts).
+    double maxPenetration = 0;
+    double settledPenetration = 0;
+    /// m/s, the fastest any of the scene's bodies moved after a step (a stack pushed apart:
+    /// its pop-out speed).
+    double maxSpeed = 0;
+    /// m, how far the scene's bodies' centre of mass (mass-weighted) ended below where it began:
+    /// a stack that holds loses its drop and settling; one that collapses, metres.
+    double heightLost = 0;
 
     static constexpr double kNever = -1.0;
     static constexpr double kNotApplicable = -2.0;

@@ -1,0 +1,117 @@
+#include "report/contact_study.h"
+
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "report/trials.h"
+#include "scenes/metrics.h"
+#include "scenes/scene.h"
+
+namespace pivot::report {
+
+namespace {
+
+struct Setup {
+    ContactCorrection contacts;
+    int substeps, velocity, position;
+};
+
+std::string correctionName(ContactCorrection c) {
+    switch (c) {
+        case ContactCorrection::NGS: return "NGS";
+        case ContactCorrection::Baumgarte: return "Baumgarte";
+        case ContactCorrection::Soft: return "soft";
+    }
+    return "?";
+}
+
+std::string num(const char* spec, double v) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, spec, v);
+    return buffer;
+}
+
+std::vector<Setup> setups() {
+    std::vector<Setup> out;
+    for (ContactCorrection c :
+         {ContactCorrection::NGS, ContactCorrection::Baumgarte, ContactCorrection::Soft}) {
+        for (int substeps : {1, 4, 8}) out.push_back({c, substeps, 8, 3});
+    }
+    out.push_back({ContactCorrection::Soft, 4, 1, 1});  // Box2D v3's soft step
+    return out;
+}
+
+}  // namespace
+
+ContactStudy runContactStudy(int steps, int threads,
+                             const std::function<void(const std::string&)>& progress) {
+    ContactStudy out;
+    std::ostringstream md;
+    md << "## Contacts\n\n"
+       << "The contacts' position correction on the two stacks made to stress it, with every "
+          "correction at 1, 4 and 8 substeps of 8 velocity and 3 position iterations, and Box2D "
+          "v3's soft step (soft contacts, 4 substeps of 1/1); each the median over "
+       << kTrials
+       << " perturbed runs [with their range]. *height lost* is how far the bodies' centre of "
+          "mass ended below where it began; *overlap* the deepest overlap of any contact, over "
+          "the run and over its last "
+       << num("%g", scenes::kSettleSeconds)
+       << " s; *fastest* the largest body speed (for overlap_recovery, the pop-out speed). "
+          "Rules, set before the runs: heavy_stack holds when the median height lost is under "
+       << num("%g", kStackHoldsWithin)
+       << " m; overlap_recovery recovers gently when the median settled overlap is within "
+       << num("%g", kRecoveredOverlap) << " m and the median fastest body under "
+       << num("%g", kGentleSpeed) << " m/s.\n\n";
+    for (const char* name : {"heavy_stack", "overlap_recovery"}) {
+        if (progress) progress(std::string("contacts: ") + name);
+        const scenes::SceneInfo* info = scenes::findScene(name);
+        if (!info) throw std::logic_error(std::string("report: no scene ") + name);
+        md << "### " << name << "\n\n"
+           << "| contacts | substeps | iterations | height lost (m) | overlap (m) | settled "
+              "overlap (m) | fastest (m/s) | drift (J) | us/step | verdict |\n"
+           << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
+        std::string passed;
+        for (const Setup& s : setups()) {
+            scenes::SceneOptions options;
+            options.contactCorrection = s.contacts;
+            options.substepCount = s.substeps;
+            scenes::RunSettings settings;
+            settings.steps = steps;
+            settings.velocityIterations = s.velocity;
+            settings.positionIterations = s.position;
+            const std::vector<scenes::RunMetrics> trials =
+                runTrials(*info, options, settings, threads);
+            out.runs += static_cast<int>(trials.size());
+            const scenes::RunMetrics m = medianMetrics(trials);
+            const bool stack = std::string(name) == "heavy_stack";
+            const bool ok =
+                stack ? m.heightLost < kStackHoldsWithin
+                      : m.settledPenetration <= kRecoveredOverlap && m.maxSpeed < kGentleSpeed;
+            const std::string setup = correctionName(s.contacts) + " " +
+                                      std::to_string(s.substeps) + " x " +
+                                      std::to_string(s.velocity) + "/" + std::to_string(s.position);
+            if (ok) passed += std::string(passed.empty() ? "" : ", ") + setup;
+            md << "| " << correctionName(s.contacts) << " | " << s.substeps << " | " << s.velocity
+               << "/" << s.position << " | "
+               << spreadOf(trials, [](const scenes::RunMetrics& t) { return t.heightLost; }).text()
+               << " | " << num("%.3g", m.maxPenetration) << " | "
+               << spreadOf(trials, [](const scenes::RunMetrics& t) { return t.settledPenetration; })
+                      .text()
+               << " | "
+               << spreadOf(trials, [](const scenes::RunMetrics& t) { return t.maxSpeed; }).text()
+               << " | " << num("%.4g", m.energyDrift()) << " | "
+               << num("%.1f", m.microsecondsPerStep) << " | "
+               << (ok ? (stack ? "holds" : "recovers") : (stack ? "collapses" : "does not"))
+               << " |\n";
+        }
+        md << "\n"
+           << (std::string(name) == "heavy_stack" ? "Holds" : "Recovers gently")
+           << " with: " << (passed.empty() ? "none" : passed) << ".\n\n";
+    }
+    out.markdown = md.str();
+    return out;
+}
+
+}  // namespace pivot::report
