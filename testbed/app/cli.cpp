@@ -70,6 +70,7 @@ std::string usage() {
     out << "usage: pivot-testbed [options]\n"
            "       pivot-testbed reference [--csv FILE]\n"
            "       pivot-testbed report [--docs DIR] [--steps N] [--jobs N] [--check]\n"
+           "       pivot-testbed study [--docs DIR] [--jobs N] [--check]\n"
            "\n"
            "Runs pivot2d's test scenes headless and prints, for each run, how far the joints\n"
            "came apart, the energy drift, whether the run blew up, and the cost per step.\n"
@@ -89,6 +90,13 @@ std::string usage() {
            "fails if anything but a timing differs from DIR's (what CI runs). --jobs N runs\n"
            "its trials on N threads (default: 1, whose timings the report quotes; with --check,\n"
            "every hardware thread).\n"
+           "\n"
+           "study: the Pareto fronts of joint error against cost on chain, ball_chain and\n"
+           "mass_ratio, every strategy at every split of substeps, velocity and position\n"
+           "iterations, each 9 times perturbed (about 10^4 runs, minutes): writes DIR/pareto.md,\n"
+           "and the figures and every run's CSV in DIR/results/. With --check it writes nothing:\n"
+           "it regenerates FullNGS on mass_ratio and fails if a run differs from the committed\n"
+           "CSV, timings aside (what CI runs).\n"
            "\n"
            "options:\n"
            "  --scene NAME      run only this scene: "
@@ -139,6 +147,9 @@ CliOptions parseCli(const std::vector<std::string>& args) {
         first = 1;
     } else if (!args.empty() && args[0] == "report") {
         options.command = Command::Report;
+        first = 1;
+    } else if (!args.empty() && args[0] == "study") {
+        options.command = Command::Study;
         first = 1;
     }
     for (std::size_t i = first; i < args.size(); ++i) {
@@ -208,10 +219,14 @@ CliOptions parseCli(const std::vector<std::string>& args) {
         } else if (arg == "--docs") {
             options.docsDir = value();
         } else if (arg == "--jobs") {
-            if (options.command != Command::Report) throw CliError("--jobs goes with report");
+            if (options.command != Command::Report && options.command != Command::Study) {
+                throw CliError("--jobs goes with report or study");
+            }
             options.jobs = static_cast<int>(parseInteger(arg, value(), 1, 64));
         } else if (arg == "--check") {
-            if (options.command != Command::Report) throw CliError("--check goes with report");
+            if (options.command != Command::Report && options.command != Command::Study) {
+                throw CliError("--check goes with report or study");
+            }
             options.check = true;
         } else if (arg == "--html") {
             options.htmlPath = value();

@@ -10,7 +10,7 @@
 
 namespace pivot::testbed {
 
-enum class Command { Table, Reference, Report };
+enum class Command { Table, Reference, Report, Study };
 
 struct CliOptions {
     Command command = Command::Table;
@@ -29,11 +29,12 @@ struct CliOptions {
     ContinuousCollision continuousCollision = ContinuousCollision::Substeps;
     std::optional<std::string> csvPath;
     std::optional<std::string> htmlPath;  ///< write the browser replay here
-    std::string docsDir = "docs";         ///< report: where results.md goes
-    /// report: regenerate into a scratch folder and compare with docsDir, timings masked.
+    std::string docsDir = "docs";         ///< report, study: where their pages go
+    /// report: regenerate into a scratch folder and compare with docsDir, timings masked;
+    /// study: regenerate FullNGS on mass_ratio and compare with its committed runs.
     bool check = false;
-    /// report: threads running its trials. Timings are taken from one-thread reports; --check
-    /// masks them and runs on every hardware thread unless told.
+    /// report, study: threads running the trials. Timings are taken from one-thread runs;
+    /// --check masks them and runs on every hardware thread unless told.
     int jobs = 0;  ///< 0: one, or with --check every hardware thread
     bool help = false;
     bool list = false;

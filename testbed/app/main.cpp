@@ -2,10 +2,12 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <thread>
 
 #include "app/cli.h"
 #include "app/table.h"
 #include "replay/html_replay.h"
+#include "report/pareto_study.h"
 #include "report/report.h"
 #include "report/report_check.h"
 #include "scenes/metrics.h"
@@ -70,6 +72,35 @@ int main(int argc, char** argv) {
         testbed::CliOptions options = testbed::parseCli({argv + 1, argv + argc});
         if (options.help) {
             std::cout << testbed::usage();
+            return 0;
+        }
+        if (options.command == testbed::Command::Study) {
+            report::ParetoSettings settings;
+            settings.docsDir = options.docsDir;
+            settings.threads = std::max(1, options.jobs);
+            if (options.check) {
+                // A documented subset: one strategy of one scene, every split.
+                settings.scenes = {"mass_ratio"};
+                settings.solvers = {PositionSolver::FullNGS};
+                if (options.jobs == 0) {
+                    settings.threads =
+                        std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+                }
+                const std::string differences = report::checkParetoStudy(settings, std::cout);
+                if (!differences.empty()) {
+                    std::cerr << "pivot-testbed: the committed study no longer says what the "
+                                 "code does; regenerate it with `pivot-testbed study`:\n"
+                              << differences.substr(0, 2000);
+                    return 1;
+                }
+                std::cout << "the committed study's FullNGS runs on mass_ratio match the code\n";
+                return 0;
+            }
+            const std::string problem = report::generateParetoStudy(settings, std::cout);
+            if (!problem.empty()) {
+                std::cerr << "pivot-testbed: " << problem << "\n";
+                return 1;
+            }
             return 0;
         }
         if (options.command == testbed::Command::Report) {

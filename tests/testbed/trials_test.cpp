@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "report/pareto_study.h"
 #include "report/trials.h"
 #include "scenes/metrics.h"
 #include "scenes/perturbation.h"
@@ -96,4 +97,29 @@ TEST(Trials, JobsRunEveryIndexOnceOnAnyNumberOfThreads) {
                                      if (i == 7) throw std::runtime_error("job 7");
                                  }),
                  std::runtime_error);
+}
+
+// A configuration is on the front when nothing cheaper has a smaller median error; a tie in cost
+// keeps the smaller error, and a NaN error never enters.
+TEST(ParetoFront, KeepsWhatNothingCheaperBeats) {
+    auto run = [](int substeps, double error) {
+        report::ParetoRun r;
+        r.substeps = substeps;
+        r.velocityIterations = 1;
+        r.positionIterations = 0;
+        r.median.maxSeparation = error;
+        return r;
+    };
+    const std::vector<report::ParetoRun> runs = {run(4, 0.5), run(1, 1.0), run(2, 2.0),
+                                                 run(2, 0.8), run(8, NAN), run(16, 0.1),
+                                                 run(8, 0.5)};
+    std::vector<const report::ParetoRun*> all;
+    for (const report::ParetoRun& r : runs) all.push_back(&r);
+    const auto front =
+        report::paretoFront(all, [](const report::ParetoRun& r) { return double(r.sweeps()); });
+    ASSERT_EQ(front.size(), 4u);
+    EXPECT_EQ(front[0]->sweeps(), 1);
+    EXPECT_EQ(front[1]->median.maxSeparation, 0.8);
+    EXPECT_EQ(front[2]->sweeps(), 4);
+    EXPECT_EQ(front[3]->sweeps(), 16);
 }
