@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "report/contact_study.h"
+#include "report/mixing_study.h"
 #include "report/observations.h"
 #include "report/run_matrix.h"
 #include "report/substep_study.h"
@@ -194,6 +195,11 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
         log << "running " << scene << "\n";
     });
     std::vector<Observation> observations = evaluateObservations(matrix);
+    // The note's recommendation itself, measured on mixed islands: its verdicts join the rest.
+    const MixingStudy mixing =
+        runMixingStudy(settings.steps, settings.threads,
+                       [&](const std::string& what) { log << "running " << what << "\n"; });
+    observations.insert(observations.end(), mixing.verdicts.begin(), mixing.verdicts.end());
 
     std::string problem;
     std::ostringstream md;
@@ -297,11 +303,12 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
     const ContactStudy contacts =
         runContactStudy(settings.steps, settings.threads,
                         [&](const std::string& what) { log << "running " << what << "\n"; });
-    md << contacts.markdown;
+    md << contacts.markdown << mixing.markdown;
 
     double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     md << "This page took " << num("%.0f", seconds) << " s to generate ("
-       << (matrix.runs.size() + study.runs.size()) * kTrials + contacts.runs << " runs).\n";
+       << (matrix.runs.size() + study.runs.size()) * kTrials + contacts.runs + mixing.runs
+       << " runs).\n";
     if (!writeFile(docs / "results.md", md.str(), problem)) return problem;
 
     if (settings.updatePositionCorrection) {

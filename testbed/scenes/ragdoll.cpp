@@ -21,6 +21,7 @@ struct Hinge {
     int a, b;  // parts
     Vec2 anchor;
     float lower, upper;  // rad
+    bool key;            // neck, shoulders, hips; the elbows and knees are secondary
 };
 
 void buildRagdollWith(Scene& scene, const SceneOptions& options, bool motorized) {
@@ -31,7 +32,16 @@ void buildRagdollWith(Scene& scene, const SceneOptions& options, bool motorized)
     ShapeDef wallShape;
     wallShape.density = 0.0f;
     world.createShape(wall, wallShape, Polygon::box(0.5f, 5.0f, {5.5f, 5.0f}, 0.0f));
+    addRagdoll(scene, options, {-2.0f, 2.0f}, {8.0f, 3.0f}, -3.0f, motorized, -1);
+    scene.disturbanceEndStep = stepAt(options, 1.5f);  // hit the wall and the ground by then
+    scene.restFromStep = stepAt(options, 5.0f);
+}
 
+}  // namespace
+
+void addRagdoll(Scene& scene, const SceneOptions& options, Vec2 origin, Vec2 velocity, float spin,
+                bool motorized, int group) {
+    World& world = *scene.world;
     enum {
         kTorso,
         kHead,
@@ -53,27 +63,23 @@ void buildRagdollWith(Scene& scene, const SceneOptions& options, bool motorized)
         {{0.1f, 0.7f}, {0.08f, 0.2f}},    {{0.1f, 0.28f}, {0.07f, 0.22f}},
     };
     const Hinge hinges[] = {
-        {kTorso, kHead, {0.0f, 1.63f}, -0.5f, 0.5f},
-        {kTorso, kUpperArmL, {-0.26f, 1.55f}, -2.5f, 2.5f},
-        {kUpperArmL, kLowerArmL, {-0.26f, 1.25f}, 0.0f, 2.5f},
-        {kTorso, kUpperArmR, {0.26f, 1.55f}, -2.5f, 2.5f},
-        {kUpperArmR, kLowerArmR, {0.26f, 1.25f}, 0.0f, 2.5f},
-        {kTorso, kThighL, {-0.1f, 0.9f}, -1.5f, 0.5f},
-        {kThighL, kShinL, {-0.1f, 0.5f}, -2.5f, 0.0f},
-        {kTorso, kThighR, {0.1f, 0.9f}, -1.5f, 0.5f},
-        {kThighR, kShinR, {0.1f, 0.5f}, -2.5f, 0.0f},
+        {kTorso, kHead, {0.0f, 1.63f}, -0.5f, 0.5f, true},
+        {kTorso, kUpperArmL, {-0.26f, 1.55f}, -2.5f, 2.5f, true},
+        {kUpperArmL, kLowerArmL, {-0.26f, 1.25f}, 0.0f, 2.5f, false},
+        {kTorso, kUpperArmR, {0.26f, 1.55f}, -2.5f, 2.5f, true},
+        {kUpperArmR, kLowerArmR, {0.26f, 1.25f}, 0.0f, 2.5f, false},
+        {kTorso, kThighL, {-0.1f, 0.9f}, -1.5f, 0.5f, true},
+        {kThighL, kShinL, {-0.1f, 0.5f}, -2.5f, 0.0f, false},
+        {kTorso, kThighR, {0.1f, 0.9f}, -1.5f, 0.5f, true},
+        {kThighR, kShinR, {0.1f, 0.5f}, -2.5f, 0.0f, false},
     };
 
     // Thrown as one rigid body: every part gets the velocity of its point of the whole.
-    const Vec2 origin{-2.0f, 2.0f};
-    const Vec2 velocity{8.0f, 3.0f};
-    const float spin = -3.0f;
     const Vec2 spinCenter = origin + Vec2{0.0f, 1.0f};
-
     ShapeDef shape;
     shape.density = 100.0f;
     shape.friction = 0.6f;
-    shape.filter.groupIndex = -1;
+    shape.filter.groupIndex = group;
     BodyId bodies[kParts];
     for (int i = 0; i < kParts; ++i) {
         BodyDef def;
@@ -91,16 +97,16 @@ void buildRagdollWith(Scene& scene, const SceneOptions& options, bool motorized)
         scene.bodies.push_back(bodies[i]);
     }
     for (const Hinge& h : hinges) {
-        RevoluteJointDef jd = options.jointAt(bodies[h.a], bodies[h.b], origin + h.anchor);
+        const Vec2 anchor = origin + h.anchor;
+        RevoluteJointDef jd = h.key ? options.jointAt(bodies[h.a], bodies[h.b], anchor)
+                                    : options.secondaryJointAt(bodies[h.a], bodies[h.b], anchor);
         jd.limit = {true, h.lower, h.upper};
         if (motorized) jd.motor = {true, 0.0f, 20.0f};
-        scene.joints.push_back(world.createJoint(jd));
+        const JointId joint = world.createJoint(jd);
+        scene.joints.push_back(joint);
+        if (h.key) scene.keyJoints.push_back(joint);
     }
-    scene.disturbanceEndStep = stepAt(options, 1.5f);  // hit the wall and the ground by then
-    scene.restFromStep = stepAt(options, 5.0f);
 }
-
-}  // namespace
 
 void buildRagdoll(Scene& scene, const SceneOptions& options) {
     buildRagdollWith(scene, options, false);

@@ -11,6 +11,15 @@ RevoluteJointDef SceneOptions::jointAt(BodyId a, BodyId b, Vec2 anchor) const {
     return def;
 }
 
+RevoluteJointDef SceneOptions::secondaryJointAt(BodyId a, BodyId b, Vec2 anchor) const {
+    RevoluteJointDef def = jointAt(a, b, anchor);
+    if (secondarySolver) {
+        def.positionSolver = *secondarySolver;
+        def.biasFactor.reset();
+    }
+    return def;
+}
+
 GearJointDef SceneOptions::gear(JointId joint1, JointId joint2, float ratio) const {
     GearJointDef def;
     def.joint1 = joint1;
@@ -67,6 +76,8 @@ const std::vector<SceneInfo>& allScenes() {
          buildRagdoll},
         {"ragdoll_motorized", "the ragdoll with a holding motor in every joint",
          buildMotorizedRagdoll},
+        {"ragdoll_pile", "six ragdolls dropped one above the other into a 5 m pit",
+         buildRagdollPile},
         {"distance_pendulum",
          "the pendulum on a 5 m distance joint (a rod) instead of a pin, spun at 100 rad/s",
          buildDistancePendulum},
@@ -105,6 +116,10 @@ const std::vector<SceneInfo>& allScenes() {
          buildStretchedChain},
         {"ball_chain", "40 links released level holding a ball of 600 times a link's mass",
          buildBallChain},
+        {"rope_load",
+         "30 planks of 5 kg pinned end to end holding a 120 kg ball (24 times a link), released "
+         "level",
+         buildRopeLoad},
         {"mass_ratio",
          "20 links released level holding a ball of 3,000 times a link's mass by its rim",
          buildMassRatio},
@@ -112,6 +127,9 @@ const std::vector<SceneInfo>& allScenes() {
         {"overlap_recovery",
          "a pyramid of ten boxes created a quarter of a box deep into each other and the ground",
          buildOverlapRecovery},
+        {"bridge_chains",
+         "the bridge with a swinging chain of six links hanging from every fifth plank",
+         buildBridgeChains},
         {"far_chain", "the chain 30 km from the origin, where floats are 2 mm apart",
          buildFarChain},
         {"ramps",

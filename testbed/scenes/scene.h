@@ -34,9 +34,15 @@ struct SceneOptions {
     /// A seed for a perturbed run (scenes/perturbation.h): 0 builds the scene exactly; others
     /// tilt and scale gravity and scale the initial velocities by about 1e-3.
     std::uint32_t perturbation = 0;
+    /// Mixing: the solver of the joints a scene marks secondary (a ragdoll's elbows and knees,
+    /// a bridge's decorative chains, a rope's links far from its load), at that solver's default
+    /// bias; unset: `solver` for every joint.
+    std::optional<PositionSolver> secondarySolver;
 
     /// A revolute joint def at a world anchor carrying this scene's solver and bias.
     RevoluteJointDef jointAt(BodyId a, BodyId b, Vec2 anchor) const;
+    /// The same for a joint the scene marks secondary (secondarySolver).
+    RevoluteJointDef secondaryJointAt(BodyId a, BodyId b, Vec2 anchor) const;
     /// A distance joint def between the bodies' origins carrying this scene's solver and bias.
     DistanceJointDef distanceJoint(BodyId a, BodyId b) const;
     /// A gear joint def coupling two joints by `ratio`, carrying this scene's solver and bias.
@@ -60,6 +66,9 @@ struct Scene {
     /// Where the scene is built: its bodies stay within a few tens of metres of it (the soak's
     /// bound and the figures' views are measured from here).
     Vec2 origin;
+    /// The joints that matter, whose error the mixing study measures (the scenes built for it
+    /// name them; empty elsewhere).
+    std::vector<JointId> keyJoints;
 };
 
 /// A Scene::beforeStep that reverses a revolute or wheel joint's motor every `steps` steps.
@@ -120,6 +129,16 @@ void buildTopDown(Scene& scene, const SceneOptions& options);
 void buildMotorDrive(Scene& scene, const SceneOptions& options);
 /// 20 light links holding a ball 3,000 times heavier.
 void buildMassRatio(Scene& scene, const SceneOptions& options);
+// Built for the mixing study (mixing_scenes.cpp): each names its keyJoints and marks the others
+// secondary.
+void buildRagdollPile(Scene& scene, const SceneOptions& options);
+void buildBridgeChains(Scene& scene, const SceneOptions& options);
+void buildRopeLoad(Scene& scene, const SceneOptions& options);
+/// One ragdoll (ragdoll.cpp's) at `origin`, thrown with `velocity` and `spin` about its chest,
+/// its parts in collision group `group` (negative: they never collide with each other). Its neck,
+/// shoulders and hips are key joints on scene.keyJoints; elbows and knees are secondary.
+void addRagdoll(Scene& scene, const SceneOptions& options, Vec2 origin, Vec2 velocity, float spin,
+                bool motorized, int group);
 
 /// The step index of time t (s) at the scene's rate.
 inline int stepAt(const SceneOptions& options, float seconds) {

@@ -1,0 +1,35 @@
+// The report's test of the seed note's recommendation itself: choose the position solver per
+// joint. On scenes with joints that matter and joints that matter less (ragdoll_pile,
+// bridge_chains, rope_load: scenes/mixing_scenes.cpp), a mixed island (FullNGS on the key
+// joints, Baumgarte on the rest) against uniform islands of either at several budgets, each
+// kTrials perturbed times: the key joints' error against the cost.
+//
+// Cost is counted in joint solves per step, what each strategy actually does: every joint solves
+// once per velocity iteration, and an NGS joint once more per position sweep the step ran (its
+// early exit counted); Baumgarte joints have no position phase. Measured microseconds are shown
+// beside it (they include the contacts, which every set-up shares).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "report/observations.h"
+
+namespace pivot::report {
+
+struct MixingStudy {
+    std::string markdown;
+    std::vector<Observation> verdicts;  ///< one per scene
+    int runs = 0;
+};
+
+/// Rule, written before the numbers: mixing pays on a scene when the mixed island's median
+/// largest key-joint separation is smaller than that of every uniform island costing at most
+/// this factor times the mixed one's joint solves.
+constexpr double kEqualCostSlack = 1.1;
+
+MixingStudy runMixingStudy(int steps, int threads,
+                           const std::function<void(const std::string&)>& progress);
+
+}  // namespace pivot::report
