@@ -1,5 +1,6 @@
 #include "report/report.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -67,7 +68,7 @@ std::string countOf(int count) {
     return count > 0 ? "**" + text + "**" : text;
 }
 
-std::string runRow(const RunRecord& r) {
+std::string runRow(const RunRecord& r, double hz) {
     const scenes::RunMetrics& m = r.metrics;
     int blewUp = 0;
     for (const scenes::RunMetrics& t : r.trials) blewUp += t.blewUp ? 1 : 0;
@@ -78,10 +79,10 @@ std::string runRow(const RunRecord& r) {
         << maxSeparation.text() << " | " << num("%.2e", m.settledSeparation) << " | "
         << countOf(r.torn()) << " | " << num("%.2e", m.rmsSeparation) << " | "
         << optional("%.2f s", m.recoverySeconds) << " | " << optional("%.2e", m.jitter) << " | "
-        << num("%.3f", m.maxLimitViolation) << " | " << num("%.4g", m.energyDrift()) << " | "
-        << countOf(blewUp) << " | " << m.clampedBodySteps() << " | "
-        << num("%.2f", m.meanPositionIterations) << " | " << num("%.1f", m.microsecondsPerStep)
-        << " |\n";
+        << num("%.3f", m.maxLimitViolation) << " | "
+        << num("%.4g", m.energyDrift() * hz / std::max(1, m.steps)) << " | " << countOf(blewUp)
+        << " | " << m.clampedBodySteps() << " | " << num("%.2f", m.meanPositionIterations) << " | "
+        << num("%.1f", m.microsecondsPerStep) << " |\n";
     return row.str();
 }
 
@@ -226,9 +227,10 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
           "back within the linear slop (5 mm) for good (`never` when it is not back by the "
           "end, `-` when the scene has no disturbance); *jitter* is the RMS speed of the "
           "bodies once the scene should be at rest (`-` when it never should be); *limit* is "
-          "the furthest a limited joint went past its limit (rad); *drift* is the change of "
-          "kinetic plus potential energy (J; bodies a scene adds count from the moment they "
-          "appear; the tumbler is driven); *blew up* is a non-finite state or a body faster "
+          "the furthest a limited joint went past its limit (rad); *drift* is the rate at which "
+          "kinetic plus potential energy changed over the run (W: the change over the run's "
+          "duration; bodies a scene adds count from the moment they appear; the tumbler is "
+          "driven); *blew up* is a non-finite state or a body faster "
           "than 1e4 m/s (runs of n); *clamps* the body-steps cut short by the translation or "
           "rotation clamp (where they are many, the clamps shape the run more than the "
           "solver); *NGS its* the position iterations actually run per step.\n\n";
@@ -248,12 +250,12 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
         md << "### " << name << "\n\n"
            << info.description << ".\n\n"
            << "| solver | bias | max sep (m) | settled (m) | torn | RMS sep (m) | recovery | "
-              "jitter (m/s) | limit (rad) | drift (J) | blew up | clamps | NGS its | us/step |\n"
+              "jitter (m/s) | limit (rad) | drift (W) | blew up | clamps | NGS its | us/step |\n"
            << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: "
               "| ---: | ---: |\n";
         for (const RunRecord& r : matrix.runs) {
             if (r.scene == name && r.positionIterations == kDefaultPositionIterations) {
-                md << runRow(r);
+                md << runRow(r, matrix.hz);
             }
         }
         const std::string plotFile = name + "-separation.svg";

@@ -14,6 +14,11 @@ const std::vector<std::string>& iterationSweepScenes() {
     return scenes;
 }
 
+const std::vector<std::string>& biasSweepScenes() {
+    static const std::vector<std::string> scenes = {"bridge", "bridge_heavy", "weld_beam"};
+    return scenes;
+}
+
 const std::vector<float>& sweptBiases() {
     static const std::vector<float> biases = {0.1f, 0.2f, 0.5f, 1.0f};
     return biases;
@@ -212,7 +217,9 @@ RunMatrix runMatrix(int steps, int threads,
             bool velocityLevel =
                 solver == PositionSolver::Baumgarte || solver == PositionSolver::PseudoVelocity;
             std::vector<float> biases = {defaultBiasFactor(solver)};
-            if (velocityLevel) biases = sweptBiases();
+            const bool swept = std::find(biasSweepScenes().begin(), biasSweepScenes().end(),
+                                         info.name) != biasSweepScenes().end();
+            if (velocityLevel && swept) biases = sweptBiases();
             for (float bias : biases) {
                 configs.push_back({&info, solver, bias, kDefaultPositionIterations,
                                    solver == PositionSolver::FullNGS});

@@ -1,5 +1,5 @@
 // The runs behind the generated report: every scene with every position solver, the bias sweep
-// for the velocity-level solvers, and the position-iteration sweep behind the cost-against-
+// for the velocity-level solvers on the scenes that use it, and the position-iteration sweep behind the cost-against-
 // error plots. Each configuration runs kTrials perturbed times (report/trials.h) and keeps every
 // trial's metrics, their medians, and the median time series the plots need.
 #pragma once
@@ -43,6 +43,9 @@ struct RunMatrix {
 
 /// Scenes of the position-iteration sweep (the cost-against-error plots).
 const std::vector<std::string>& iterationSweepScenes();
+/// Scenes of the bias sweep: those whose observations and prose use it (every other scene runs
+/// each solver at its default bias).
+const std::vector<std::string>& biasSweepScenes();
 /// Biases of the sweep for Baumgarte and PseudoVelocity.
 const std::vector<float>& sweptBiases();
 /// Position iterations of the cost-against-error sweep.

@@ -45,6 +45,35 @@ void buildStretchedChain(Scene& scene, const SceneOptions& options) {
     scene.disturbanceEndStep = 0;  // the gaps are the disturbance
 }
 
+void buildHangingStretchedChain(Scene& scene, const SceneOptions& options) {
+    // Solver2D's chain under tension: the stretched chain hung straight down from its anchor,
+    // link i spanning [2i, 2i + 1] m below it, every joint 1 m open, released at rest. Gravity
+    // pulls every gap open while the joints close it; no swing helps or hinders.
+    World& world = *scene.world;
+    BodyId previous = world.createBody(BodyDef{});
+    Vec2 previousEnd{0.0f, kHeight + 1.0f};  // in the ground's frame: the anchor
+    for (int i = 0; i < kLinks; ++i) {
+        const float top = kHeight - 2.0f * static_cast<float>(i);
+        BodyDef def;
+        def.type = BodyType::Dynamic;
+        def.position = {0.0f, top - 0.5f};
+        BodyId link = world.createBody(def);
+        world.createShape(link, ShapeDef{}, Polygon::box(0.1f, 0.5f));
+        RevoluteJointDef jd;
+        jd.bodyA = previous;
+        jd.bodyB = link;
+        jd.localAnchorA = previousEnd;
+        jd.localAnchorB = {0.0f, 0.5f};  // the link's top, 1 m below the previous bottom
+        jd.positionSolver = options.solver;
+        jd.biasFactor = options.biasFactor;
+        scene.joints.push_back(world.createJoint(jd));
+        scene.bodies.push_back(link);
+        previous = link;
+        previousEnd = {0.0f, -0.5f};  // the link's bottom
+    }
+    scene.disturbanceEndStep = 0;  // the gaps are the disturbance
+}
+
 void buildBallChain(Scene& scene, const SceneOptions& options) {
     // The last link holds, by a point on its rim, a ball of radius 1 m and 600 times a link's
     // mass (120 kg).
