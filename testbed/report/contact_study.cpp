@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "report/page_text.h"
 #include "report/trials.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
@@ -27,12 +28,6 @@ std::string correctionName(ContactCorrection c) {
     return "?";
 }
 
-std::string num(const char* spec, double v) {
-    char buffer[48];
-    std::snprintf(buffer, sizeof buffer, spec, v);
-    return buffer;
-}
-
 std::vector<Setup> setups() {
     std::vector<Setup> out;
     for (ContactCorrection c :
@@ -50,7 +45,7 @@ ContactStudy runContactStudy(int steps, int threads,
     ContactStudy out;
     std::ostringstream md;
     md << "## Contacts\n\n"
-       << "The contacts' position correction on the two stacks made to stress it, with every "
+       << "The contacts' position correction on the stacks made to stress it, with every "
           "correction at 1, 4 and 8 substeps of 8 velocity and 3 position iterations, and Box2D "
           "v3's soft step (soft contacts, 4 substeps of 1/1); each the median over "
        << kTrials

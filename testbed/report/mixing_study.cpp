@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "report/page_text.h"
 #include "report/trials.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
@@ -32,12 +33,6 @@ const Setup kSetups[] = {
     {"mixed 8/3", PositionSolver::FullNGS, PositionSolver::Baumgarte, 8},
 };
 constexpr int kPosition = 3;
-
-std::string num(const char* spec, double v) {
-    char buffer[48];
-    std::snprintf(buffer, sizeof buffer, spec, v);
-    return buffer;
-}
 
 scenes::SceneOptions optionsOf(const Setup& s) {
     scenes::SceneOptions options;

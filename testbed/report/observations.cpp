@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "report/page_text.h"
+
 namespace pivot::report {
 
 namespace {
@@ -23,20 +25,14 @@ const RunRecord& get(const RunMatrix& m, const std::string& scene, PositionSolve
     return *r;
 }
 
-std::string num(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3g", v);
-    return buffer;
-}
-
 std::string metres(double v) {
-    return num(v) + " m";
+    return g3(v) + " m";
 }
 
 std::string recovery(double seconds) {
     if (seconds == scenes::RunMetrics::kNever) return "never";
     if (seconds == scenes::RunMetrics::kNotApplicable) return "n/a";
-    return num(seconds) + " s";
+    return g3(seconds) + " s";
 }
 
 // The largest separation's median over a configuration's trials, with its range.
@@ -104,8 +100,8 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
                        "microseconds per step summed over bridge, chain, bridge_heavy and "
                        "ragdoll (default biases, 8/3 iterations); confirmed if Baumgarte's sum "
                        "is the lowest",
-                       "Baumgarte " + num(cost[0]) + " us, PseudoVelocity " + num(cost[1]) +
-                           " us, ModifiedNGS " + num(cost[2]) + " us, FullNGS " + num(cost[3]) +
+                       "Baumgarte " + g3(cost[0]) + " us, PseudoVelocity " + g3(cost[1]) +
+                           " us, ModifiedNGS " + g3(cost[2]) + " us, FullNGS " + g3(cost[3]) +
                            " us",
                        verdict(cheapest)});
     }
@@ -120,9 +116,9 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
                        "gains energy or jitters more",
                        "max separation " + metres(b.metrics.maxSeparation) + " (FullNGS " +
                            metres(f.metrics.maxSeparation) + "), energy change " +
-                           num(b.metrics.energyDrift()) + " J (FullNGS " +
-                           num(f.metrics.energyDrift()) + " J), jitter " + num(b.metrics.jitter) +
-                           " m/s (FullNGS " + num(f.metrics.jitter) + " m/s)",
+                           g3(b.metrics.energyDrift()) + " J (FullNGS " +
+                           g3(f.metrics.energyDrift()) + " J), jitter " + g3(b.metrics.jitter) +
+                           " m/s (FullNGS " + g3(f.metrics.jitter) + " m/s)",
                        verdict(confirmed)});
     }
     {
@@ -152,10 +148,10 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
                        "to instabilities and false bounce",
                        "pendulum_limit (a pendulum swung into an angle limit): energy change "
                        "over 10 s; confirmed if Baumgarte gains energy where FullNGS does not",
-                       "Baumgarte " + num(b.metrics.energyDrift()) + " J, FullNGS " +
-                           num(f.metrics.energyDrift()) + " J; overshoot past the limit " +
-                           num(b.metrics.maxLimitViolation) + " rad (FullNGS " +
-                           num(f.metrics.maxLimitViolation) + " rad)",
+                       "Baumgarte " + g3(b.metrics.energyDrift()) + " J, FullNGS " +
+                           g3(f.metrics.energyDrift()) + " J; overshoot past the limit " +
+                           g3(b.metrics.maxLimitViolation) + " rad (FullNGS " +
+                           g3(f.metrics.maxLimitViolation) + " rad)",
                        verdict(confirmed)});
     }
     {
@@ -193,8 +189,8 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
                        "confirmed if PseudoVelocity separates less and gains no energy",
                        "max separation " + metres(p.metrics.maxSeparation) + " (Baumgarte " +
                            metres(b.metrics.maxSeparation) + "), energy change " +
-                           num(p.metrics.energyDrift()) + " J (Baumgarte " +
-                           num(b.metrics.energyDrift()) + " J)",
+                           g3(p.metrics.energyDrift()) + " J (Baumgarte " +
+                           g3(b.metrics.energyDrift()) + " J)",
                        verdict(confirmed)});
     }
     {
@@ -443,10 +439,10 @@ std::vector<Observation> evaluateObservations(const RunMatrix& m) {
                       recovery(one.metrics.recoverySeconds) + " and " +
                       recovery(three.metrics.recoverySeconds) + "; max separation " +
                       separationRange(one) + " and " + separationRange(three) + "; " +
-                      num(three.metrics.meanPositionIterations) +
+                      g3(three.metrics.meanPositionIterations) +
                       " NGS iterations run per step of the 3 allowed; " +
-                      num(one.metrics.microsecondsPerStep) + " us against " +
-                      num(three.metrics.microsecondsPerStep) + " us per step";
+                      g3(one.metrics.microsecondsPerStep) + " us against " +
+                      g3(three.metrics.microsecondsPerStep) + " us per step";
         }
         out.push_back({"Recommendation",
                        "the number of NGS iterations can be reduced for better performance "

@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <thread>
 
 #include "report/contact_study.h"
 #include "report/mixing_study.h"
 #include "report/observations.h"
+#include "report/page_text.h"
 #include "report/run_matrix.h"
 #include "report/substep_study.h"
 #include "report/svg.h"
@@ -24,42 +23,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string num(const char* spec, double v) {
-    char buffer[48];
-    std::snprintf(buffer, sizeof buffer, spec, v);
-    return buffer;
-}
-
 std::string optional(const char* spec, double v) {
     if (v == scenes::RunMetrics::kNotApplicable) return "-";
     if (v == scenes::RunMetrics::kNever) return "never";
     return num(spec, v);
-}
-
-std::string machine() {
-    std::ifstream cpuinfo("/proc/cpuinfo");
-    std::string line, model = "unknown CPU";
-    while (std::getline(cpuinfo, line)) {
-        if (line.rfind("model name", 0) == 0) {
-            model = line.substr(line.find(':') + 2);
-            break;
-        }
-    }
-    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
-}
-
-std::string today() {
-    std::time_t now = std::time(nullptr);
-    char buffer[32];
-    std::strftime(buffer, sizeof buffer, "%Y-%m-%d", std::gmtime(&now));
-    return buffer;
-}
-
-bool writeFile(const fs::path& path, const std::string& text, std::string& problem) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) problem = "cannot write " + path.string();
-    return static_cast<bool>(out);
 }
 
 // "k/n" trials, bold when any.
@@ -217,7 +184,8 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
        << " relative; `testbed/scenes/perturbation.h`), and every figure is the median over "
           "those runs; *max sep* also gives their range. Microseconds per step depend on the "
           "machine: this run: "
-       << machine() << ", " << today() << ", the runs of a scene interleaved on one thread.\n\n"
+       << machineName() << ", " << todayUtc()
+       << ", the runs of a scene interleaved on one thread.\n\n"
        << "Columns: *max*, *RMS* and *final sep* are the joint separation |anchorB - anchorA| "
           "(largest over joints; max and RMS over the run, *settled* over its last "
        << num("%g", scenes::kSettleSeconds) << " s); *torn* counts the runs still further than "

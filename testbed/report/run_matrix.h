@@ -1,7 +1,7 @@
 // The runs behind the generated report: every scene with every position solver, the bias sweep
-// for the velocity-level solvers on the scenes that use it, and the position-iteration sweep behind the cost-against-
-// error plots. Each configuration runs kTrials perturbed times (report/trials.h) and keeps every
-// trial's metrics, their medians, and the median time series the plots need.
+// for the velocity-level solvers on the scenes that use it, and the position-iteration sweep behind
+// the cost-against- error plots. Each configuration runs kTrials perturbed times (report/trials.h)
+// and keeps every trial's metrics, their medians, and the median time series the plots need.
 #pragma once
 
 #include <functional>

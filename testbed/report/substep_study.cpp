@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "report/page_text.h"
 #include "report/svg.h"
 
 namespace pivot::report {
@@ -22,16 +23,6 @@ constexpr int kBudget = 16;
 const std::vector<int>& budgetSubsteps() {
     static const std::vector<int> counts{1, 2, 4, 8};
     return counts;
-}
-
-std::string num(const char* spec, double v) {
-    char buffer[48];
-    std::snprintf(buffer, sizeof buffer, spec, v);
-    return buffer;
-}
-
-std::string g3(double v) {
-    return num("%.3g", v);
 }
 
 // A table cell for a configuration's largest separation: the median and range over its trials,

@@ -8,15 +8,11 @@
 #include <mutex>
 #include <thread>
 
+#include "report/page_text.h"
+
 namespace pivot::report {
 
 namespace {
-
-std::string g3(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3g", v);
-    return buffer;
-}
 
 // NaN last, so that a run that produced one is never taken for a small value.
 bool lessNanLast(double a, double b) {
@@ -39,7 +35,8 @@ double medianField(const std::vector<scenes::RunMetrics>& trials, Field field) {
 }  // namespace
 
 std::string Spread::text(const char* unit) const {
-    if (low == high) return g3(median) + unit;
+    // A range that prints as one value is one value at the precision shown.
+    if (g3(low) == g3(high)) return g3(median) + unit;
     return g3(median) + unit + " [" + g3(low) + "-" + g3(high) + "]";
 }
 

@@ -28,7 +28,7 @@ struct Spread {
     double low = 0.0;
     double high = 0.0;
 
-    /// "m [low-high]" in %.3g, or just "m" when the range is a single value.
+    /// "m [low-high]" in %.3g, or just "m" when the range prints as a single value.
     std::string text(const char* unit = "") const;
 };
 

@@ -74,7 +74,8 @@ struct RunMetrics {
     /// its pop-out speed).
     double maxSpeed = 0;
     /// m, how far the scene's bodies' centre of mass (mass-weighted) ended below where it began:
-    /// a stack that holds loses its drop and settling; one that collapses, metres.
+    /// a stack that holds loses its drop and settling; one that collapses, metres. (Bodies a
+    /// scene adds as it runs count at the end only: read it on scenes that add none.)
     double heightLost = 0;
 
     static constexpr double kNever = -1.0;
