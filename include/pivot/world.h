@@ -96,18 +96,39 @@ struct WorldDef {
     float jointLetGoSeparation = 0.0f;
     /// In [1, kMaxSubsteps]. Each World::step is solved as this many substeps of dt / n, the
     /// collision found once at its start: per substep, gravity and forces, every constraint
-    /// rebuilt at the bodies' current poses and warm-started from the last substep, the given
-    /// velocity iterations, integration and the position phase of each joint's strategy (so a
-    /// step costs about n times as much). 1, the default, is the pipeline Box2D 2.4.1 has and
-    /// agrees with it bit for bit; soft step (Box2D v3) uses 4. docs/position-correction.md,
-    /// "Substeps", says what each strategy does per substep.
-    int substepCount = 1;
+    /// rebuilt at the bodies' current poses and warm-started from the last substep, the velocity
+    /// iterations, integration and the position phase of each joint's strategy (so a step costs
+    /// about n times as much as one substep). The default, kDefaultSubstepCount (8), with 2
+    /// velocity iterations and 1 position iteration, was chosen from the study in
+    /// docs/position-correction.md ("Defaults"); 1 with 8 and 3 is the pipeline Box2D 2.4.1
+    /// has and agrees with it bit for bit (box2d241()). "Substeps" there says what each strategy
+    /// does per substep.
+    int substepCount = kDefaultSubstepCount;
+    /// Iterations of the velocity phase and of the position phase in each substep, each in
+    /// [0, kMaxIterations], used by World::step(dt) (World::step(dt, velocity, position) gives a
+    /// step its own). The position phase stops early once its joints and contacts are within
+    /// the slop, so its count is a most.
+    int velocityIterations = kDefaultVelocityIterations;
+    int positionIterations = kDefaultPositionIterations;
     /// How the broad phase sizes its boxes: Compact, the default, is Box2D v3's (tight boxes,
     /// fewer contacts between shapes that never touch); Predictive is Box2D 2.4.1's, needed to
     /// agree with it bit for bit. Same behaviour either way, except which non-touching pairs
     /// have contacts (and so the order contacts are made and solved in, and the bits that
     /// follow). docs/contacts.md says what each costs.
     BroadPhaseBoxes broadPhaseBoxes = BroadPhaseBoxes::Compact;
+
+    /// Box2D 2.4.1's pipeline: one substep of 8 velocity and 3 position iterations and its
+    /// broad-phase boxes, the rest as the defaults (FullNGS joints, NGS contacts, continuous
+    /// collision by substeps). Built with it, a world agrees with Box2D 2.4.1 bit for bit where
+    /// their features meet (the reference tests); it costs less than the defaults and holds less.
+    static WorldDef box2d241() {
+        WorldDef def;
+        def.substepCount = 1;
+        def.velocityIterations = kBox2D241VelocityIterations;
+        def.positionIterations = kBox2D241PositionIterations;
+        def.broadPhaseBoxes = BroadPhaseBoxes::Predictive;
+        return def;
+    }
 };
 
 /// A touching contact as seen from outside, measured at the bodies' current poses.
@@ -219,19 +240,27 @@ public:
     World& operator=(const World&) = delete;
 
     // --- simulation -------------------------------------------------------------------------
-    /// Advance by dt seconds, in [kMinTimeStep, kMaxTimeStep], with the given iteration counts,
-    /// in [0, kMaxIterations], each run in every substep (WorldDef::substepCount; dt divided by
-    /// it must still be at least kMinTimeStep). Contact and joint impulses of the previous step
-    /// warm-start this one scaled by the ratio of the steps, but never scaled up: after a step much
-    /// shorter than this one its impulses say little about this step's forces (see
-    /// docs/position-correction.md, "Changing the time step").
-    void step(float dt, int velocityIterations = kDefaultVelocityIterations,
-              int positionIterations = kDefaultPositionIterations);
+    /// Advance by dt seconds, in [kMinTimeStep, kMaxTimeStep], with the world's iteration counts
+    /// (WorldDef::velocityIterations and positionIterations), each run in every substep
+    /// (WorldDef::substepCount; dt divided by it must still be at least kMinTimeStep). Contact
+    /// and joint impulses of the previous step warm-start this one scaled by the ratio of the
+    /// steps, but never scaled up: after a step much shorter than this one its impulses say
+    /// little about this step's forces (see docs/position-correction.md, "Changing the time
+    /// step").
+    void step(float dt);
+    /// The same with this step's own iteration counts, each in [0, kMaxIterations] (the world's
+    /// are unchanged).
+    void step(float dt, int velocityIterations, int positionIterations);
     const StepStats& lastStepStats() const;
     /// WorldDef::substepCount. Changing it takes effect at the next step; the warm start scales
     /// the last substep's impulses by the ratio of the substeps' lengths, as for a change of dt.
     int substepCount() const;
     void setSubstepCount(int count);
+    /// WorldDef::velocityIterations and positionIterations, what World::step(dt) runs in each
+    /// substep; a change takes effect at the next step.
+    int velocityIterations() const;
+    int positionIterations() const;
+    void setIterations(int velocityIterations, int positionIterations);
 
     Vec2 gravity() const;
     /// Changes gravity and wakes every body, so sleeping bodies feel the change.
@@ -765,7 +794,7 @@ public:
     /// contacts with their manifolds and impulses, the broad phase, and the last step's events
     /// and statistics. Not in it: the worker count, the task system and the callbacks, which
     /// belong to the world a snapshot is restored into. The bytes are read by the same pivot2d
-    /// version (format version 5), on a machine of the same float behaviour as stateHash needs.
+    /// version (format version 6), on a machine of the same float behaviour as stateHash needs.
     std::vector<std::uint8_t> snapshot() const;
     /// Replaces this world's state with a snapshot's, so that stepping on gives, bit for bit,
     /// what stepping the snapshotted world gives (the same stateHash at once and after any

@@ -75,6 +75,10 @@ World::World(const WorldDef& def) {
 
 World::~World() = default;
 
+void World::step(float dt) {
+    step(dt, impl_->settings.velocityIterations, impl_->settings.positionIterations);
+}
+
 void World::step(float dt, int velocityIterations, int positionIterations) {
     const char* call = "World::step";
     impl_->requireStructureChange(call);
@@ -88,14 +92,13 @@ void World::step(float dt, int velocityIterations, int positionIterations) {
         fail(call, "dt must be <= kMaxTimeStep (" + formatFloat(kMaxTimeStep) + " s) (got " +
                        formatFloat(dt) + ")");
     }
-    auto checkIterations = [&](const char* field, int value) {
-        if (value < 0 || value > kMaxIterations) {
-            fail(call, std::string(field) + " must be in [0, " + std::to_string(kMaxIterations) +
-                           "] (got " + std::to_string(value) + ")");
-        }
-    };
-    checkIterations("velocityIterations", velocityIterations);
-    checkIterations("positionIterations", positionIterations);
+    // Checked before the message is built: a step allocates nothing when all is well.
+    if (velocityIterations < 0 || velocityIterations > kMaxIterations) {
+        checkIterations(call, "velocityIterations", velocityIterations);
+    }
+    if (positionIterations < 0 || positionIterations > kMaxIterations) {
+        checkIterations(call, "positionIterations", positionIterations);
+    }
     const int substeps = impl_->settings.substepCount;
     if (dt / static_cast<float>(substeps) < kMinTimeStep) {
         fail(call, "dt / substepCount must be >= kMinTimeStep (" + formatFloat(kMinTimeStep) +
@@ -139,6 +142,23 @@ void World::setSubstepCount(int count) {
     impl_->requireChange("World::setSubstepCount");
     checkSubstepCount("World::setSubstepCount", "count", count);
     impl_->settings.substepCount = count;
+}
+
+int World::velocityIterations() const {
+    return impl_->settings.velocityIterations;
+}
+
+int World::positionIterations() const {
+    return impl_->settings.positionIterations;
+}
+
+void World::setIterations(int velocityIterations, int positionIterations) {
+    const char* call = "World::setIterations";
+    impl_->requireChange(call);
+    checkIterations(call, "velocityIterations", velocityIterations);
+    checkIterations(call, "positionIterations", positionIterations);
+    impl_->settings.velocityIterations = velocityIterations;
+    impl_->settings.positionIterations = positionIterations;
 }
 
 Vec2 World::gravity() const {

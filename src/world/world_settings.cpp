@@ -21,6 +21,8 @@ WorldSettings WorldSettings::of(const WorldDef& def) {
     s.continuousCollision = def.continuousCollision;
     s.jointLetGoSeparation = def.jointLetGoSeparation;
     s.substepCount = def.substepCount;
+    s.velocityIterations = def.velocityIterations;
+    s.positionIterations = def.positionIterations;
     s.hitEventThreshold = def.hitEventThreshold;
     return s;
 }
@@ -79,6 +81,13 @@ void checkSubstepCount(const char* call, const std::string& field, int value) {
     }
 }
 
+void checkIterations(const char* call, const std::string& field, int value) {
+    if (value < 0 || value > kMaxIterations) {
+        fail(call, field + " must be in [0, kMaxIterations = " + std::to_string(kMaxIterations) +
+                       "] (got " + std::to_string(value) + ")");
+    }
+}
+
 void checkHitEventThreshold(const char* call, const std::string& field, float value) {
     requireInRange(call, field.c_str(), value, 0.0f, kMaxSpeed);
 }
@@ -95,6 +104,8 @@ void checkSettings(const char* call, const std::string& prefix, const WorldSetti
     checkContinuousCollision(call, prefix + "continuousCollision", s.continuousCollision);
     checkJointLetGoSeparation(call, prefix + "jointLetGoSeparation", s.jointLetGoSeparation);
     checkSubstepCount(call, prefix + "substepCount", s.substepCount);
+    checkIterations(call, prefix + "velocityIterations", s.velocityIterations);
+    checkIterations(call, prefix + "positionIterations", s.positionIterations);
     checkHitEventThreshold(call, prefix + "hitEventThreshold", s.hitEventThreshold);
 }
 

@@ -24,7 +24,9 @@ struct WorldSettings {
     bool enableContinuous = true;
     ContinuousCollision continuousCollision = ContinuousCollision::Substeps;
     float jointLetGoSeparation = 0.0f;                    // m; 0: never
-    int substepCount = 1;                                 // [1, kMaxSubsteps]
+    int substepCount = kDefaultSubstepCount;              // [1, kMaxSubsteps]
+    int velocityIterations = kDefaultVelocityIterations;  // [0, kMaxIterations], per substep
+    int positionIterations = kDefaultPositionIterations;
     float hitEventThreshold = kDefaultHitEventThreshold;  // m/s
 
     /// The settings a WorldDef asks for (unchecked: checkSettings).
@@ -45,6 +47,7 @@ void checkContinuousCollision(const char* call, const std::string& field,
                               ContinuousCollision value);
 void checkJointLetGoSeparation(const char* call, const std::string& field, float value);
 void checkSubstepCount(const char* call, const std::string& field, int value);
+void checkIterations(const char* call, const std::string& field, int value);
 void checkHitEventThreshold(const char* call, const std::string& field, float value);
 
 /// Every setting by its rule, each field named `prefix` + its WorldDef name ("def.gravity").

@@ -26,7 +26,7 @@ namespace pivot {
 namespace {
 
 constexpr std::uint8_t kMagic[8] = {'P', 'I', 'V', 'O', 'T', '2', 'D', 'S'};
-constexpr std::uint32_t kFormatVersion = 5;
+constexpr std::uint32_t kFormatVersion = 6;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8;
 constexpr std::size_t kChecksumSize = 8;
 constexpr int kBodyTypes = 3;
@@ -396,6 +396,8 @@ void describeWorld(Io& io, W& w, std::uint32_t worldId) {
     io.enumValue(w.settings.continuousCollision, kContinuousCollisions);
     io.value(w.settings.jointLetGoSeparation);
     io.value(w.settings.substepCount);
+    io.value(w.settings.velocityIterations);
+    io.value(w.settings.positionIterations);
     io.value(w.settings.hitEventThreshold);
     io.value(w.previousInvDt);
     using Bodies = std::remove_reference_t<decltype(w.bodies)>;

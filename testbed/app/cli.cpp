@@ -71,6 +71,7 @@ std::string usage() {
            "       pivot-testbed reference [--csv FILE]\n"
            "       pivot-testbed report [--docs DIR] [--steps N] [--jobs N] [--check]\n"
            "       pivot-testbed study [--docs DIR] [--jobs N] [--check]\n"
+           "       pivot-testbed defaults\n"
            "\n"
            "Runs pivot2d's test scenes headless and prints, for each run, how far the joints\n"
            "came apart, the energy drift, whether the run blew up, and the cost per step.\n"
@@ -99,6 +100,10 @@ std::string usage() {
            "and the figures and every run's CSV in DIR/results/. With --check it writes nothing:\n"
            "it regenerates FullNGS on mass_ratio and fails if a run differs from the committed\n"
            "CSV, timings aside (what CI runs).\n"
+           "\n"
+           "defaults: how WorldDef's defaults were chosen: candidate splits of substeps and\n"
+           "iterations on bridge_crate and rope_load (9 perturbed runs each), timed against\n"
+           "Box2D 2.4.1's 1 x 8/3; prints the table and the split the rule picks (a minute).\n"
            "\n"
            "options:\n"
            "  --scene NAME      run only this scene: "
@@ -152,6 +157,9 @@ CliOptions parseCli(const std::vector<std::string>& args) {
         first = 1;
     } else if (!args.empty() && args[0] == "study") {
         options.command = Command::Study;
+        first = 1;
+    } else if (!args.empty() && args[0] == "defaults") {
+        options.command = Command::Defaults;
         first = 1;
     }
     for (std::size_t i = first; i < args.size(); ++i) {

@@ -10,7 +10,7 @@
 
 namespace pivot::testbed {
 
-enum class Command { Table, Reference, Report, Study };
+enum class Command { Table, Reference, Report, Study, Defaults };
 
 struct CliOptions {
     Command command = Command::Table;
@@ -20,8 +20,8 @@ struct CliOptions {
     std::optional<ContactCorrection> contact;  ///< unset: both
     int steps = 600;
     float hz = 60.0f;
-    int velocityIterations = kDefaultVelocityIterations;
-    int positionIterations = kDefaultPositionIterations;
+    int velocityIterations = kBox2D241VelocityIterations;
+    int positionIterations = kBox2D241PositionIterations;
     int substeps = 1;  ///< WorldDef::substepCount
     /// Continuous collision on or off in every scene; unset: as each scene has it.
     std::optional<bool> continuous;

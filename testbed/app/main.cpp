@@ -7,6 +7,7 @@
 #include "app/cli.h"
 #include "app/table.h"
 #include "replay/html_replay.h"
+#include "report/defaults_study.h"
 #include "report/pareto_study.h"
 #include "report/report.h"
 #include "report/report_check.h"
@@ -72,6 +73,10 @@ int main(int argc, char** argv) {
         testbed::CliOptions options = testbed::parseCli({argv + 1, argv + argc});
         if (options.help) {
             std::cout << testbed::usage();
+            return 0;
+        }
+        if (options.command == testbed::Command::Defaults) {
+            report::runDefaultsStudy(std::cout);
             return 0;
         }
         if (options.command == testbed::Command::Study) {

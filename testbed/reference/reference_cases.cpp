@@ -96,13 +96,12 @@ TrajectoryDifference compareTrajectories(const ReferenceCase& c,
 scenes::Scene buildPivotCase(const ReferenceCase& c, const scenes::SceneOptions& options) {
     scenes::Scene scene;
     scene.name = c.name;
-    WorldDef def;
+    // Box2D 2.4.1's pipeline (one substep; its broad-phase boxes, not v3's, so that which shapes
+    // have contacts, and so the order contacts are made and solved in, is 2.4.1's).
+    WorldDef def = WorldDef::box2d241();
     def.gravity = options.gravity;
     def.defaultPositionSolver = options.solver;
     def.contactCorrection = options.contactCorrection;
-    // Box2D 2.4.1's boxes, not the default (v3's): which shapes have contacts, and so the order
-    // contacts are made and solved in, is then 2.4.1's, which bit-for-bit agreement needs.
-    def.broadPhaseBoxes = BroadPhaseBoxes::Predictive;
     scene.world = std::make_unique<World>(def);
     c.buildPivot(scene, options);
     return scene;

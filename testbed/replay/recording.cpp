@@ -19,8 +19,8 @@ namespace {
 
 // The testbed's defaults (scenes::RunSettings), which recording.h promises.
 constexpr float kHz = 60.0f;
-constexpr int kVelocityIterations = kDefaultVelocityIterations;  // 8
-constexpr int kPositionIterations = kDefaultPositionIterations;  // 3
+constexpr int kVelocityIterations = kBox2D241VelocityIterations;  // 8
+constexpr int kPositionIterations = kBox2D241PositionIterations;  // 3
 
 // A body's outlines in its own frame, as World::debugDrawBody draws them at the identity.
 class OutlineCapture final : public DebugDraw {

@@ -17,7 +17,7 @@ constexpr PositionSolver kMNGS = PositionSolver::ModifiedNGS;
 constexpr PositionSolver kFNGS = PositionSolver::FullNGS;
 
 const RunRecord& get(const RunMatrix& m, const std::string& scene, PositionSolver solver,
-                     float bias = -1.0f, int iterations = kDefaultPositionIterations) {
+                     float bias = -1.0f, int iterations = kBox2D241PositionIterations) {
     const RunRecord* r = m.find(scene, solver, bias, iterations);
     if (!r)
         throw std::logic_error("report: no run of " + scene + " with " +

@@ -222,7 +222,7 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
            << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: "
               "| ---: | ---: |\n";
         for (const RunRecord& r : matrix.runs) {
-            if (r.scene == name && r.positionIterations == kDefaultPositionIterations) {
+            if (r.scene == name && r.positionIterations == kBox2D241PositionIterations) {
                 md << runRow(r, matrix.hz);
             }
         }

@@ -111,7 +111,7 @@ struct Config {
     const scenes::SceneInfo* info = nullptr;
     PositionSolver solver = PositionSolver::FullNGS;
     float bias = 0.0f;
-    int positionIterations = kDefaultPositionIterations;
+    int positionIterations = kBox2D241PositionIterations;
     bool withSnapshots = false;
 };
 
@@ -221,7 +221,7 @@ RunMatrix runMatrix(int steps, int threads,
                                          info.name) != biasSweepScenes().end();
             if (velocityLevel && swept) biases = sweptBiases();
             for (float bias : biases) {
-                configs.push_back({&info, solver, bias, kDefaultPositionIterations,
+                configs.push_back({&info, solver, bias, kBox2D241PositionIterations,
                                    solver == PositionSolver::FullNGS});
             }
         }
@@ -232,7 +232,7 @@ RunMatrix runMatrix(int steps, int threads,
         for (int s = 0; s < kPositionSolverCount; ++s) {
             auto solver = static_cast<PositionSolver>(s);
             for (int iterations : sweptIterations()) {
-                if (iterations == kDefaultPositionIterations) continue;  // a main run already
+                if (iterations == kBox2D241PositionIterations) continue;  // a main run already
                 configs.push_back({&info, solver, defaultBiasFactor(solver), iterations, false});
             }
         }

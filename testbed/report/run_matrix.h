@@ -19,7 +19,7 @@ struct RunRecord {
     std::string scene;
     PositionSolver solver = PositionSolver::FullNGS;
     float bias = 0.0f;
-    int positionIterations = kDefaultPositionIterations;
+    int positionIterations = kBox2D241PositionIterations;
     scenes::RunMetrics metrics;              ///< each field the median over `trials`
     std::vector<scenes::RunMetrics> trials;  ///< one per perturbation seed, trial order
     std::vector<float> maxSeparation;        ///< per step, the trials' median, m
@@ -38,7 +38,7 @@ struct RunMatrix {
 
     /// The run with these settings, or nullptr. bias < 0 means the solver's default.
     const RunRecord* find(const std::string& scene, PositionSolver solver, float bias = -1.0f,
-                          int positionIterations = kDefaultPositionIterations) const;
+                          int positionIterations = kBox2D241PositionIterations) const;
 };
 
 /// Scenes of the position-iteration sweep (the cost-against-error plots).

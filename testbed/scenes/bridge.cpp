@@ -11,14 +11,15 @@ namespace {
 constexpr int kPlanks = 30;
 constexpr float kDeckHeight = 5.0f;
 
-void buildBridgeOf(Scene& scene, const SceneOptions& options, int planks, float y) {
+void buildBridgeOf(Scene& scene, const SceneOptions& options, int planks, float y,
+                   float density = 20.0f) {
     World& world = *scene.world;
     const float left = -0.5f * static_cast<float>(planks);
 
     BodyId ground = createGround(world);
 
     ShapeDef plank;
-    plank.density = 20.0f;
+    plank.density = density;
     plank.friction = 0.2f;
     const Polygon box = Polygon::box(0.5f, 0.125f);
 
@@ -73,6 +74,29 @@ void buildBridgeHeavy(Scene& scene, const SceneOptions& options) {
         s.world->createShape(box, shape, Polygon::box(0.5f, 0.5f));
         s.bodies.push_back(box);
     };
+}
+
+}  // namespace pivot::scenes
+
+namespace pivot::scenes {
+
+// One of the scenes WorldDef's defaults are chosen for (docs/position-correction.md,
+// "Defaults"): a bridge of 20 planks of 0.4 kg (density 1.6) on pins that never break, and a 1 m
+// crate of 36 kg, 90 times a plank, released at the start with its centre 2 m above the deck's
+// middle. The crate is the scene's last body.
+void buildBridgeCrate(Scene& scene, const SceneOptions& options) {
+    buildBridgeOf(scene, options, 20, kDeckHeight, 1.6f);
+    World& world = *scene.world;
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    def.position = {0.0f, kDeckHeight + 2.0f};
+    const BodyId crate = world.createBody(def);
+    ShapeDef shape;
+    shape.density = 36.0f;
+    shape.friction = 0.6f;
+    world.createShape(crate, shape, Polygon::box(0.5f, 0.5f));
+    scene.bodies.push_back(crate);
+    scene.disturbanceEndStep = stepAt(options, 1.0f);  // landed
 }
 
 }  // namespace pivot::scenes

@@ -39,8 +39,8 @@ bool isBlownUp(const Scene& scene);
 struct RunSettings {
     int steps = 600;
     float hz = 60.0f;
-    int velocityIterations = kDefaultVelocityIterations;
-    int positionIterations = kDefaultPositionIterations;
+    int velocityIterations = kBox2D241VelocityIterations;
+    int positionIterations = kBox2D241PositionIterations;
 };
 
 struct RunMetrics {

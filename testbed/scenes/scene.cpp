@@ -66,6 +66,9 @@ const std::vector<SceneInfo>& allScenes() {
          buildLongBridge},
         {"bridge_heavy", "the bridge; after 2 s a box of 4x its mass falls on its middle from 5 m",
          buildBridgeHeavy},
+        {"bridge_crate",
+         "20 planks of 0.4 kg pinned end to end, a 36 kg crate released 2 m above their middle",
+         buildBridgeCrate},
         {"pyramid", "1 m boxes stacked 20 rows high on the ground", buildPyramid},
         {"tumbler", "a box pinned at its centre and turned slowly, tumbling 200 small boxes",
          buildTumbler},
@@ -161,7 +164,11 @@ const SceneInfo* findScene(std::string_view name) {
 Scene buildScene(const SceneInfo& info, const SceneOptions& options) {
     Scene scene;
     scene.name = info.name;
+    // Box2D 2.4.1's iteration counts for World::step(dt); the runners give their own
+    // (RunSettings), the substeps and boxes come from the options.
     WorldDef def;
+    def.velocityIterations = kBox2D241VelocityIterations;
+    def.positionIterations = kBox2D241PositionIterations;
     def.gravity = perturbedGravity(options.gravity, options.perturbation);
     def.defaultPositionSolver = options.solver;
     def.contactCorrection = options.contactCorrection;

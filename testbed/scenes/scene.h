@@ -100,6 +100,7 @@ void buildBridge(Scene& scene, const SceneOptions& options);
 void buildChain(Scene& scene, const SceneOptions& options);
 void buildFarChain(Scene& scene, const SceneOptions& options);
 void buildBridgeHeavy(Scene& scene, const SceneOptions& options);
+void buildBridgeCrate(Scene& scene, const SceneOptions& options);
 void buildPyramid(Scene& scene, const SceneOptions& options);
 void buildTumbler(Scene& scene, const SceneOptions& options);
 void buildPendulumDrag(Scene& scene, const SceneOptions& options);

@@ -9,6 +9,7 @@
 #include "scenes/metrics.h"
 #include "scenes/parts.h"
 #include "scenes/scene.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 using namespace pivot::scenes;
@@ -112,7 +113,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene,
 // runs each task at once): the world's side of it allocates nothing either.
 TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
     for (int variant : {1, 2, 3}) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.workerCount = variant == 1 ? 1 : 2;
         if (variant == 3) {
             def.enqueueTask = [](StepTask task) -> void* {
@@ -166,7 +167,7 @@ TEST(ColouredIslands, StepWithoutAllocatingOnceWarm) {
 // a failure says how often it happens.
 TEST(ChurningContacts, StepWithoutAllocatingOnceWarm) {
     for (int workers : {1, 2}) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.gravity = {0.0f, 0.0f};
         def.enableSleep = false;
         def.workerCount = workers;

@@ -15,6 +15,7 @@
 #include "core/snapshot_io.h"
 #include "heap/counting_new.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -33,7 +34,7 @@ BodyId ballAt(World& world, Vec2 position) {
 
 // Restores `bytes` into a fresh world; returns the bytes restore asked of operator new.
 long long restoreCost(const std::vector<std::uint8_t>& bytes, bool* refused = nullptr) {
-    World world;
+    World world{oneSubstepDef()};
     heap::Counter counter;
     try {
         world.restore(bytes);
@@ -60,14 +61,14 @@ void expectWithinBound(const std::string& what, const std::vector<std::uint8_t>&
 TEST(SnapshotMemory, RestoreTakesAtMostItsBound) {
     for (const int n : {16385, 20000}) {
         {
-            World world;
+            World world{oneSubstepDef()};
             std::vector<BodyId> bodies;
             for (int i = 0; i < n; ++i) bodies.push_back(world.createBody(BodyDef{}));
             for (BodyId b : bodies) world.destroyBody(b);
             expectWithinBound("destroyed bodies", world.snapshot());
         }
         {
-            World world;
+            World world{oneSubstepDef()};
             const BodyId body = world.createBody(BodyDef{});
             std::vector<ShapeId> shapes;
             for (int i = 0; i < n; ++i) {
@@ -77,7 +78,7 @@ TEST(SnapshotMemory, RestoreTakesAtMostItsBound) {
             expectWithinBound("destroyed shapes", world.snapshot());
         }
         {
-            World world;
+            World world{oneSubstepDef()};
             const BodyId a = ballAt(world, {0.0f, 0.0f});
             const BodyId b = ballAt(world, {2.0f, 0.0f});
             std::vector<JointId> joints;
@@ -92,7 +93,7 @@ TEST(SnapshotMemory, RestoreTakesAtMostItsBound) {
         }
         {
             // Contacts: a pile of overlapping balls makes them; destroying the balls frees them.
-            World world;
+            World world{oneSubstepDef()};
             const BodyId ground = world.createBody(BodyDef{});
             world.createShape(ground, ShapeDef{}, Polygon::box(100.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
             std::vector<BodyId> balls;
@@ -104,7 +105,7 @@ TEST(SnapshotMemory, RestoreTakesAtMostItsBound) {
             expectWithinBound("destroyed contacts", world.snapshot());
         }
         {
-            World world;
+            World world{oneSubstepDef()};
             const BodyId ball = ballAt(world, {0.0f, 0.0f});
             std::vector<MouseJointId> mice;
             for (int i = 0; i < n; ++i) {
@@ -116,7 +117,7 @@ TEST(SnapshotMemory, RestoreTakesAtMostItsBound) {
             expectWithinBound("destroyed mouse joints", world.snapshot());
         }
         {
-            World world;
+            World world{oneSubstepDef()};
             const BodyId ground = world.createBody(BodyDef{});
             world.createShape(ground, ShapeDef{}, Polygon::box(100.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
             BodyId previous = ground;
@@ -134,10 +135,10 @@ TEST(SnapshotMemory, RestoreTakesAtMostItsBound) {
 // A crafted snapshot claiming 2 million destroyed bodies, 5 bytes of it each: refused, having
 // allocated little.
 TEST(SnapshotMemory, CountsAskingForMoreThanTheBoundAreRefusedFirst) {
-    World source;
+    World source{oneSubstepDef()};
     const std::vector<std::uint8_t> small = source.snapshot();
-    // The body pool's slot count follows the settings, 59 bytes of them after the lineage.
-    const std::size_t countAt = 20 + 4 + 59;
+    // The body pool's slot count follows the settings, 67 bytes of them after the lineage.
+    const std::size_t countAt = 20 + 4 + 67;
     ASSERT_EQ(small[countAt], 0);
     const std::uint32_t claimed = 2000000;
     std::vector<std::uint8_t> bytes(small.begin(), small.begin() + countAt);

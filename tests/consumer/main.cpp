@@ -4,7 +4,7 @@
 #include <cstdio>
 
 int main() {
-    pivot::World world;  // gravity (0, -10), FullNGS by default
+    pivot::World world;  // gravity (0, -10); 8 substeps of 2/1 iterations; FullNGS joints
 
     pivot::BodyId ground = world.createBody(pivot::BodyDef{});
 
@@ -19,7 +19,7 @@ int main() {
     jd.positionSolver = pivot::PositionSolver::FullNGS;
     pivot::JointId pin = world.createJoint(jd);
 
-    for (int i = 0; i < 600; ++i) world.step(1.0f / 60.0f, 8, 3);
+    for (int i = 0; i < 600; ++i) world.step(1.0f / 60.0f);
 
     float separation = world.jointSeparation(pin);
     std::printf("consumer: separation after 10 s = %g m\n", separation);

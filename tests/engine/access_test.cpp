@@ -15,6 +15,7 @@
 #include "pivot/pivot.h"
 #include "scenes/parts.h"
 #include "world_calls.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 using namespace pivot::test_support;
@@ -87,7 +88,7 @@ TEST(WorldAccess, EveryChangingCallIsListed) {
 // the tests below is the rule's.
 TEST(WorldAccess, EveryListedCallWorksBetweenSteps) {
     for (const ChangingCall& call : everyChangingCall()) {
-        World world;
+        World world{oneSubstepDef()};
         const Everything e = buildEverything(world);
         world.step(kDt);
         EXPECT_EQ(errorOf([&] { call.make(world, e); }), "") << call.name;
@@ -179,7 +180,7 @@ TEST(WorldAccess, EveryChangeIsRefusedFromTaskCallbacksAndOtherThreads) {
         EXPECT_NO_THROW(stepping->bodyCount());
         EXPECT_NO_THROW(stepping->isValid(ids->a));
     };
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = 2;
     def.adaptWorkerCount = false;
     def.enqueueTask = [&](StepTask task) -> void* {
@@ -200,7 +201,7 @@ TEST(WorldAccess, EveryChangeIsRefusedFromTaskCallbacksAndOtherThreads) {
     addCrowd(world);
     stepping = &world;
     ids = &e;
-    World reference;
+    World reference{oneSubstepDef()};
     buildEverything(reference);
     addCrowd(reference);
     for (int i = 0; i < 10; ++i) {
@@ -230,7 +231,7 @@ TEST(WorldAccess, EveryChangeIsRefusedWhileDrawing) {
         void drawSegment(Vec2, Vec2, DebugColor) override {}
         void drawPoint(Vec2, float, DebugColor) override {}
     };
-    World world;
+    World world{oneSubstepDef()};
     const Everything e = buildEverything(world);
     const std::uint64_t before = world.stateHash();
     Drawing draw;
@@ -278,7 +279,7 @@ TEST(WorldAccess, AQueryCallbackMayChangeMotionAndSettingsButNotStructure) {
 // turned static moves its proxies between trees mid-walk), and its walk still meets every
 // shape once, with live ids.
 TEST(WorldAccess, EveryQueryRefusesStructuralChangesAndFinishesItsWalk) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     world.createShape(ground, ShapeDef{}, Polygon::box(100.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
     for (int i = 0; i < 120; ++i) {

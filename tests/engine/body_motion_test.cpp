@@ -8,6 +8,7 @@
 #include "same_step_stats.h"
 #include "scoped_switch.h"
 #include "solver/island_solver.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -29,7 +30,7 @@ BodyDef dynamicAt(Vec2 p) {
 
 TEST(BodyMotion, FreeFallIsSemiImplicitEuler) {
     // v_n = n g h and y_n = y0 + g h^2 n (n + 1) / 2: velocity first, then position.
-    World world;
+    World world{oneSubstepDef()};
     BodyId b = ball(world, dynamicAt({0, 100}));
     const int n = 60;
     for (int i = 0; i < n; ++i) world.step(kDt);
@@ -39,7 +40,7 @@ TEST(BodyMotion, FreeFallIsSemiImplicitEuler) {
 }
 
 TEST(BodyMotion, DampingScalesVelocityByOneOverOnePlusHc) {
-    World world(WorldDef{{0, 0}});
+    World world(oneSubstepDef({0, 0}));
     BodyDef def = dynamicAt({0, 0});
     def.linearVelocity = {4, 0};
     def.angularVelocity = 2;
@@ -52,7 +53,7 @@ TEST(BodyMotion, DampingScalesVelocityByOneOverOnePlusHc) {
 }
 
 TEST(BodyMotion, GravityScale) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def = dynamicAt({0, 0});
     def.gravityScale = 0.0f;
     BodyId floating = ball(world, def);
@@ -64,7 +65,7 @@ TEST(BodyMotion, GravityScale) {
 }
 
 TEST(BodyMotion, KinematicBodiesMoveByVelocityAndIgnoreGravityAndForces) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Kinematic;
     def.linearVelocity = {1, 0};
@@ -80,7 +81,7 @@ TEST(BodyMotion, KinematicBodiesMoveByVelocityAndIgnoreGravityAndForces) {
 }
 
 TEST(BodyMotion, StaticBodiesNeverMove) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId s = ball(world, BodyDef{});
     for (int i = 0; i < 10; ++i) world.step(kDt);
     EXPECT_EQ(world.bodyPosition(s), (Vec2{0, 0}));
@@ -88,7 +89,7 @@ TEST(BodyMotion, StaticBodiesNeverMove) {
 }
 
 TEST(BodyMotion, ForcesLastOneStepAndImpulsesActAtOnce) {
-    World world(WorldDef{{0, 0}});
+    World world(oneSubstepDef({0, 0}));
     BodyId b = ball(world, dynamicAt({0, 0}));
     float mass = world.bodyMass(b);
     world.applyForceToCenter(b, {mass * 60.0f, 0});  // a = 60 m/s^2 for one step: dv = 1 m/s
@@ -111,7 +112,7 @@ TEST(BodyMotion, ForcesLastOneStepAndImpulsesActAtOnce) {
 }
 
 TEST(BodyMotion, TranslationAndRotationAreClampedPerStep) {
-    World world(WorldDef{{0, 0}});
+    World world(oneSubstepDef({0, 0}));
     BodyDef def = dynamicAt({0, 0});
     def.linearVelocity = {600, 0};  // 10 m per step at 60 Hz
     def.angularVelocity = 300;      // 5 rad per step
@@ -128,7 +129,7 @@ TEST(BodyMotion, TranslationAndRotationAreClampedPerStep) {
 }
 
 TEST(BodyMotion, SetTransformTeleportsTheOriginAndKeepsTheCentreOffset) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId b = world.createBody(dynamicAt({0, 0}));
     world.createShape(b, ShapeDef{}, Circle{{1, 0}, 0.5f});
     world.setBodyTransform(b, {3, 4}, kPi / 2);
@@ -149,7 +150,7 @@ using LoneBodyShortcut = ScopedSwitch<&setLoneBodyShortcut>;
 // branch of a lone body's step: forces, torque and damping; both clamps; a kinematic body; the
 // world's edge; falling asleep.
 std::unique_ptr<World> loneBodies(int substeps, int workers) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.substepCount = substeps;
     def.workerCount = workers;
     auto world = std::make_unique<World>(def);

@@ -14,6 +14,7 @@
 #include "collision/manifold.h"
 #include "grid_mass.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -60,7 +61,7 @@ TEST(Capsule, MassMatchesIntegration) {
         EXPECT_NEAR(exact.rotationalInertia, grid.rotationalInertia, 3e-3 * grid.rotationalInertia);
     }
     // A body's mass from a capsule shape is the same.
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     const BodyId body = world.createBody(def);
@@ -72,7 +73,7 @@ TEST(Capsule, MassMatchesIntegration) {
 }
 
 TEST(Capsule, BadCapsulesAreRefusedAndNothingChanges) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     const BodyId body = world.createBody(def);
@@ -231,7 +232,7 @@ TEST(Capsule, EndToEndCapsulesTouchOnlyWhenTheirEndsDo) {
 // Two capsules stacked crosswise on a floor, and one lying along another: they come to rest
 // at the heights of their radii, the parallel pair on two points and without rocking.
 TEST(Capsule, CapsulesRestOnEachOtherAndOnTheFloor) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const BodyId ground = world.createBody(BodyDef{});
     world.createShape(ground, ShapeDef{}, Polygon::box(20.0f, 0.5f, {0, -0.5f}, 0.0f));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -40,7 +41,7 @@ Chain flatFloor(float piece) {
 }  // namespace
 
 TEST(Chain, MakesOneSegmentShapePerSegmentWithItsNeighboursAsGhosts) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     const std::vector<Vec2> points{{3, 0}, {2, 0}, {1, 0.5f}, {0, 0}, {-1, 0}};
     const std::vector<ShapeId> open = world.createChain(ground, ShapeDef{}, Chain{points, false});
@@ -68,7 +69,7 @@ TEST(Chain, MakesOneSegmentShapePerSegmentWithItsNeighboursAsGhosts) {
 }
 
 TEST(Chain, BadChainsAreRefusedAndNothingIsMade) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     const BodyId dynamic = dynamicBody(world, {0, 5});
     world.createShape(dynamic, ShapeDef{}, Circle{{0, 0}, 0.5f});
@@ -114,7 +115,7 @@ TEST(Chain, BadChainsAreRefusedAndNothingIsMade) {
 // flat floor, two-sided segments hold the box too, Box2D's hysteresis favouring the segment's
 // own face: the bit-for-bit reference tests cover the join decisions themselves.)
 TEST(Chain, ABoxSlidesAcrossTheJoinsWithoutCatching) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const BodyId ground = world.createBody(BodyDef{});
     ShapeDef slippery;
@@ -136,7 +137,7 @@ TEST(Chain, ABoxSlidesAcrossTheJoinsWithoutCatching) {
 }
 
 TEST(Chain, IsSolidFromItsRightOnlyAndRaysSeeTheSameSide) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const BodyId ground = world.createBody(BodyDef{});
     world.createChain(ground, ShapeDef{}, flatFloor(2.0f));
@@ -168,7 +169,7 @@ TEST(Chain, IsSolidFromItsRightOnlyAndRaysSeeTheSameSide) {
 // A closed loop wound clockwise keeps bodies in: balls and boxes bouncing in a box-shaped loop
 // stay inside it.
 TEST(Chain, AClockwiseLoopHoldsBodiesInside) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const BodyId ground = world.createBody(BodyDef{});
     ShapeDef bouncy;
@@ -200,7 +201,7 @@ TEST(Chain, AClockwiseLoopHoldsBodiesInside) {
 // kMaxTranslation, 2 m, and starting 1 m up) is behind the floor after one step and falls on.
 TEST(Chain, AFastBodyDoesNotTunnelThroughAChainFloor) {
     for (bool continuous : {true, false}) {
-        World world;
+        World world{oneSubstepDef()};
         world.setContinuousEnabled(continuous);
         const BodyId ground = world.createBody(BodyDef{});
         world.createChain(ground, ShapeDef{}, flatFloor(1.0f));

@@ -10,6 +10,7 @@
 #include "model/contact_census.h"
 #include "pivot/pivot.h"
 #include "world/contact_manager.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -66,7 +67,7 @@ TEST(ContactCensus, SummarisesEachSlotAndNoticesAChangeNotRecorded) {
 
 TEST(ContactCensus, StaysTrueThroughEverythingThatChangesAContact) {
     const CensusChecks checks;
-    World world;
+    World world{oneSubstepDef()};
     BodyDef groundDef;
     const BodyId ground = world.createBody(groundDef);
     world.createShape(ground, ShapeDef{}, Polygon::box(20.0f, 0.5f));

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -14,7 +15,7 @@ namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
 WorldDef worldWith(ContactCorrection correction) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.contactCorrection = correction;
     return def;
 }
@@ -197,7 +198,7 @@ INSTANTIATE_TEST_SUITE_P(Contacts, EveryContactCorrection,
 
 TEST(ContactFiltering, CategoryMaskAndGroup) {
     auto touching = [](Filter a, Filter b) {
-        World world(WorldDef{{0, 0}});
+        World world(oneSubstepDef({0, 0}));
         BodyDef def;
         def.type = BodyType::Dynamic;
         BodyId first = world.createBody(def);
@@ -223,7 +224,7 @@ TEST(ContactFiltering, CategoryMaskAndGroup) {
 }
 
 TEST(ContactFiltering, ChangingAFilterTakesEffectAtTheNextStep) {
-    World world(WorldDef{{0, 0}});
+    World world(oneSubstepDef({0, 0}));
     BodyDef def;
     def.type = BodyType::Dynamic;
     BodyId a = world.createBody(def);
@@ -243,7 +244,7 @@ TEST(ContactFiltering, ChangingAFilterTakesEffectAtTheNextStep) {
 
 TEST(ContactFiltering, JointedBodiesCollideOnlyWhenTheJointSaysSo) {
     for (bool collideConnected : {false, true}) {
-        World world(WorldDef{{0, 0}});
+        World world(oneSubstepDef({0, 0}));
         BodyDef def;
         def.type = BodyType::Dynamic;
         BodyId a = world.createBody(def);
@@ -265,7 +266,7 @@ TEST(ContactFiltering, JointedBodiesCollideOnlyWhenTheJointSaysSo) {
 }
 
 TEST(ContactEvents, BeginWhenLandingEndWhenLifted) {
-    World world;
+    World world{oneSubstepDef()};
     addGround(world);
     BodyId box = addBox(world, {0.0f, 1.0f});
     int begins = 0;
@@ -282,7 +283,7 @@ TEST(ContactEvents, BeginWhenLandingEndWhenLifted) {
 }
 
 TEST(Contacts, CircleAgainstPolygonAndCircle) {
-    World world;
+    World world{oneSubstepDef()};
     addGround(world);
     BodyDef def;
     def.type = BodyType::Dynamic;
@@ -300,7 +301,7 @@ TEST(Contacts, CircleAgainstPolygonAndCircle) {
 }
 
 TEST(Contacts, DestroyingABodyWakesWhatRestedOnIt) {
-    World world;
+    World world{oneSubstepDef()};
     addGround(world);
     BodyId lower = addBox(world, {0.0f, 0.515f});
     BodyId upper = addBox(world, {0.0f, 1.53f});
@@ -337,7 +338,7 @@ TEST(Contacts, JointsAndNgsContactsShareThePositionSweepsAndTheEarlyExit) {
 TEST(ContactFiltering, AShapeThatCouldMeetNothingIsFoundOnceSomethingItMeetsAppears) {
     // A box that collides only with category 1 falls while no category-1 shape exists (the broad
     // phase does not even query it then); a category-1 ground added later must still stop it.
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     def.position = {0.0f, 3.0f};
@@ -359,7 +360,7 @@ TEST(ContactFiltering, AShapeThatCouldMeetNothingIsFoundOnceSomethingItMeetsAppe
 // whose type changes must change trees and still meet what it touches, under both policies.
 TEST(ContactBodyTypes, ABodyTurnedStaticOrDynamicKeepsMeetingWhatItTouches) {
     for (const BroadPhaseBoxes boxes : {BroadPhaseBoxes::Predictive, BroadPhaseBoxes::Compact}) {
-        WorldDef worldDef;
+        WorldDef worldDef = oneSubstepDef();
         worldDef.broadPhaseBoxes = boxes;
         World world(worldDef);
         addGround(world);

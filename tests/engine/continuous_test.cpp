@@ -7,6 +7,7 @@
 
 #include "continuous_parts.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 using pivot::test::ball;
@@ -19,7 +20,7 @@ namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
 WorldDef weightless() {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.gravity = {0.0f, 0.0f};
     return def;
 }
@@ -122,7 +123,7 @@ TEST(Continuous, IsSwitchedPerWorldBetweenSteps) {
 // 60 Hz) with a wall 0.05 m thick standing in the ball's path above the pivot. Returns the
 // ball's furthest angle about the pivot, unwrapped, from 0 (to the right of the pivot).
 float pendulumIntoThinWall(bool continuous, int* impacts) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.enableContinuous = continuous;
     World world(def);
     const Vec2 pivot{0.0f, 10.0f};
@@ -217,7 +218,7 @@ TEST(Continuous, ABulletStopsAtTheFirstThinBoxAndPushesIt) {
 
 TEST(Continuous, AFastBoxLandsOnASegmentFloor) {
     for (bool continuous : {true, false}) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.enableContinuous = continuous;
         World world(def);
         const BodyId floor = world.createBody(BodyDef{});
@@ -245,7 +246,7 @@ TEST(Continuous, AFastBoxLandsOnASegmentFloor) {
 }
 
 TEST(Continuous, BulletAndContinuousFlagsAreKeptAndChanged) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     const BodyId body = world.createBody(def);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -79,7 +80,7 @@ struct Recorder : DebugDraw {
 };
 
 struct Fixture {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground, box, ball, capsule, kinematic, sleeper;
     ShapeId groundShape, sensor;
     JointId pin, rope;

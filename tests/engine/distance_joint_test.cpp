@@ -7,6 +7,7 @@
 
 #include "all_solvers.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -16,11 +17,11 @@ constexpr float kDt = 1.0f / 60.0f;
 // A 1 kg-ish ball of radius 0.25 m hanging from the static origin on a joint whose anchor on the
 // ball is its centre, started `length` m out along +x (so it swings down).
 struct Pendulum {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground, ball;
     JointId joint;
 
-    Pendulum(const DistanceJointDef& settings, Vec2 start, const WorldDef& def = WorldDef{})
+    Pendulum(const DistanceJointDef& settings, Vec2 start, const WorldDef& def = oneSubstepDef())
         : world(def) {
         ground = world.createBody(BodyDef{});
         BodyDef bd;
@@ -113,7 +114,7 @@ TEST(DistanceJoint, ARopeIsSlackWithinItsLimitAndHoldsAtItsMaximum) {
 TEST(DistanceJoint, ARopesMinimumPushesApart) {
     DistanceJointDef jd;
     jd.limit = {true, 2.0f, 6.0f};
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.gravity = {0, 0};
     Pendulum p(jd, {0, -2.5f}, def);
     p.world.setBodyLinearVelocity(p.ball, {0, 3});  // towards the pin
@@ -135,7 +136,7 @@ TEST(DistanceJoint, ASpringOscillatesAtItsFrequency) {
     DistanceJointDef jd;
     jd.length = 3.0f;
     jd.spring = {true, 2.0f, 0.0f};
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.gravity = {0, 0};
     Pendulum p(jd, {0, -3.5f}, def);
     std::vector<float> crossings;
@@ -157,7 +158,7 @@ TEST(DistanceJoint, EveryStrategyMixesWithRevoluteJointsInOneIsland) {
     // A chain whose links alternate revolute and distance joints, each joint with the next
     // strategy, hanging from the ground and swinging.
     for (int offset = 0; offset < 4; ++offset) {
-        World world;
+        World world{oneSubstepDef()};
         BodyId previous = world.createBody(BodyDef{});
         std::vector<JointId> joints;
         for (int i = 0; i < 12; ++i) {

@@ -13,6 +13,7 @@
 
 #include "pivot/pivot.h"
 #include "scenes/scene.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -47,7 +48,7 @@ ShapeDef hitDef() {
 TEST(HitEvents, ADroppedBallReportsOneHitWithItsSpeedPointAndNormal) {
     for (bool continuous : {true, false}) {
         SCOPED_TRACE(continuous ? "continuous" : "discrete");
-        World world;
+        World world{oneSubstepDef()};
         world.setContinuousEnabled(continuous);
         const ShapeId ground = groundBox(world, hitDef());
         const BodyId ball = bodyAt(world, BodyType::Dynamic, {1.0f, 0.5f + 0.25f + 1.25f});
@@ -73,7 +74,7 @@ TEST(HitEvents, ADroppedBallReportsOneHitWithItsSpeedPointAndNormal) {
 TEST(HitEvents, NeedTheShapeFlagAndASpeedAboveTheThreshold) {
     // Without the flag; with it but a threshold above the 5 m/s landing.
     for (int variant = 0; variant < 2; ++variant) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         if (variant == 1) def.hitEventThreshold = 6.0f;
         World world(def);
         const ShapeId ground = groundBox(world, variant == 0 ? ShapeDef{} : hitDef());
@@ -90,14 +91,14 @@ TEST(HitEvents, NeedTheShapeFlagAndASpeedAboveTheThreshold) {
             EXPECT_TRUE(world.shapeHitEventsEnabled(ground));
         }
     }
-    World world;
+    World world{oneSubstepDef()};
     EXPECT_FLOAT_EQ(world.hitEventThreshold(), kDefaultHitEventThreshold);
     const std::uint64_t before = world.stateHash();
     EXPECT_THROW(world.setHitEventThreshold(-1.0f), Error);
     EXPECT_THROW(world.setHitEventThreshold(NAN), Error);
     EXPECT_THROW(world.setHitEventThreshold(2.0f * kMaxSpeed), Error);
     EXPECT_EQ(world.stateHash(), before);
-    WorldDef bad;
+    WorldDef bad = oneSubstepDef();
     bad.hitEventThreshold = -0.5f;
     EXPECT_THROW(World{bad}, Error);
 }
@@ -126,7 +127,7 @@ struct OneWayPlatform {
 // ball, so the impact search consults the callback too.
 TEST(PreSolve, MakesAOneWayPlatformAlsoForFastBodies) {
     for (float speed : {8.0f, 40.0f}) {
-        World world;
+        World world{oneSubstepDef()};
         ShapeDef platformDef;
         platformDef.enablePreSolve = true;
         const ShapeId platform = groundBox(world, platformDef, 0.0f, 0.05f);
@@ -149,7 +150,7 @@ TEST(PreSolve, MakesAOneWayPlatformAlsoForFastBodies) {
 }
 
 TEST(PreSolve, WithoutTheFlagOrWithTheCallbackClearedContactsAreSolved) {
-    World world;
+    World world{oneSubstepDef()};
     const ShapeId platform = groundBox(world, ShapeDef{});
     const BodyId ball = bodyAt(world, BodyType::Dynamic, {0.0f, 1.0f});
     world.createShape(ball, ShapeDef{}, Circle{{0, 0}, 0.25f});
@@ -225,7 +226,7 @@ TEST(Callbacks, MayReadTheWorldButNotChangeItAndTheirExceptionsComeOutOfStep) {
 
 // The custom filter keeps a pair apart; asked again when a shape's filter is set.
 TEST(CustomFilter, KeepsPairsApartAndIsAskedAgainOnRefiltering) {
-    World world;
+    World world{oneSubstepDef()};
     const ShapeId ground = groundBox(world, ShapeDef{});
     const BodyId a = bodyAt(world, BodyType::Dynamic, {-2.0f, 1.0f});
     const BodyId b = bodyAt(world, BodyType::Dynamic, {2.0f, 1.0f});
@@ -258,7 +259,7 @@ TEST(CustomFilter, KeepsPairsApartAndIsAskedAgainOnRefiltering) {
 // A 1 kg body hanging from a revolute joint pulls 10 N: a break force above holds it, one
 // below lets go in the next step with the force that broke it.
 TEST(BreakableJoints, LetGoWhenTheirForceOrTorquePassesTheThreshold) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId anchor = bodyAt(world, BodyType::Static, {0.0f, 5.0f});
     const BodyId weight = bodyAt(world, BodyType::Dynamic, {0.0f, 4.0f});
     ShapeDef dense;
@@ -320,7 +321,7 @@ TEST(BreakableJoints, LetGoWhenTheirForceOrTorquePassesTheThreshold) {
 // crate over several steps: there the force itself differs with the substeps, not its reading.)
 TEST(BreakableJoints, BreakTheSameWhateverTheSubsteps) {
     struct Drop {
-        World world;
+        World world{oneSubstepDef()};
         JointId left, right;
         explicit Drop(int substeps) : world(makeDef(substeps)) {
             const BodyId ground = world.createBody(BodyDef{});
@@ -336,7 +337,7 @@ TEST(BreakableJoints, BreakTheSameWhateverTheSubsteps) {
             world.createShape(crate, heavy, Polygon::box(0.5f, 0.5f));
         }
         static WorldDef makeDef(int substeps) {
-            WorldDef def;
+            WorldDef def = oneSubstepDef();
             def.substepCount = substeps;
             return def;
         }
@@ -372,7 +373,7 @@ TEST(BreakableJoints, BreakTheSameWhateverTheSubsteps) {
 // Every awake dynamic or kinematic body is listed with its transform; one falling asleep is
 // listed once more with the flag, then no longer.
 TEST(BodyMoveEvents, ListAwakeBodiesAndTheirFallingAsleep) {
-    World world;
+    World world{oneSubstepDef()};
     groundBox(world, ShapeDef{});
     const BodyId box = bodyAt(world, BodyType::Dynamic, {0.0f, 1.0f});
     world.createShape(box, ShapeDef{}, Polygon::box(0.5f, 0.5f));
@@ -404,7 +405,7 @@ TEST(BodyMoveEvents, ListAwakeBodiesAndTheirFallingAsleep) {
 // same, entry for entry, on 1 and 2 workers.
 TEST(Events, ComeInTheSameOrderOnAnyWorkerCount) {
     auto run = [](int workers) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.workerCount = workers;
         World world(def);
         groundBox(world, hitDef());
@@ -503,7 +504,7 @@ TEST(ContactEvents, ApplyBeginsThenEndsToGetTheTouchingPairs) {
                 120, info.name);
         }
     }
-    World shower;
+    World shower{oneSubstepDef()};
     ShapeDef bouncy;
     bouncy.restitution = 1.0f;
     groundBox(shower, bouncy, 0.0f, 0.5f);

@@ -11,6 +11,7 @@
 
 #include "continuous_parts.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 using pivot::test::Shot;
@@ -21,7 +22,7 @@ namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
 WorldDef fastBodiesWorld(BroadPhaseBoxes boxes = BroadPhaseBoxes::Compact) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.gravity = {0.0f, 0.0f};
     def.continuousCollision = ContinuousCollision::FastBodies;
     def.broadPhaseBoxes = boxes;
@@ -212,7 +213,7 @@ TEST(FastBodies, ABulletStopsAtADynamicBoxThatAnotherBallPassesThrough) {
 }
 
 TEST(FastBodies, ThePolicyIsCheckedAndSwitchedBetweenSteps) {
-    World world{WorldDef{}};
+    World world{oneSubstepDef()};
     EXPECT_EQ(world.continuousCollision(), ContinuousCollision::Substeps);
     const std::uint64_t before = world.stateHash();
     EXPECT_THROW(world.setContinuousCollision(static_cast<ContinuousCollision>(7)), Error);
@@ -221,7 +222,7 @@ TEST(FastBodies, ThePolicyIsCheckedAndSwitchedBetweenSteps) {
     EXPECT_EQ(world.continuousCollision(), ContinuousCollision::FastBodies);
     EXPECT_NE(world.stateHash(), before) << "the hash covers the policy";
 
-    WorldDef bad;
+    WorldDef bad = oneSubstepDef();
     bad.continuousCollision = static_cast<ContinuousCollision>(2);
     EXPECT_THROW(World{bad}, Error);
 
@@ -276,7 +277,7 @@ TEST(FastBodies, StepToTheSameBitsOnAnyWorkerCountAndFromASnapshot) {
     EXPECT_EQ(volleyHash(2), one);
     EXPECT_EQ(volleyHash(4), one);
 
-    World restored{WorldDef{}};
+    World restored{oneSubstepDef()};
     restored.restore(bytes);
     EXPECT_EQ(restored.continuousCollision(), ContinuousCollision::FastBodies);
     for (int i = 0; i < 20; ++i) restored.step(kDt);

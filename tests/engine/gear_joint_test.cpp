@@ -8,6 +8,7 @@
 
 #include "all_solvers.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -28,7 +29,7 @@ BodyId disc(World& world, Vec2 at, float radius) {
 // Two wheels of radii 1 and 2 pinned to `base` 3 m apart and meshed by a gear (ratio 2: the
 // big one turns half as fast, the other way); a motor drives the small one.
 struct Wheels {
-    World world;
+    World world{oneSubstepDef()};
     BodyId base, small, big;
     JointId pin1, pin2, gear;
 
@@ -55,7 +56,7 @@ struct Wheels {
         gear = world.createJoint(gd);
     }
     static WorldDef makeDef(bool floatingBase) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         if (floatingBase) def.gravity = {0, 0};
         return def;
     }
@@ -64,11 +65,11 @@ struct Wheels {
 // A pinion of radius 0.5 pinned at (0, 5), and a 1 x 0.2 m rack on a vertical prismatic joint
 // beside it (0.05 m clear), falling under its weight and turning the pinion.
 struct RackAndPinion {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground, pinion, rack;
     JointId pin, slide, gear;
 
-    explicit RackAndPinion(PositionSolver solver) : world(WorldDef{}) {
+    explicit RackAndPinion(PositionSolver solver) : world(oneSubstepDef()) {
         ground = world.createBody(BodyDef{});
         pinion = disc(world, {0, 5}, 0.5f);
         BodyDef def;
@@ -256,7 +257,7 @@ TEST(GearJoint, ALetGoPinStillLeavesTheGearItsBodies) {
 TEST(GearJoint, ABaseOnlyALetGoJointConnectsIsStillInTheGearsIsland) {
     // The base of joint2 is a dynamic body created last, so the step starts its island search
     // there; with joint2 let go, only that joint still ties the base to the gear's island.
-    World world{WorldDef{}};
+    World world{oneSubstepDef()};
     BodyId ground = world.createBody(BodyDef{});
     BodyId wheel1 = disc(world, {0, 0}, 1.0f);
     BodyId wheel2 = disc(world, {3, 0}, 2.0f);
@@ -298,7 +299,7 @@ TEST(GearJoint, ABaseJoinedOnlyToAStaticBodyIsStillInTheGearsIsland) {
     // starts at D. D reaches joint2 and the static B, which joins nothing; only the gear, which
     // D's own joint list does not hold, ties D to wheel1's island. (The fuzz found D's slot
     // pointing into another island.)
-    World world{WorldDef{}};
+    World world{oneSubstepDef()};
     BodyId ground = world.createBody(BodyDef{});
     BodyId wheel1 = disc(world, {0, 0}, 1.0f);
     BodyDef postDef;
@@ -355,7 +356,7 @@ TEST(GearJoint, BadInputIsRefusedAndChangesNothing) {
                   "def.joint2 is a gear joint; a gear couples revolute and prismatic joints");
     def.joint2 = JointId{};
     expectRefused([&] { world.createJoint(def); }, "def.joint2");
-    World other{WorldDef{}};
+    World other{oneSubstepDef()};
     BodyId ground = other.createBody(BodyDef{});
     BodyId wheel = disc(other, {0, 0}, 1.0f);
     def.joint2 = other.createJoint(RevoluteJointDef::atWorldAnchor(ground, wheel, {0, 0}));
@@ -374,7 +375,7 @@ TEST(GearJoint, BadInputIsRefusedAndChangesNothing) {
     world.destroyJoint(second);
     // Two joints that move static bodies.
     {
-        World statics{WorldDef{}};
+        World statics{oneSubstepDef()};
         BodyId base = disc(statics, {0, 0}, 1.0f);
         BodyId s1 = statics.createBody(BodyDef{});
         BodyId s2 = statics.createBody(BodyDef{});

@@ -15,6 +15,7 @@
 #include "all_solvers.h"
 #include "pivot/pivot.h"
 #include "scenes/scene.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -45,13 +46,13 @@ void expectRefused(World& world, const std::function<void()>& call,
 // The report's pendulum: a 1 x 0.2 m box on a revolute joint at the origin, with a mouse joint
 // holding its far end, after 30 steps.
 struct Pendulum {
-    World world;
+    World world{oneSubstepDef()};
     BodyId box;
     JointId pin;
 
     Pendulum(PositionSolver solver, ContactCorrection correction)
         : world([&] {
-              WorldDef def;
+              WorldDef def = oneSubstepDef();
               def.contactCorrection = correction;
               return def;
           }()) {
@@ -144,7 +145,7 @@ TEST(TimeStep, AShortStepDoesNotThrowTheChainApart) {
 // destroyed on it then made its velocity NaN. Every impulse that would take it beyond the
 // limits is refused now, so it never gets there.
 TEST(Accumulation, ImpulsesCannotPileUpBeyondTheLimits) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef bd;
     bd.type = BodyType::Dynamic;
     bd.position = {-1e5f, -1e5f};
@@ -178,7 +179,7 @@ TEST(Accumulation, ImpulsesCannotPileUpBeyondTheLimits) {
 }
 
 TEST(Accumulation, ForcesCannotPileUpBeyondTheLimits) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef bd;
     bd.type = BodyType::Dynamic;
     BodyId b = world.createBody(bd);
@@ -214,7 +215,7 @@ TEST(Accumulation, ForcesCannotPileUpBeyondTheLimits) {
 // One rule for the five calls that set or push a body's motion: refused when they could have
 // no effect.
 TEST(Accumulation, CallsThatCouldHaveNoEffectAreRefused) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = world.createBody(BodyDef{});
     world.createShape(ground, ShapeDef{}, Polygon::box(1.0f, 1.0f));
     expectRefused(world, [&] { world.setBodyLinearVelocity(ground, {1, 0}); }, {"static"});
@@ -258,7 +259,7 @@ TEST(Accumulation, CallsThatCouldHaveNoEffectAreRefused) {
 // Three boxes of 1e5 m at density 1e6 (1.2e17 kg) held by a 1e10 Hz mouse joint: the spring's
 // stiffness m w^2 overflowed, and the body was discarded on every other step and never moved.
 TEST(StepProducts, AHeavyBodyOnAStiffMouseJointMoves) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef bd;
     bd.type = BodyType::Dynamic;
     BodyId b = world.createBody(bd);
@@ -281,7 +282,7 @@ TEST(StepProducts, AHeavyBodyOnAStiffMouseJointMoves) {
 // A thousand such boxes with gravity 1e10 and gravity scale 1e10 were discarded every step. Both
 // are bounded now so their product stays within kMaxMagnitude; at the new limits they fall.
 TEST(StepProducts, HeavyBoxesUnderTheStrongestGravityFall) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.gravity = {0.0f, 1e10f};
     EXPECT_THROW(World{def}, Error);
     def.gravity = {0.0f, -kMaxGravity};
@@ -327,7 +328,7 @@ TEST(StepProducts, TheCornersOfEveryLimitStepInRange) {
     auto coin = [&] { return (next() & 1) != 0; };
     int worlds = 0;
     for (int w = 0; w < 400; ++w) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         const float g = pick({0.0f, -10.0f, kMaxGravity, -kMaxGravity});
         def.gravity = {g, -g};
         def.contactCorrection = kCorrections[next() % 2];
@@ -458,7 +459,7 @@ TEST(StepProducts, TheCornersOfEveryLimitStepInRange) {
 // mouse joint made there. The engine now keeps every body origin within +-kMaxCoordinate,
 // holding a body that reaches the edge there and saying so.
 TEST(EngineStates, ABodyIsHeldAtTheEdgeOfTheWorldAndReported) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef bd;
     bd.type = BodyType::Dynamic;
     bd.position = {kMaxCoordinate - 50.0f, 0.0f};
@@ -519,7 +520,7 @@ TEST(EngineStates, EveryBodyStateOfEveryScenePassesBackThroughTheApi) {
 // --- defs ---------------------------------------------------------------------------------------
 
 TEST(Defs, AWorldAnchorWithLocalAnchorsIsRefused) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId a = world.createBody(BodyDef{});
     BodyDef bd;
     bd.type = BodyType::Dynamic;
@@ -540,7 +541,7 @@ TEST(Defs, AWorldAnchorWithLocalAnchorsIsRefused) {
 }
 
 TEST(Defs, UserDataCanBeReadAndChanged) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef bd;
     bd.userData = 11;
     BodyId a = world.createBody(bd);

@@ -10,6 +10,7 @@
 #include "same_step_stats.h"
 #include "scoped_switch.h"
 #include "solver/island_bundles.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -23,7 +24,7 @@ using IslandBundling = ScopedSwitch<&setIslandBundling>;
 // separation, falling onto a ground with loose bricks and pairs of bricks (islands of contacts
 // only) that come to rest and sleep.
 std::unique_ptr<World> smallIslands(int substeps, ContactCorrection contacts, int workers) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.substepCount = substeps;
     def.contactCorrection = contacts;
     def.workerCount = workers;

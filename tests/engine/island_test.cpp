@@ -5,6 +5,7 @@
 #include "pivot/pivot.h"
 #include "scenes/scene.h"
 #include "solver/stepper.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -21,7 +22,7 @@ BodyId link(World& world, Vec2 p) {
 
 TEST(Islands, StaticBodiesDoNotJoinIslands) {
     // Two pendulums on one static ground: two islands, each with the ground in it.
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = world.createBody(BodyDef{});
     BodyId left = link(world, {-5, 0});
     BodyId right = link(world, {5, 0});
@@ -37,7 +38,7 @@ TEST(Islands, StaticBodiesDoNotJoinIslands) {
 }
 
 TEST(Islands, JointsBetweenDynamicBodiesJoinThem) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = world.createBody(BodyDef{});
     BodyId a = link(world, {0.5f, 0});
     BodyId b = link(world, {1.5f, 0});
@@ -53,7 +54,7 @@ TEST(Islands, JointsBetweenDynamicBodiesJoinThem) {
 }
 
 TEST(Islands, NgsIterationsAreReportedAndZeroWithoutNgsJoints) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.defaultPositionSolver = PositionSolver::Baumgarte;
     World world(def);
     BodyId ground = world.createBody(BodyDef{});
@@ -157,7 +158,7 @@ TEST(Islands, AreKeptWhileNothingChangesAndSearchedAgainWhenSomethingDoes) {
     // them, and a body made, a joint made, a body put to sleep makes the next step search.
     const std::uint64_t misKeptBefore = Stepper::islandsMisKept();
     IslandReuse reuse(Stepper::IslandReuse::Verify);
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.enableSleep = false;
     World world(def);
     BodyId ground = world.createBody(BodyDef{});

@@ -10,6 +10,7 @@
 #include "all_solvers.h"
 #include "joints/joint.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -20,7 +21,7 @@ constexpr const auto& kSolvers = test_support::kAllSolvers;
 // A chain of three boxes hanging from the ground at (0, 10); the last box is then teleported
 // 50 m away, tearing its joint open.
 struct TornChain {
-    World world;
+    World world{oneSubstepDef()};
     std::vector<BodyId> boxes;
     std::vector<JointId> joints;
 
@@ -47,7 +48,7 @@ struct TornChain {
 };
 
 WorldDef letGoBeyond(float separation) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.jointLetGoSeparation = separation;
     return def;
 }
@@ -56,7 +57,7 @@ WorldDef letGoBeyond(float separation) {
 
 TEST(JointLetGo, ByDefaultAJointIsNeverLetGoHoweverFarApart) {
     for (PositionSolver solver : kSolvers) {
-        TornChain chain(WorldDef{}, solver);
+        TornChain chain(oneSubstepDef(), solver);
         const float torn = chain.world.jointSeparation(chain.joints[2]);
         ASSERT_GT(torn, 40.0f);
         for (int i = 0; i < 120; ++i) {
@@ -106,7 +107,7 @@ TEST(JointLetGo, AJointsOwnSettingOverridesTheWorlds) {
     EXPECT_EQ(never.world.jointLetGoSeparation(never.joints[2]), 0.0f);
     EXPECT_EQ(never.world.jointLetGoSeparation(never.joints[1]), 10.0f);
     // The world never lets go, this joint beyond 20 m.
-    TornChain beyond(WorldDef{}, PositionSolver::FullNGS, 20.0f);
+    TornChain beyond(oneSubstepDef(), PositionSolver::FullNGS, 20.0f);
     beyond.world.step(kDt);
     EXPECT_TRUE(beyond.world.isJointLetGo(beyond.joints[2]));
     // Back to the world's setting, and a new distance, between steps.
@@ -141,12 +142,12 @@ TEST(JointLetGo, ARearmedJointIsSolvedAgain) {
 }
 
 TEST(JointLetGo, SettingsAreValidatedAndARefusedCallChangesNothing) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.jointLetGoSeparation = -1.0f;
     EXPECT_THROW(World{def}, Error);
     def.jointLetGoSeparation = std::nanf("");
     EXPECT_THROW(World{def}, Error);
-    TornChain chain(WorldDef{}, PositionSolver::FullNGS);
+    TornChain chain(oneSubstepDef(), PositionSolver::FullNGS);
     World& world = chain.world;
     const std::uint64_t before = world.stateHash();
     for (float bad : {-0.5f, std::nanf(""), INFINITY, 2.0f * kMaxMagnitude, 1e-40f}) {
@@ -219,7 +220,7 @@ TEST(JointLetGo, AReactionThatWouldOverflowIsNotFinite) {
 // The world the fuzz driver found diverging under Baumgarte (tests/fuzz/findings/
 // baumgarte_falling_chain.journal): what the engine gives up on is named, not only counted.
 TEST(Containment, TheJointsLetGoAndTheBodiesDiscardedAreNamed) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.defaultPositionSolver = PositionSolver::Baumgarte;
     def.enableSleep = false;
     World world(def);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "scenes/scene.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 using namespace pivot::scenes;
@@ -81,7 +82,7 @@ TEST(Limit, EqualLimitsHoldTheAngle) {
     // one end and held level against gravity.
     for (int s = 0; s < kPositionSolverCount; ++s) {
         auto solver = static_cast<PositionSolver>(s);
-        World world;
+        World world{oneSubstepDef()};
         BodyId ground = world.createBody(BodyDef{});
         BodyDef def;
         def.type = BodyType::Dynamic;

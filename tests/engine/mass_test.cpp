@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -64,7 +65,7 @@ TEST(Mass, RightTriangleEitherWinding) {
 }
 
 TEST(Mass, BodyCombinesShapesWithTheParallelAxisTheorem) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId body = dynamicBody(world, {10.0f, 0.0f});
     // Two unit squares (density 1) centred at x = -1 and x = +1 in the body frame.
     world.createShape(body, withDensity(1.0f), Polygon::box(0.5f, 0.5f, {-1.0f, 0.0f}, 0.0f));
@@ -77,7 +78,7 @@ TEST(Mass, BodyCombinesShapesWithTheParallelAxisTheorem) {
 }
 
 TEST(Mass, OffCentreShapeMovesTheCentreOfMass) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId body = dynamicBody(world, {1.0f, 1.0f});
     world.createShape(body, withDensity(2.0f), Circle{{0.0f, 3.0f}, 0.5f});
     EXPECT_NEAR(world.bodyLocalCenter(body).y, 3.0f, 1e-6f);
@@ -88,7 +89,7 @@ TEST(Mass, OffCentreShapeMovesTheCentreOfMass) {
 }
 
 TEST(Mass, DestroyingAShapeUpdatesTheMass) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId body = dynamicBody(world);
     ShapeId a = world.createShape(body, withDensity(1.0f), Polygon::box(0.5f, 0.5f));
     world.createShape(body, withDensity(3.0f), Polygon::box(0.5f, 0.5f));
@@ -99,7 +100,7 @@ TEST(Mass, DestroyingAShapeUpdatesTheMass) {
 }
 
 TEST(Mass, StaticAndKinematicBodiesHaveNoMass) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     BodyId ground = world.createBody(def);
     world.createShape(ground, withDensity(5.0f), Polygon::box(1, 1));
@@ -112,14 +113,14 @@ TEST(Mass, StaticAndKinematicBodiesHaveNoMass) {
 }
 
 TEST(Mass, DynamicBodyWithoutShapesIsAUnitPointMass) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId body = dynamicBody(world);
     EXPECT_EQ(world.bodyMass(body), 1.0f);
     EXPECT_EQ(world.bodyRotationalInertia(body), 0.0f);
 }
 
 TEST(Mass, FixedRotationHasNoRotationalInertia) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     def.fixedRotation = true;
@@ -130,7 +131,7 @@ TEST(Mass, FixedRotationHasNoRotationalInertia) {
 }
 
 TEST(Geometry, ShapesReadBackInTheirBodyFrame) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     BodyId body = world.createBody(def);
@@ -158,7 +159,7 @@ TEST(Geometry, ShapesReadBackInTheirBodyFrame) {
 // Far from the body origin, shifting the second moment about the origin to the centre of mass
 // subtracts two nearly equal huge numbers; the body must still get its shape's own inertia.
 TEST(Mass, AShapeFarFromTheBodyOriginKeepsItsInertia) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     BodyId body = world.createBody(def);

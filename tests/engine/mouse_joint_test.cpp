@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -21,7 +22,7 @@ BodyId ball(World& world, Vec2 p) {
 }  // namespace
 
 TEST(MouseJoint, HoldsABodyAtTheTargetAgainstGravityLikeASpring) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId b = ball(world, {0, 5});
     MouseJointDef def;
     def.body = b;
@@ -41,7 +42,7 @@ TEST(MouseJoint, HoldsABodyAtTheTargetAgainstGravityLikeASpring) {
 }
 
 TEST(MouseJoint, ItsForceIsCapped) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId b = ball(world, {0, 5});
     MouseJointDef def;
     def.body = b;
@@ -54,7 +55,7 @@ TEST(MouseJoint, ItsForceIsCapped) {
 }
 
 TEST(MouseJoint, DestroyingItOrItsBodyReleases) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId b = ball(world, {0, 5});
     MouseJointDef def;
     def.body = b;
@@ -73,7 +74,7 @@ TEST(MouseJoint, DestroyingItOrItsBodyReleases) {
 }
 
 TEST(MouseJoint, BadDefsAreRejected) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId b = ball(world, {0, 5});
     BodyId ground = world.createBody(BodyDef{});
     std::uint64_t before = world.stateHash();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -54,7 +55,7 @@ bool allFinite(const World& world) {
 }  // namespace
 
 TEST(SetBodyType, AStaticBodyMadeDynamicGetsItsMassFallsAndCollides) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = groundWithFloor(world);
     // Static, overlapping the floor's box: a static-static pair is never a contact.
     BodyId body = box(world, BodyType::Static, {0.0f, 1.2f});
@@ -73,7 +74,7 @@ TEST(SetBodyType, AStaticBodyMadeDynamicGetsItsMassFallsAndCollides) {
 }
 
 TEST(SetBodyType, ABodyMadeStaticStopsAndItsStaticContactsGo) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = groundWithFloor(world);
     BodyId body = box(world, BodyType::Dynamic, {0.0f, 1.0f});
     world.setBodySleepAllowed(body, false);
@@ -103,7 +104,7 @@ TEST(SetBodyType, ABodyMadeStaticStopsAndItsStaticContactsGo) {
 }
 
 TEST(SetBodyType, AKinematicBodyKeepsTheVelocityOfItsOriginAndIgnoresGravity) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     def.position = {0.0f, 10.0f};
@@ -129,7 +130,7 @@ TEST(SetBodyType, AKinematicBodyKeepsTheVelocityOfItsOriginAndIgnoresGravity) {
 }
 
 TEST(SetBodyType, KinematicAgainstStaticContactsAreDropped) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = groundWithFloor(world);
     BodyId body = box(world, BodyType::Dynamic, {0.0f, 1.0f});
     steps(world, 30);
@@ -141,7 +142,7 @@ TEST(SetBodyType, KinematicAgainstStaticContactsAreDropped) {
 }
 
 TEST(SetBodyType, ADynamicBodyNeedsDensityInEveryShape) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId body = world.createBody(BodyDef{});  // static
     ShapeDef massless;
     massless.density = 0.0f;
@@ -178,7 +179,7 @@ TEST(SetBodyType, ADynamicBodyNeedsDensityInEveryShape) {
 }
 
 TEST(SetBodyType, WakesWhatRestsOnTheBody) {
-    World world;
+    World world{oneSubstepDef()};
     groundWithFloor(world);
     BodyId platform = box(world, BodyType::Dynamic, {0.0f, 1.0f});
     BodyId top = box(world, BodyType::Dynamic, {0.0f, 2.0f});
@@ -194,7 +195,7 @@ TEST(SetBodyType, WakesWhatRestsOnTheBody) {
 }
 
 TEST(SetBodyType, JointsAndMouseJointsStayValid) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = world.createBody(BodyDef{});
     BodyId bob = box(world, BodyType::Dynamic, {2.0f, 10.0f}, 0.25f);
     JointId pin = world.createJoint(RevoluteJointDef::atWorldAnchor(ground, bob, {0.0f, 10.0f}));
@@ -223,7 +224,7 @@ TEST(SetBodyType, JointsAndMouseJointsStayValid) {
 }
 
 TEST(SetShapeDensity, RecomputesTheMassTheJointHolds) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = world.createBody(BodyDef{});
     BodyId bob = box(world, BodyType::Dynamic, {0.0f, 5.0f}, 0.5f);
     world.setBodySleepAllowed(bob, false);
@@ -250,7 +251,7 @@ TEST(SetShapeDensity, RecomputesTheMassTheJointHolds) {
 }
 
 TEST(SetShapeDensity, OnAStaticBodyIsKeptForLater) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId body = world.createBody(BodyDef{});
     ShapeId shape = world.createShape(body, ShapeDef{}, Polygon::box(1.0f, 0.5f));
     world.setShapeDensity(shape, 0.0f);
@@ -264,7 +265,7 @@ TEST(SetShapeDensity, OnAStaticBodyIsKeptForLater) {
 // Types, densities and solvers changed between steps, run twice: the same bits.
 TEST(Mutation, ChangesBetweenStepsRepeatBitForBit) {
     auto run = [] {
-        World world;
+        World world{oneSubstepDef()};
         BodyId ground = groundWithFloor(world);
         std::vector<BodyId> links;
         std::vector<JointId> joints;
@@ -306,7 +307,7 @@ TEST(Mutation, ChangesBetweenStepsRepeatBitForBit) {
 }
 
 TEST(DestroyWhileIterating, EveryBodyFromBodyIds) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = groundWithFloor(world);
     BodyId previous = ground;
     for (int i = 0; i < 10; ++i) {
@@ -325,7 +326,7 @@ TEST(DestroyWhileIterating, EveryBodyFromBodyIds) {
 }
 
 TEST(DestroyWhileIterating, BodiesFoundInContacts) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = groundWithFloor(world);
     for (int i = 0; i < 12; ++i) box(world, BodyType::Dynamic, {0.1f * (i % 3), 1.0f + i}, 0.5f);
     steps(world, 180);
@@ -349,7 +350,7 @@ TEST(DestroyWhileIterating, BodiesFoundInContacts) {
 }
 
 TEST(DestroyWhileIterating, JointsAndShapesFromEvents) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = groundWithFloor(world);
     BodyId previous = ground;
     for (int i = 0; i < 6; ++i) {
@@ -385,7 +386,7 @@ TEST(DestroyWhileIterating, JointsAndShapesFromEvents) {
 }
 
 TEST(Destroy, ABodyWakesWhatRestedOnItAndTakesItsJointsAndShapes) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = groundWithFloor(world);
     BodyId platform = box(world, BodyType::Dynamic, {0.0f, 1.0f});
     world.createShape(platform, ShapeDef{}, Circle{{0.0f, 0.0f}, 0.2f});

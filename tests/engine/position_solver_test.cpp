@@ -5,6 +5,7 @@
 #include <string>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -15,7 +16,7 @@ constexpr float kDt = 1.0f / 60.0f;
 // A unit box (density 1) pinned to static ground at the world origin by the middle of its
 // left edge, in zero gravity, then pulled away from the pin by `offset`.
 struct PerturbedPin {
-    World world{WorldDef{{0.0f, 0.0f}}};
+    World world{oneSubstepDef({0.0f, 0.0f})};
     BodyId box;
     JointId joint;
 
@@ -61,7 +62,7 @@ TEST_P(EverySolver, DrivesAPerturbedJointsErrorBelowTheSlop) {
 }
 
 TEST_P(EverySolver, IsWhatTheWorldDefaultNamesWhenTheDefLeavesItUnset) {
-    WorldDef wd;
+    WorldDef wd = oneSubstepDef();
     wd.defaultPositionSolver = GetParam();
     World world(wd);
     BodyId ground = world.createBody(BodyDef{});
@@ -98,7 +99,7 @@ TEST(PositionSolverSignature, NgsRemovesTheWholeErrorWithoutMomentum) {
         pin.world.step(kDt);
         EXPECT_LT(pin.separation(), 0.01f) << positionSolverName(s);
         EXPECT_EQ(pin.speed(), 0.0f) << positionSolverName(s);
-        EXPECT_EQ(pin.world.lastStepStats().positionIterations, kDefaultPositionIterations);
+        EXPECT_EQ(pin.world.lastStepStats().positionIterations, kBox2D241PositionIterations);
     }
 }
 
@@ -192,7 +193,7 @@ Pose poseOf(const World& world, BodyId body) {
 }
 
 Pose runAlone(PositionSolver solver, Vec2 pivot, int steps) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ball = addPendulum(world, pivot, solver);
     for (int i = 0; i < steps; ++i) world.step(kDt);
     return poseOf(world, ball);
@@ -206,7 +207,7 @@ TEST(MixedSolvers, EachJointInOneWorldRunsItsOwnAlgorithm) {
         for (int b = 0; b < kPositionSolverCount; ++b) {
             if (a == b) continue;
             auto sa = static_cast<PositionSolver>(a), sb = static_cast<PositionSolver>(b);
-            World world;
+            World world{oneSubstepDef()};
             BodyId ballA = addPendulum(world, left, sa);
             BodyId ballB = addPendulum(world, right, sb);
             for (int i = 0; i < 120; ++i) world.step(kDt);
@@ -224,7 +225,7 @@ TEST(MixedSolvers, OneIslandWithEveryStrategyStaysTogether) {
     // A hanging chain of 8 links whose joints cycle through the solvers. Changing one
     // joint's solver changes the result, so each joint's choice is honoured inside an island.
     auto run = [](PositionSolver firstJoint) {
-        World world;
+        World world{oneSubstepDef()};
         BodyId previous = world.createBody(BodyDef{});
         std::vector<JointId> joints;
         for (int i = 0; i < 8; ++i) {

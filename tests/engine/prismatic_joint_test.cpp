@@ -7,6 +7,7 @@
 
 #include "all_solvers.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -19,13 +20,13 @@ constexpr const auto& kSolvers = test_support::kAllSolvers;
 // (0, 5); the box's centre is the anchor, and a second box of 4x the density hangs 1 m to the
 // side of it on a pin, so that the slide is twisted as the load swings.
 struct Rail {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground, slider, load;
     JointId joint;
 
     explicit Rail(PositionSolver solver, TranslationLimit limit = {}, LinearMotor motor = {},
                   JointSpring spring = {})
-        : world(WorldDef{}) {
+        : world(oneSubstepDef()) {
         ground = world.createBody(BodyDef{});
         BodyDef def;
         def.type = BodyType::Dynamic;
@@ -244,7 +245,7 @@ TEST(PrismaticJoint, AJointCreatedFarFromItsLineAndAngleIsPulledOntoThem) {
     // a few steps instead of overshooting (prismatic_constraint.h).
     for (PositionSolver solver : kSolvers) {
         SCOPED_TRACE(positionSolverName(solver));
-        World world;
+        World world{oneSubstepDef()};
         BodyDef def;
         def.type = BodyType::Dynamic;
         def.position = {3, 5};

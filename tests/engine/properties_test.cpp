@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -40,7 +41,7 @@ void expectRefused(World& world, Call&& call) {
 }  // namespace
 
 TEST(Properties, DampingAndGravityScaleAreReadAndChanged) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const BodyId a = box(world, {0, 10});
     const BodyId b = box(world, {5, 10});
@@ -70,7 +71,7 @@ TEST(Properties, DampingAndGravityScaleAreReadAndChanged) {
 }
 
 TEST(Properties, FixingTheRotationStopsTheSpinAndKeepsTheCentre) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId body = box(world, {0, 0});
     const float inertia = world.bodyRotationalInertia(body);
     ASSERT_GT(inertia, 0.0f);
@@ -93,7 +94,7 @@ TEST(Properties, FixingTheRotationStopsTheSpinAndKeepsTheCentre) {
 }
 
 TEST(Properties, SleepAllowedIsRead) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId body = box(world, {0, 0});
     EXPECT_TRUE(world.isBodySleepAllowed(body));
     world.setBodySleepAllowed(body, false);
@@ -101,7 +102,7 @@ TEST(Properties, SleepAllowedIsRead) {
 }
 
 TEST(Properties, ABodyListsItsJointsAndTouchingContacts) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const BodyId ground = world.createBody(BodyDef{});
     world.createShape(ground, ShapeDef{}, Polygon::box(10.0f, 0.5f, {0, -0.5f}, 0.0f));
@@ -131,7 +132,7 @@ TEST(Properties, ABodyListsItsJointsAndTouchingContacts) {
 // slope's 1, a box friction of 0.1 gives sqrt(0.1) = 0.32: 10 (sin 30 - 0.32 cos 30) = 2.3
 // m/s^2, 0.28 m in half a second (with the old mix it would not move).
 TEST(Properties, FrictionChangesReachTheContactsAtOnce) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const float slope = 30.0f * kPi / 180.0f;
     ShapeDef rough;
@@ -165,7 +166,7 @@ TEST(Properties, FrictionChangesReachTheContactsAtOnce) {
 // Joints: every def field can be read back; collideConnected can be changed, and the change
 // makes or ends the contacts between the two bodies at the next step.
 TEST(Properties, JointDefFieldsReadBackAndCollideConnectedChanges) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, 0.0f});
     const BodyId a = box(world, {0.0f, 0.0f}, 0.3f);
     const BodyId b = box(world, {0.5f, 0.0f}, 0.0f);  // overlapping a

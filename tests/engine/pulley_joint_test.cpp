@@ -7,6 +7,7 @@
 
 #include "all_solvers.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -15,12 +16,12 @@ constexpr float kDt = 1.0f / 60.0f;
 
 // Two boxes hung by their tops from wheels at (-2, 10) and (2, 10).
 struct Pulley {
-    World world;
+    World world{oneSubstepDef()};
     BodyId a, b;
     JointId joint;
 
     Pulley(float densityA, float densityB, float ratio, PositionSolver solver, Vec2 startB = {2, 5})
-        : world(WorldDef{}) {
+        : world(oneSubstepDef()) {
         BodyDef def;
         def.type = BodyType::Dynamic;
         def.position = {-2, 5};

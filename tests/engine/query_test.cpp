@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -95,13 +96,13 @@ namespace {
 // and segments on the static and kinematic ones, with shapes in four categories; `churn` steps it,
 // creates and destroys bodies and changes two bodies' types between queries.
 WorldDef withBoxes(BroadPhaseBoxes boxes) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.broadPhaseBoxes = boxes;
     return def;
 }
 
 struct RandomWorld {
-    World world;
+    World world{oneSubstepDef()};
     std::mt19937 random;
     std::vector<BodyId> bodies;
 
@@ -315,7 +316,7 @@ TEST(WorldQueries, AgreeWithBruteForceOnRandomWorlds) {
 
 TEST(WorldQueries, TheRayCallbackIgnoresClipsAndStops) {
     // Five unit circles in a row along x, at 0, 3, 6, 9 and 12.
-    World world(WorldDef{{0.0f, 0.0f}});
+    World world(oneSubstepDef({0.0f, 0.0f}));
     std::vector<ShapeId> circles;
     for (int i = 0; i < 5; ++i) {
         BodyDef def;
@@ -362,7 +363,7 @@ TEST(WorldQueries, TheRayCallbackIgnoresClipsAndStops) {
 }
 
 TEST(WorldQueries, FiltersByCategoryAndMask) {
-    World world(WorldDef{{0.0f, 0.0f}});
+    World world(oneSubstepDef({0.0f, 0.0f}));
     ShapeDef wallDef, glassDef;
     wallDef.filter.categoryBits = 0x1;
     glassDef.filter.categoryBits = 0x2;
@@ -388,7 +389,7 @@ TEST(WorldQueries, FiltersByCategoryAndMask) {
 }
 
 TEST(WorldQueries, ACallbackMayReadButNotMoveShapes) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     const BodyId body = world.createBody(def);
@@ -420,7 +421,7 @@ TEST(WorldQueries, ACallbackMayReadButNotMoveShapes) {
 }
 
 TEST(WorldQueries, BadArgumentsAreRefused) {
-    World world;
+    World world{oneSubstepDef()};
     world.createShape(world.createBody(BodyDef{}), ShapeDef{}, Circle{{}, 1.0f});
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
@@ -593,7 +594,7 @@ TEST(WorldQueries, ShapeOverlapsAgreeWithBruteForce) {
 }
 
 TEST(WorldQueries, ShapeCastsStopJustShortOfTheFirstShape) {
-    World world(WorldDef{{0.0f, 0.0f}});
+    World world(oneSubstepDef({0.0f, 0.0f}));
     BodyDef wallDef;
     wallDef.position = {0.0f, 0.0f};
     const ShapeId wall =
@@ -682,7 +683,7 @@ TEST(WorldQueries, RotationsMustBeUnitOnes) {
         q.c = c;
         return q;
     };
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     world.createShape(ground, ShapeDef{}, Polygon::box(5.0f, 0.5f));
     const Capsule capsule{{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f};

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -12,11 +13,11 @@ namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
 struct HangingBox {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground, box;
     JointId joint;
 
-    explicit HangingBox(const WorldDef& def = WorldDef{}) : world(def) {
+    explicit HangingBox(const WorldDef& def = oneSubstepDef()) : world(def) {
         ground = world.createBody(BodyDef{});
         BodyDef bd;
         bd.type = BodyType::Dynamic;
@@ -29,7 +30,7 @@ struct HangingBox {
 }  // namespace
 
 TEST(RevoluteJoint, WorldAnchorBecomesLocalAnchorsAndReferenceAngle) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef bd;
     bd.position = {1, 2};
     bd.angle = 0.3f;
@@ -50,7 +51,7 @@ TEST(RevoluteJoint, WorldAnchorBecomesLocalAnchorsAndReferenceAngle) {
 
 TEST(RevoluteJoint, LocalAnchorsGiveTheSameJointAsTheWorldAnchor) {
     auto run = [](bool useLocal) {
-        World world;
+        World world{oneSubstepDef()};
         BodyId ground = world.createBody(BodyDef{});
         BodyDef bd;
         bd.type = BodyType::Dynamic;
@@ -99,7 +100,7 @@ TEST(RevoluteJoint, WarmStartingCanBeSwitchedOff) {
     // A single pin is solved exactly by one 2x2 solve, warm start or not; a chain couples its
     // joints, so Gauss-Seidel does not converge in 8 sweeps and the warm start shows.
     auto chain = [](bool warmStarting) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.warmStarting = warmStarting;
         World world(def);
         BodyId previous = world.createBody(BodyDef{});

@@ -9,6 +9,7 @@
 #include "collision/manifold.h"
 #include "grid_mass.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 using pivot::testing::coreDistance;
@@ -70,7 +71,7 @@ TEST(RoundedPolygon, CornersMeetAtTheirTrueDistance) {
 }
 
 TEST(RoundedPolygon, ARoundedBoxRestsOnItsRoundedFaceAndStaysPut) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     ShapeDef slab;
     slab.density = 0.0f;
@@ -90,7 +91,7 @@ TEST(RoundedPolygon, ARoundedBoxRestsOnItsRoundedFaceAndStaysPut) {
 }
 
 TEST(RoundedPolygon, ACircleRestsOnTheRounding) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId table = world.createBody(BodyDef{});
     ShapeDef solid;
     solid.density = 0.0f;
@@ -168,7 +169,7 @@ TEST(RoundedPolygon, RayCastsAndPointQueriesAgreeWithBruteForce) {
 }
 
 TEST(RoundedPolygon, ABadRadiusIsRefusedAndChangesNothing) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     const BodyId body = world.createBody(def);

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -27,7 +28,7 @@ void steps(World& world, int n) {
 }  // namespace
 
 TEST(Segment, IsCreatedOnStaticAndKinematicBodiesOnly) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     const ShapeId floor = world.createShape(ground, ShapeDef{}, Segment{{-5, 0}, {5, 0}});
     EXPECT_EQ(world.shapeType(floor), ShapeType::Segment);
@@ -51,7 +52,7 @@ TEST(Segment, IsCreatedOnStaticAndKinematicBodiesOnly) {
 }
 
 TEST(Segment, BadPointsAreRefused) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const std::uint64_t before = world.stateHash();
@@ -68,7 +69,7 @@ TEST(Segment, BadPointsAreRefused) {
 TEST(Segment, HoldsABoxAndABallFromEitherSide) {
     // A floor segment with a box and a ball dropped on it, and a ceiling segment a ball is
     // thrown up against: both sides are solid.
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     world.createShape(ground, ShapeDef{}, Segment{{-10, 0}, {10, 0}});
     world.createShape(ground, ShapeDef{}, Segment{{20, 5}, {30, 5}});
@@ -97,7 +98,7 @@ TEST(Segment, HoldsABoxAndABallFromEitherSide) {
 }
 
 TEST(Segment, ABallRollsDownARampAndOffItsEnd) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     world.createShape(ground, ShapeDef{}, Segment{{0, 5}, {10, 0}});
     const BodyId ball = dynamicBody(world, {0.5f, 6.2f});
@@ -119,7 +120,7 @@ TEST(Segment, ABallRollsDownARampAndOffItsEnd) {
 }
 
 TEST(Segment, AKinematicSegmentCarriesABox) {
-    World world(WorldDef{});
+    World world{oneSubstepDef()};
     BodyDef liftDef;
     liftDef.type = BodyType::Kinematic;
     const BodyId lift = world.createBody(liftDef);
@@ -149,7 +150,7 @@ TEST(Segment, RayCastsHitEitherSideBetweenTheEnds) {
     EXPECT_THROW(rayCast(Segment{{0, 0}, {0, 0}}, xf, {2, 3}, {0, -4}), Error);
 
     // In a world: the ray finds the segment, the point query never does.
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     const ShapeId shape = world.createShape(ground, ShapeDef{}, s);
     const auto hit = world.castRayClosest({2, 3}, {0, -4});

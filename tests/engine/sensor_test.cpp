@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -38,7 +39,7 @@ bool has(const std::vector<SensorEvent>& events, ShapeId sensor, ShapeId visitor
 // A ball falls through a static sensor box: it begins overlapping, falls on as if the box were
 // not there, and ends overlapping below it.
 TEST(Sensor, ABodyFallsThroughAStaticSensorAndIsReportedInAndOut) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const BodyId zoneBody = world.createBody(BodyDef{});
     const ShapeId zone = world.createShape(zoneBody, sensorDef(), Polygon::box(2.0f, 1.0f));
@@ -62,7 +63,7 @@ TEST(Sensor, ABodyFallsThroughAStaticSensorAndIsReportedInAndOut) {
 // Any body type: a kinematic platform passing through a static sensor, and a sensor on a dynamic
 // body touching static ground.
 TEST(Sensor, SensesKinematicAndStaticBodiesToo) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const BodyId zoneBody = world.createBody(BodyDef{});
     const ShapeId zone = world.createShape(zoneBody, sensorDef(), Circle{{0, 0}, 1.0f});
@@ -89,7 +90,7 @@ TEST(Sensor, SensesKinematicAndStaticBodiesToo) {
 }
 
 TEST(Sensor, TwoSensorsDoNotSenseEachOtherAndFiltersApply) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId a = bodyAt(world, BodyType::Dynamic, {0, 0});
     world.createShape(a, sensorDef(), Circle{{0, 0}, 1.0f});
     const BodyId b = bodyAt(world, BodyType::Dynamic, {0.5f, 0});
@@ -106,7 +107,7 @@ TEST(Sensor, TwoSensorsDoNotSenseEachOtherAndFiltersApply) {
 // Switching the flag: a solid floor holds a ball; made a sensor, it lets it fall and reports
 // the contact's end; made solid again, it catches what comes next.
 TEST(Sensor, SwitchingTheFlagDropsTheContactsAndPairsAgain) {
-    World world;
+    World world{oneSubstepDef()};
     world.setGravity({0.0f, -10.0f});
     const BodyId floorBody = world.createBody(BodyDef{});
     const ShapeId floor = world.createShape(floorBody, ShapeDef{}, Polygon::box(5.0f, 0.5f));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -11,10 +12,10 @@ namespace {
 constexpr float kDt = 1.0f / 60.0f;
 
 struct RestingBox {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground, box;
 
-    explicit RestingBox(const WorldDef& def = WorldDef{}) : world(def) {
+    explicit RestingBox(const WorldDef& def = oneSubstepDef()) : world(def) {
         ground = world.createBody(BodyDef{});
         ShapeDef slab;
         slab.density = 0.0f;
@@ -50,7 +51,7 @@ TEST(Sleep, ARestingIslandSleepsAfterHalfASecondAndCostsNothing) {
 }
 
 TEST(Sleep, CanBeSwitchedOffForTheWorldAndForABody) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.enableSleep = false;
     RestingBox noSleep(def);
     noSleep.run(120);
@@ -126,7 +127,7 @@ TEST(Sleep, JointChangesWake) {
 }
 
 TEST(Sleep, ABodyCreatedAsleepStaysPutUntilWoken) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     def.position = {0, 10};
@@ -143,7 +144,7 @@ TEST(Sleep, ABodyCreatedAsleepStaysPutUntilWoken) {
 }
 
 TEST(Sleep, ABodyCreatedAsleepWakesWhenSomethingAwakeTouchesIt) {
-    World world;
+    World world{oneSubstepDef()};
     BodyDef def;
     def.type = BodyType::Dynamic;
     def.position = {0, 0};

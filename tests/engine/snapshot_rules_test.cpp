@@ -9,6 +9,7 @@
 
 #include "pivot/pivot.h"
 #include "snapshot_bytes.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 using namespace pivot::test_support;
@@ -36,7 +37,7 @@ struct SettingField {
 }  // namespace
 
 TEST(SnapshotRules, ASettingIsRestoredOnlyAsItsSetterWouldTakeIt) {
-    World source;
+    World source{oneSubstepDef()};
     dynamicBox(source, {0.0f, 2.0f});
     source.step(kDt);
     const std::vector<std::uint8_t> good = source.snapshot();
@@ -48,9 +49,9 @@ TEST(SnapshotRules, ASettingIsRestoredOnlyAsItsSetterWouldTakeIt) {
         {"contactPushSpeed", 29, 0.0f},
         {"restitutionThreshold", 33, -1.0f},
         {"jointLetGoSeparation", 43, -1.0f},
-        {"hitEventThreshold", 51, -1.0f},
+        {"hitEventThreshold", 59, -1.0f},
     };
-    World target;
+    World target{oneSubstepDef()};
     const std::uint64_t before = target.stateHash();
     for (const SettingField& field : fields) {
         std::vector<std::uint8_t> bad = good;
@@ -69,8 +70,21 @@ TEST(SnapshotRules, ASettingIsRestoredOnlyAsItsSetterWouldTakeIt) {
         reseal(bad);
         EXPECT_NE(restoreError(target, bad).find("substepCount"), std::string::npos) << value;
     }
+    // The iteration counts (World::step(dt) runs them), each in [0, kMaxIterations].
+    for (const auto& [offset, name] : {std::pair<std::size_t, const char*>{51, "velocityIterations"},
+                                       std::pair<std::size_t, const char*>{55, "positionIterations"}}) {
+        for (const std::int32_t value : {-1, kMaxIterations + 1}) {
+            std::vector<std::uint8_t> bad = good;
+            put(bad, kSnapshotState + offset, value);
+            reseal(bad);
+            EXPECT_NE(restoreError(target, bad).find(std::string("the snapshot's ") + name),
+                      std::string::npos)
+                << name << " " << value;
+            EXPECT_EQ(target.stateHash(), before) << name;
+        }
+    }
     std::vector<std::uint8_t> bad = good;
-    put(bad, kSnapshotState + 55, -60.0f);
+    put(bad, kSnapshotState + 63, -60.0f);
     reseal(bad);
     EXPECT_NE(restoreError(target, bad).find("1/dt"), std::string::npos);
     EXPECT_EQ(target.stateHash(), before);
@@ -85,7 +99,7 @@ TEST(SnapshotRules, ASettingIsRestoredOnlyAsItsSetterWouldTakeIt) {
 // search and the solver take a gear's bases to be its joints' bodies A, so the reader checks it,
 // with the gear's bodies and the geometry it copies.
 TEST(SnapshotRules, AGearIsCheckedAgainstTheJointsItCouples) {
-    World source;
+    World source{oneSubstepDef()};
     const BodyId ground = source.createBody(BodyDef{});
     const BodyId carrier = dynamicBox(source, {0.0f, 5.0f});  // a dynamic base
     source.createJoint(RevoluteJointDef::atWorldAnchor(ground, carrier, {0.0f, 5.0f}));
@@ -113,7 +127,7 @@ TEST(SnapshotRules, AGearIsCheckedAgainstTheJointsItCouples) {
     ASSERT_EQ(at.size(), 1u);
     const std::size_t base = at[0] + 5;
 
-    World target;
+    World target{oneSubstepDef()};
     const std::uint64_t empty = target.stateHash();
     for (const BodyId other : {elsewhere, wheel2, ground}) {
         std::vector<std::uint8_t> bad = good;
@@ -136,7 +150,7 @@ TEST(SnapshotRules, AGearIsCheckedAgainstTheJointsItCouples) {
 // A contact's sensor flag follows its shapes (ContactManager::addPair): a solid contact marked a
 // sensor contact is refused.
 TEST(SnapshotRules, AContactIsOneTheContactManagerCouldHaveMade) {
-    World source;
+    World source{oneSubstepDef()};
     const BodyId ground = source.createBody(BodyDef{});
     source.createShape(ground, ShapeDef{}, Polygon::box(5.0f, 0.5f, {0.0f, -0.5f}, 0.0f));
     BodyDef def;
@@ -154,7 +168,7 @@ TEST(SnapshotRules, AContactIsOneTheContactManagerCouldHaveMade) {
     std::vector<std::uint8_t> shapes = bytesOf(contact.shapeA.index);
     const auto b = bytesOf(contact.shapeB.index);
     shapes.insert(shapes.end(), b.begin(), b.end());
-    World target;
+    World target{oneSubstepDef()};
     const std::uint64_t empty = target.stateHash();
     int refused = 0;
     for (std::size_t at : find(good, shapes)) {
@@ -173,13 +187,13 @@ TEST(SnapshotRules, AContactIsOneTheContactManagerCouldHaveMade) {
 // The case: a body destroyed in this world, then another world's snapshot restored into
 // it. The old id must not name the restored body that took its slot and generation.
 TEST(SnapshotRules, AStaleIdStaysStaleWhateverIsRestored) {
-    World world;
+    World world{oneSubstepDef()};
     const BodyId gone = dynamicBox(world, {0.0f, 1.0f});
     const std::vector<std::uint8_t> before = world.snapshot();
     world.destroyBody(gone);
     ASSERT_FALSE(world.isValid(gone));
 
-    World other;
+    World other{oneSubstepDef()};
     const BodyId theirs = dynamicBox(other, {3.0f, 1.0f});
     ASSERT_EQ(theirs.index, gone.index);
     ASSERT_EQ(theirs.generation, gone.generation);
@@ -215,7 +229,7 @@ TEST(SnapshotRules, EqualHashesGiveEqualFutures) {
     EXPECT_NE(a.generation, b.generation);
 
     // And a world restored from another's snapshot hashes alike and goes on alike, ids too.
-    World copy;
+    World copy{oneSubstepDef()};
     copy.restore(used.snapshot());
     EXPECT_EQ(copy.stateHash(), used.stateHash());
     const BodyId c = dynamicBox(copy, {1.0f, 1.0f});

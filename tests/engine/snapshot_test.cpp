@@ -10,6 +10,7 @@
 #include "pivot/pivot.h"
 #include "scenes/scene.h"
 #include "snapshot_bytes.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 using namespace pivot::scenes;
@@ -62,12 +63,12 @@ void buildSmallWorld(World& world) {
 }  // namespace
 
 TEST(Snapshot, RoundTripsASmallWorldExactly) {
-    World world;
+    World world{oneSubstepDef()};
     buildSmallWorld(world);
     for (int i = 0; i < 30; ++i) world.step(kDt);
     const std::vector<std::uint8_t> bytes = world.snapshot();
     EXPECT_EQ(bytes, world.snapshot());  // a function of the state
-    World copy;
+    World copy{oneSubstepDef()};
     copy.restore(bytes);
     EXPECT_EQ(copy.stateHash(), world.stateHash());
     EXPECT_EQ(stateOf(copy.snapshot()), stateOf(bytes));
@@ -105,7 +106,7 @@ void continuesBitForBit(const std::string& name, BroadPhaseBoxes boxes) {
     const std::uint64_t expected = world.stateHash();
 
     for (int workers : {1, 2}) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.workerCount = workers;
         World restored(def);
         restored.restore(bytes);
@@ -137,7 +138,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, EverySceneSnapshot, testing::ValuesIn([] {
                          [](const auto& info) { return info.param; });
 
 TEST(Snapshot, RollbackKeepsTheGamesIds) {
-    World world;
+    World world{oneSubstepDef()};
     buildSmallWorld(world);
     const std::vector<BodyId> bodies = world.bodyIds();
     for (int i = 0; i < 10; ++i) world.step(kDt);
@@ -153,12 +154,12 @@ TEST(Snapshot, RollbackKeepsTheGamesIds) {
 }
 
 TEST(Snapshot, RefusesWhatIsNotASnapshotAndChangesNothing) {
-    World source;
+    World source{oneSubstepDef()};
     buildSmallWorld(source);
     for (int i = 0; i < 10; ++i) source.step(kDt);
     const std::vector<std::uint8_t> good = source.snapshot();
 
-    World target;
+    World target{oneSubstepDef()};
     buildSmallWorld(target);
     const std::uint64_t before = target.stateHash();
     EXPECT_NE(restoreError(target, {}).find("not a pivot2d snapshot"), std::string::npos);
@@ -187,11 +188,11 @@ TEST(Snapshot, RefusesWhatIsNotASnapshotAndChangesNothing) {
 // Past the checksum (re-sealed), the reader's own checks catch what would break the engine: a
 // flag that is not 0 or 1, an index out of range, a broken list. Whatever is accepted steps.
 TEST(Snapshot, ResealedDamageIsRefusedOrStepsSafely) {
-    World source;
+    World source{oneSubstepDef()};
     buildSmallWorld(source);
     for (int i = 0; i < 10; ++i) source.step(kDt);
     const std::vector<std::uint8_t> good = source.snapshot();
-    World target;
+    World target{oneSubstepDef()};
     const std::uint64_t empty = target.stateHash();
     int refused = 0, accepted = 0;
     std::uint32_t seed = 99;
@@ -202,7 +203,7 @@ TEST(Snapshot, ResealedDamageIsRefusedOrStepsSafely) {
         seed = seed * 1664525u + 1013904223u;
         bad[at] = static_cast<std::uint8_t>(bad[at] ^ (1u + (seed >> 24) % 255u));
         reseal(bad);
-        World scratch;
+        World scratch{oneSubstepDef()};
         try {
             scratch.restore(bad);
             ++accepted;
@@ -218,7 +219,7 @@ TEST(Snapshot, ResealedDamageIsRefusedOrStepsSafely) {
 }
 
 TEST(Snapshot, IsRefusedFromInsideACallback) {
-    World world;
+    World world{oneSubstepDef()};
     buildSmallWorld(world);
     const std::vector<std::uint8_t> bytes = world.snapshot();
     bool refused = false;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -27,7 +28,7 @@ BodyId box(World& world, Vec2 at, float halfWidth, float halfHeight) {
 // A 1 kg-ish box pinned to the static ground at the origin, created `gap` metres to the right
 // of its anchor, in a world without gravity: the joint has only its own error to close.
 struct StretchedPin {
-    World world;
+    World world{oneSubstepDef()};
     BodyId body;
     JointId pin;
 
@@ -42,7 +43,7 @@ struct StretchedPin {
         pin = world.createJoint(def);
     }
     static WorldDef makeDef(int substeps) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.gravity = {0.0f, 0.0f};
         def.substepCount = substeps;
         return def;
@@ -94,7 +95,7 @@ TEST(SoftStep, SettingTheSoftnessWakesTheJointsBodies) {
 }
 
 TEST(SoftContacts, ABoxRestsOnTheGroundWithinTheSlop) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.contactCorrection = ContactCorrection::Soft;
     def.substepCount = 4;
     World world(def);
@@ -110,7 +111,7 @@ TEST(SoftContacts, ABoxRestsOnTheGroundWithinTheSlop) {
 }
 
 TEST(SoftContacts, ADeepOverlapIsPushedOutNoFasterThanThePushSpeed) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.contactCorrection = ContactCorrection::Soft;
     def.gravity = {0.0f, 0.0f};
     def.substepCount = 4;
@@ -139,7 +140,7 @@ namespace {
 // A 2 kg box hung 1 m below a static anchor by a distance rod of compliance `compliance`:
 // how far the rod is stretched once it hangs still.
 float hangingStretch(float compliance, int substeps, int iterations) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.substepCount = substeps;
     World world(def);
     const BodyId ceiling = world.createBody(BodyDef{});
@@ -205,7 +206,7 @@ TEST(Xpbd, ARigidJointHoldsItsNeighboursUpAtOneSubstep) {
     // iterations, so the Baumgarte pins see it carry its share of the load. Without that (its
     // rows left to the sweeps, as published), the links fell each step until the sweeps pulled
     // the first one back alone, and the Baumgarte pin beside it opened to 0.099 m.
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ground = world.createBody(BodyDef{});
     BodyDef postDef;
     postDef.position = {3.0f, 8.0f};

@@ -17,6 +17,7 @@
 #include "islands/team.h"
 #include "pivot/pivot.h"
 #include "scenes/parts.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -170,14 +171,14 @@ Workers whoDidWhat(TaskPool& pool, int count, int stages) {
 }  // namespace
 
 TEST(StepTasks, AGameSchedulerStepsToTheSameBitsAsOneThreadAndAsTheWorldsOwn) {
-    WorldDef one;
+    WorldDef one = oneSubstepDef();
     const std::uint64_t expected = pileHash(one, 150);
-    WorldDef own;
+    WorldDef own = oneSubstepDef();
     own.workerCount = 3;
     EXPECT_EQ(pileHash(own, 150), expected);
 
     ThreadScheduler scheduler(2);
-    WorldDef tasks;
+    WorldDef tasks = oneSubstepDef();
     tasks.workerCount = 3;
     useScheduler(tasks, scheduler);
     auto world = pileWorld(tasks);
@@ -191,11 +192,11 @@ TEST(StepTasks, AGameSchedulerStepsToTheSameBitsAsOneThreadAndAsTheWorldsOwn) {
 }
 
 TEST(StepTasks, TasksDroppedUnstartedLeaveTheWholeStepToTheCaller) {
-    WorldDef one;
+    WorldDef one = oneSubstepDef();
     const std::uint64_t expected = pileHash(one, 100);
     // Threads that never get to a task before finish drops it.
     ThreadScheduler scheduler(0, true);
-    WorldDef tasks;
+    WorldDef tasks = oneSubstepDef();
     tasks.workerCount = 2;
     useScheduler(tasks, scheduler);
     EXPECT_EQ(pileHash(tasks, 100), expected);
@@ -220,8 +221,8 @@ TEST(StepTasks, ATaskRunInsideEnqueueDoesTheWholeJobBeforeTheCallerStarts) {
     EXPECT_FALSE(who.blocks.empty());
     EXPECT_TRUE(std::all_of(who.blocks.begin(), who.blocks.end(), [](int w) { return w == 1; }));
 
-    WorldDef one;
-    WorldDef tasks;
+    WorldDef one = oneSubstepDef();
+    WorldDef tasks = oneSubstepDef();
     tasks.workerCount = 2;
     tasks.enqueueTask = inline_.enqueue;
     tasks.finishTask = [](void*) {};
@@ -261,7 +262,7 @@ TEST(StepTasks, ATaskRunAfterItsJobClosedJoinsNothing) {
 }
 
 TEST(StepTasks, EnqueueAndFinishMustBeSetTogether) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = 2;
     def.enqueueTask = [](StepTask) -> void* { return nullptr; };
     try {
@@ -278,10 +279,10 @@ TEST(StepTasks, EnqueueAndFinishMustBeSetTogether) {
 }
 
 TEST(StepTasks, AnExceptionFromEnqueueIsThrownOnceTheStepIsDone) {
-    WorldDef one;
+    WorldDef one = oneSubstepDef();
     auto expected = pileWorld(one);
     int calls = 0;
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = 2;
     def.enqueueTask = [&](StepTask task) -> void* {
         if (++calls == 3) throw std::runtime_error("queue full");
@@ -303,12 +304,12 @@ TEST(StepTasks, AnExceptionFromEnqueueIsThrownOnceTheStepIsDone) {
 }
 
 TEST(StepTasks, AnExceptionFromFinishIsThrownOnceTheStepIsDone) {
-    WorldDef one;
+    WorldDef one = oneSubstepDef();
     auto expected = pileWorld(one);
     int enqueued = 0;
     int finished = 0;
     std::vector<StepTask> abandoned;
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = 2;
     def.enqueueTask = [&](StepTask task) -> void* {
         // Every other task is run at once; the others only if finish gets to them.

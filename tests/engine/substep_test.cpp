@@ -6,6 +6,7 @@
 #include "scenes/scene.h"
 #include "scoped_switch.h"
 #include "solver/island_solver.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 using namespace pivot::scenes;
@@ -38,11 +39,11 @@ double maxSeparation(const char* name, PositionSolver solver, int substeps, int 
 
 TEST(Substeps, CountIsValidated) {
     for (int bad : {0, -1, kMaxSubsteps + 1}) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.substepCount = bad;
         EXPECT_THROW(World{def}, Error) << bad;
     }
-    World world;
+    World world{oneSubstepDef()};
     fallingBall(world);
     const std::uint64_t before = world.stateHash();
     EXPECT_THROW(world.setSubstepCount(0), Error);
@@ -64,7 +65,7 @@ TEST(Substeps, AFreeFallIsIntegratedInEachSubstep) {
     // Semi-implicit Euler per substep: after n substeps of h from rest, v = -g n h and the drop
     // is g h^2 (1 + 2 + ... + n). One substep of dt drops g dt^2; four drop 10/16 of that.
     for (int n : {1, 4}) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.substepCount = n;
         World world(def);
         const BodyId ball = fallingBall(world);

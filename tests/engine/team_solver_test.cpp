@@ -15,6 +15,7 @@
 #include "islands/island_schedule.h"
 #include "islands/team.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -156,7 +157,7 @@ TEST(GraphColoring, BodiesThatNeverMoveDoNotSeparateConstraints) {
 // row's middle; circles do not collide (as in the joint_grid benchmark). Strategies cycle so
 // every group of a coloured island has joints.
 struct JointGrid {
-    World world;
+    World world{oneSubstepDef()};
     std::vector<JointId> joints;
 };
 
@@ -312,7 +313,7 @@ void buildPyramid(World& world, int rows, bool withGround = true) {
 }
 
 std::uint64_t gridHash(int workers, bool mixed, int steps, bool everyType = false) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = workers;
     def.enableSleep = false;
     JointGrid grid{World(def), {}};
@@ -322,7 +323,7 @@ std::uint64_t gridHash(int workers, bool mixed, int steps, bool everyType = fals
 }
 
 std::uint64_t pyramidHash(int workers, ContactCorrection correction, int steps, int substeps = 1) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = workers;
     def.contactCorrection = correction;
     def.substepCount = substeps;
@@ -545,7 +546,7 @@ TEST(TeamSolver, BatchSharesCoverEveryConstraintOnceWhereTheTilesStart) {
 
 TEST(TeamSolver, BigIslandsAreColoured) {
     // The scenes below must really exercise the coloured path.
-    JointGrid grid{World(WorldDef{}), {}};
+    JointGrid grid{World(oneSubstepDef()), {}};
     buildGrid(grid, 30, false);
     EXPECT_GE(int(grid.joints.size()), kColoringThreshold);
     grid.world.step(kDt);
@@ -562,7 +563,7 @@ TEST(TeamSolver, AJointGridStepsToTheSameBitsOnAnyNumberOfWorkers) {
 
 TEST(TeamSolver, AGridOfEveryJointTypeStepsToTheSameBitsOnAnyNumberOfWorkers) {
     // Every joint type with every strategy in one coloured island.
-    JointGrid grid{World(WorldDef{}), {}};
+    JointGrid grid{World(oneSubstepDef()), {}};
     buildGrid(grid, 30, true, true);
     grid.world.step(kDt);
     ASSERT_EQ(grid.world.lastStepStats().islandCount, 1);
@@ -598,7 +599,7 @@ TEST(TeamSolver, AKinematicCarrierUnderABigPileMovesExactlyAsAlone) {
         world.createShape(body, ShapeDef{}, Polygon::box(40.0f, 0.5f));
         return body;
     };
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = 2;
     World loaded(def);
     BodyId carried = carrier(loaded);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -19,7 +20,7 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 // A small world with a body, a shape and a joint, stepped once so velocities, impulses and
 // forces are non-trivial.
 struct Fixture {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground, body, other;
     ShapeId shape;
     JointId joint;
@@ -417,10 +418,10 @@ TEST(Validation, NumbersBeyondTheInputLimits) {
     expectRejected(f.world, [&] { f.world.setMouseTarget(hand, {0, tooFar}); }, {"target"});
 
     expectRejected(f.world, [&] { f.world.step(2.0f); }, {"dt", "kMaxTimeStep", "got 2"});
-    WorldDef worldDef;
+    WorldDef worldDef = oneSubstepDef();
     worldDef.gravity = {huge, 0};
     EXPECT_THROW(World{worldDef}, Error);
-    worldDef = WorldDef{};
+    worldDef = oneSubstepDef();
     worldDef.restitutionThreshold = huge;
     EXPECT_THROW(World{worldDef}, Error);
 
@@ -808,16 +809,16 @@ TEST(Validation, StepArguments) {
 }
 
 TEST(Validation, WorldDef) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.gravity.y = kNaN;
     EXPECT_THROW(World{def}, Error);
-    def = WorldDef{};
+    def = oneSubstepDef();
     def.defaultPositionSolver = static_cast<PositionSolver>(kPositionSolverCount);
     EXPECT_THROW(World{def}, Error);
-    def = WorldDef{};
+    def = oneSubstepDef();
     def.contactCorrection = static_cast<ContactCorrection>(3);
     EXPECT_THROW(World{def}, Error);
-    def = WorldDef{};
+    def = oneSubstepDef();
     def.broadPhaseBoxes = static_cast<BroadPhaseBoxes>(2);
     try {
         World refused{def};
@@ -828,20 +829,20 @@ TEST(Validation, WorldDef) {
     def.broadPhaseBoxes = BroadPhaseBoxes::Compact;
     EXPECT_EQ(World{def}.broadPhaseBoxes(), BroadPhaseBoxes::Compact);
     for (float bad : {0.0f, -1.0f, kNaN, kInf}) {
-        def = WorldDef{};
+        def = oneSubstepDef();
         def.contactHertz = bad;
         EXPECT_THROW(World{def}, Error) << bad;
-        def = WorldDef{};
+        def = oneSubstepDef();
         def.contactPushSpeed = bad;
         EXPECT_THROW(World{def}, Error) << bad;
     }
-    def = WorldDef{};
+    def = oneSubstepDef();
     def.contactDampingRatio = -1.0f;
     EXPECT_THROW(World{def}, Error);
-    def = WorldDef{};
+    def = oneSubstepDef();
     def.contactBiasFactor = 1.5f;
     EXPECT_THROW(World{def}, Error);
-    def = WorldDef{};
+    def = oneSubstepDef();
     def.restitutionThreshold = -1.0f;
     EXPECT_THROW(World{def}, Error);
     Fixture f;
@@ -908,7 +909,7 @@ TEST(Validation, TheLimitsThatKeepAStepInRange) {
                        f.world.setGravity({0, -past * kMaxGravity});
                    },
                    {"gravity", "kMaxGravity"});
-    WorldDef worldDef;
+    WorldDef worldDef = oneSubstepDef();
     worldDef.gravity = {past * kMaxGravity, 0};
     EXPECT_THROW(World{worldDef}, Error);
     ShapeDef shape;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -26,7 +27,7 @@ void expectRefused(World& world, Call&& call, const std::string& words) {
 
 TEST(FrictionJoint, StopsASlidingBoxAsFrictionWould) {
     // 1 kg box at 3 m/s, friction force 5 N: it stops after 0.6 s, 0.9 m on.
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.gravity = {0, 0};
     World world(def);
     BodyId table = world.createBody(BodyDef{});
@@ -54,7 +55,7 @@ TEST(FrictionJoint, StopsASlidingBoxAsFrictionWould) {
 }
 
 TEST(MotorJoint, DrivesABodyToItsOffsetWithinItsForce) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.gravity = {0, 0};
     World world(def);
     BodyId ground = world.createBody(BodyDef{});
@@ -87,7 +88,7 @@ TEST(MotorJoint, DrivesABodyToItsOffsetWithinItsForce) {
 TEST(VelocityJoints, BehaveTheSameUnderTheWorldsEveryDefaultSolver) {
     // The strategy a velocity-only joint sits under changes nothing: the same bits.
     auto run = [](PositionSolver solver) {
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.defaultPositionSolver = solver;
         World world(def);
         BodyId ground = world.createBody(BodyDef{});
@@ -116,7 +117,7 @@ TEST(VelocityJoints, BehaveTheSameUnderTheWorldsEveryDefaultSolver) {
 }
 
 TEST(VelocityJoints, BadInputIsRefusedAndChangesNothing) {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground = world.createBody(BodyDef{});
     BodyDef bd;
     bd.type = BodyType::Dynamic;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -14,12 +15,12 @@ constexpr float kDt = 1.0f / 60.0f;
 
 // Five 1 x 0.25 m boxes welded end to end out of a wall at y = 5.
 struct Beam {
-    World world;
+    World world{oneSubstepDef()};
     BodyId wall;
     std::vector<BodyId> boxes;
     std::vector<JointId> welds;
 
-    explicit Beam(PositionSolver solver, int count = 5) : world(WorldDef{}) {
+    explicit Beam(PositionSolver solver, int count = 5) : world(oneSubstepDef()) {
         wall = world.createBody(BodyDef{});
         BodyId previous = wall;
         for (int i = 0; i < count; ++i) {
@@ -103,7 +104,7 @@ TEST(WeldJoint, ASoftPointHangsWhereItsSpringBalancesTheWeight) {
     // A box welded at its centre to a static body, its point soft at 2 Hz (critically damped):
     // on the point's own effective mass, the box's mass, the spring is k = (2 pi 2)^2 m, so the
     // box settles g / (2 pi 2)^2 below the anchor, its angle still held rigid.
-    World world;
+    World world{oneSubstepDef()};
     const BodyId ceiling = world.createBody(BodyDef{});
     BodyDef def;
     def.type = BodyType::Dynamic;
@@ -124,7 +125,7 @@ TEST(WeldJoint, ASoftAngleBendsWhereItsSpringBalancesTheMoment) {
     // A 1 x 0.25 m box welded at its left end to the wall, its angle soft at 3 Hz: the spring,
     // on the angle's own effective mass (the box's inertia about its centre), holds the weight's
     // moment m g 0.5 at an angle of m g 0.5 / ((2 pi 3)^2 I).
-    World world;
+    World world{oneSubstepDef()};
     const BodyId wall = world.createBody(BodyDef{});
     BodyDef def;
     def.type = BodyType::Dynamic;

@@ -7,6 +7,7 @@
 
 #include "all_solvers.h"
 #include "pivot/pivot.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -17,13 +18,13 @@ constexpr const auto& kSolvers = test_support::kAllSolvers;
 
 // A 2.5 x 0.5 m chassis on two 0.4 m wheels 1.8 m apart, sprung vertically, on flat ground.
 struct Car {
-    World world;
+    World world{oneSubstepDef()};
     BodyId ground, chassis, rear, front;
     JointId rearJoint, frontJoint;
 
     explicit Car(PositionSolver solver, JointSpring spring = {true, 4.0f, 0.7f},
                  TranslationLimit limit = {}, JointMotor motor = {})
-        : world(WorldDef{}) {
+        : world(oneSubstepDef()) {
         ground = world.createBody(BodyDef{});
         ShapeDef slab;
         slab.density = 0.0f;

@@ -12,6 +12,7 @@
 #include "islands/island_schedule.h"
 #include "pivot/pivot.h"
 #include "scoped_switch.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -22,7 +23,7 @@ constexpr float kDt = 1.0f / 60.0f;
 // A world with sleep off and a ground `halfWidth` m either side of the origin.
 std::unique_ptr<World> grounded(ContactCorrection correction, int substeps, int workers,
                                 float halfWidth) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.contactCorrection = correction;
     def.substepCount = substeps;
     def.workerCount = workers;

@@ -10,6 +10,7 @@
 #include "core/worker_count_chooser.h"
 #include "pivot/pivot.h"
 #include "scenes/parts.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -152,7 +153,7 @@ TEST(WorkerCountChooser, OneWorkerHasNothingToChoose) {
 namespace {
 
 std::unique_ptr<World> pyramidWorld(int workers, bool adapt) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = workers;
     def.adaptWorkerCount = adapt;
     auto world = std::make_unique<World>(def);

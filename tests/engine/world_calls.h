@@ -112,6 +112,7 @@ inline const std::vector<ChangingCall>& everyChangingCall() {
         {"restore", true, [](W& w, const E& e) { w.restore(e.snapshot); }},
         {"setGravity", false, [](W& w, const E&) { w.setGravity({0.0f, -5.0f}); }},
         {"setSubstepCount", false, [](W& w, const E&) { w.setSubstepCount(2); }},
+        {"setIterations", false, [](W& w, const E&) { w.setIterations(4, 2); }},
         {"setContactCorrection", false,
          [](W& w, const E&) { w.setContactCorrection(ContactCorrection::Baumgarte); }},
         {"setSleepEnabled", false, [](W& w, const E&) { w.setSleepEnabled(false); }},

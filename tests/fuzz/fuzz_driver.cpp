@@ -14,6 +14,7 @@
 #include <tuple>
 #include <typeinfo>
 #include <utility>
+#include "one_substep_def.h"
 
 namespace pivot::fuzz {
 
@@ -191,7 +192,7 @@ private:
         tag_ = 0;
         // A WorldDef now and then has a bad field: the constructor must refuse it.
         Values values(random_, random_.chance(0.2f) ? 0.3f : 0.0f, options_.extremes);
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         Arg<Vec2> gravity = random_.chance(0.8f) ? Arg<Vec2>{{0.0f, -10.0f}} : values.gravity();
         def.gravity = gravity.value;
         bool bad = gravity.bad;
@@ -230,7 +231,7 @@ private:
             if (bad) failure("World::World accepted a bad WorldDef");
         } catch (const Error& e) {
             if (!bad) failure(std::string("World::World refused a valid WorldDef: ") + e.what());
-            def = WorldDef{};
+            def = oneSubstepDef();
             world_ = std::make_unique<World>(def);
         }
         journal_.begin(*world_, def);
@@ -244,7 +245,7 @@ private:
             journal_.createShape(id, ShapeDef{}, Polygon::box(30.0f, 1.0f));
         }
         // Another world, whose ids this one must refuse.
-        other_ = std::make_unique<World>(WorldDef{});
+        other_ = std::make_unique<World>(oneSubstepDef());
         BodyDef bd;
         bd.type = BodyType::Dynamic;
         otherBody_ = other_->createBody(bd);
@@ -2098,8 +2099,8 @@ private:
         } else if (r < 40) {
             dt = random_.uniform(1e-4f, 0.05f);
         }
-        int velocityIterations = kDefaultVelocityIterations;
-        int positionIterations = kDefaultPositionIterations;
+        int velocityIterations = kBox2D241VelocityIterations;
+        int positionIterations = kBox2D241PositionIterations;
         if (random_.chance(0.3f)) {
             velocityIterations = values_->edge(0.02f) ? 200 : random_.between(0, 12);
             positionIterations = values_->edge(0.02f) ? 200 : random_.between(0, 12);
@@ -2653,7 +2654,7 @@ private:
     // or not, are refused with nothing changed, or restore a world that steps.
     void snapshots() {
         const std::vector<std::uint8_t> bytes = world_->snapshot();
-        WorldDef def;
+        WorldDef def = oneSubstepDef();
         def.workerCount = random_.chance(0.5f) ? 1 : 2;
         World copy(def);
         // Ids the copy issued before the restore, one stale and one live: neither may name

@@ -7,6 +7,7 @@
 #include <istream>
 #include <sstream>
 #include <stdexcept>
+#include "one_substep_def.h"
 
 namespace pivot::fuzz {
 
@@ -694,7 +695,7 @@ ReplayResult replay(std::istream& in) {
         Fields f(line);
         std::string command = f.word();
         if (command == "world") {
-            WorldDef def;
+            WorldDef def = oneSubstepDef();
             def.gravity = f.v();
             def.defaultPositionSolver = static_cast<PositionSolver>(f.i());
             def.contactCorrection = static_cast<ContactCorrection>(f.i());
@@ -706,7 +707,7 @@ ReplayResult replay(std::istream& in) {
             world = std::make_unique<World>(def);
             continue;
         }
-        if (!world) world = std::make_unique<World>(WorldDef{});
+        if (!world) world = std::make_unique<World>(oneSubstepDef());
         World& w = *world;
         // Looks a name up; a missing one skips the line.
         bool missing = false;

@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <thread>
+#include "one_substep_def.h"
 
 namespace pivot::fuzz {
 
@@ -86,7 +87,7 @@ struct MeddlingCrowd::State {
 
 MeddlingCrowd::MeddlingCrowd() : state_(std::make_unique<State>()) {
     State* s = state_.get();
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = 2;
     def.adaptWorkerCount = false;
     def.enqueueTask = [s](StepTask task) -> void* {
@@ -99,7 +100,7 @@ MeddlingCrowd::MeddlingCrowd() : state_(std::make_unique<State>()) {
     };
     def.finishTask = [s](void*) { s->meddle("finishTask"); };
     s->crowd = std::make_unique<World>(def);
-    s->twin = std::make_unique<World>(WorldDef{});
+    s->twin = std::make_unique<World>(oneSubstepDef());
     addCrowd(*s->crowd);
     addCrowd(*s->twin);
     s->world = s->crowd.get();

@@ -11,6 +11,7 @@
 #include "islands/island_schedule.h"
 #include "pivot/pivot.h"
 #include "scenes/parts.h"
+#include "one_substep_def.h"
 
 using namespace pivot;
 
@@ -31,7 +32,7 @@ scenes::JointGridSpec grid() {
 
 // The worst pin separation over the run.
 float pivotWorstSeparation(int workers) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = workers;
     World world(def);
     const std::vector<JointId> joints = scenes::addJointGrid(world, grid()).joints;
@@ -69,7 +70,7 @@ scenes::PyramidSpec pyramid() {
 
 // How far the top box drifts in 10 s, after 1 s to settle.
 float pivotPyramidDrift(int workers) {
-    WorldDef def;
+    WorldDef def = oneSubstepDef();
     def.workerCount = workers;
     World world(def);
     scenes::addShelf(world, -50.0f, 50.0f, 0.0f);

@@ -20,8 +20,8 @@ struct WorldSettings {
     std::optional<float> bias;  ///< every joint's bias factor, at load; unset: the solver's default
     ContactCorrection contacts = ContactCorrection::NGS;
     int substeps = 1;
-    int velocityIterations = kDefaultVelocityIterations;
-    int positionIterations = kDefaultPositionIterations;
+    int velocityIterations = kBox2D241VelocityIterations;
+    int positionIterations = kBox2D241PositionIterations;
     bool script = true;  ///< run the scene's own script (its scripted drags, drops and motors)
 };
 
