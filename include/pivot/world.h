@@ -212,6 +212,9 @@ struct StepStats {
     /// asked when every error was within slop early). 0 when no island has an NGS joint or NGS
     /// contact.
     int positionIterations = 0;
+    /// Joint solves of the extra NGS sweeps that joints asked for (extraPositionIterations),
+    /// over every island and substep: the cost of that knob, beyond the shared sweeps.
+    int extraPositionSolves = 0;
     int contactCount = 0;       ///< contacts in the world (broad-phase boxes overlapping)
     int touchingCount = 0;      ///< of which touching (manifold with points)
     int sleepingBodyCount = 0;  ///< dynamic and kinematic bodies asleep after the step
@@ -754,6 +757,11 @@ public:
     /// A value in [0, 1], or nullopt for the solver's default. Refused for friction and motor
     /// joints.
     void setJointBiasFactor(JointId id, std::optional<float> biasFactor);
+    /// The NGS sweeps the joint asks for beyond the world's (the defs'
+    /// extraPositionIterations): in [0, kMaxIterations]. The setter wakes the joint's bodies and
+    /// is refused for friction and motor joints.
+    int jointExtraPositionIterations(JointId id) const;
+    void setJointExtraPositionIterations(JointId id, int count);
     /// The stiffness a SoftStep joint holds with (JointSoftness; kept, unread, by the other
     /// strategies). The setter checks it as the defs do, wakes the joint's bodies, and is
     /// refused for friction and motor joints.
@@ -794,7 +802,7 @@ public:
     /// contacts with their manifolds and impulses, the broad phase, and the last step's events
     /// and statistics. Not in it: the worker count, the task system and the callbacks, which
     /// belong to the world a snapshot is restored into. The bytes are read by the same pivot2d
-    /// version (format version 6), on a machine of the same float behaviour as stateHash needs.
+    /// version (format version 7), on a machine of the same float behaviour as stateHash needs.
     std::vector<std::uint8_t> snapshot() const;
     /// Replaces this world's state with a snapshot's, so that stepping on gives, bit for bit,
     /// what stepping the snapshotted world gives (the same stateHash at once and after any

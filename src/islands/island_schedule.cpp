@@ -1,5 +1,7 @@
 #include "islands/island_schedule.h"
 
+#include <algorithm>
+
 #include "core/buffer.h"
 
 namespace pivot {
@@ -54,6 +56,7 @@ Slots movedBy(Slots slots, std::int32_t offset) {
 void IslandScheduler::planJoints(const IslandView& island, const IslandSet::Range* members,
                                  const SlotPool<Joint>& joints, IslandSchedule& schedule) {
     schedule.jointsMayBreak = false;
+    schedule.mostExtraSweeps = 0;
     const int memberCount = schedule.memberCount;
     schedule.jointMember.clear();
     if (island.jointCount == 0 && schedule.jointIds.empty()) {
@@ -81,6 +84,7 @@ void IslandScheduler::planJoints(const IslandView& island, const IslandSet::Rang
         jointGroups_[static_cast<std::size_t>(j)] = static_cast<std::uint8_t>(group);
         ++sizes[group];
         if (joint.breakForce > 0.0f || joint.breakTorque > 0.0f) schedule.jointsMayBreak = true;
+        schedule.mostExtraSweeps = std::max(schedule.mostExtraSweeps, joint.extraPositionIterations);
     }
     schedule.groupStart[0] = 0;
     for (int g = 0; g < kJointGroupCount; ++g) {
@@ -115,6 +119,12 @@ void IslandScheduler::planJoints(const IslandView& island, const IslandSet::Rang
     for (std::size_t k = 0; k < order_.size(); ++k) {
         schedule.jointIds[k] = island.joints[order_[k]];
         schedule.jointPairs[k] = island.jointBodies[order_[k]];
+    }
+    if (schedule.mostExtraSweeps > 0) {
+        resizeBuffer(schedule.extraSweeps, order_.size());
+        for (std::size_t k = 0; k < order_.size(); ++k) {
+            schedule.extraSweeps[k] = joints[schedule.jointIds[k]].extraPositionIterations;
+        }
     }
     if (memberCount > 1) {
         resizeBuffer(schedule.jointMember, order_.size());

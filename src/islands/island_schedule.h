@@ -73,6 +73,10 @@ struct IslandSchedule {
     std::array<std::int32_t, kJointGroupCount + 1> groupStart{};
     std::array<std::vector<Batch>, kJointGroupCount> jointBatches;  // within each group
     bool jointsMayBreak = false;           // a joint of the island has a break force or torque
+    // The extra NGS sweeps its joints ask for (Joint::extraPositionIterations): the most any
+    // asks, and, when that is above 0, each joint's, in solving order.
+    std::int32_t mostExtraSweeps = 0;
+    std::vector<std::int32_t> extraSweeps;
     std::vector<std::int32_t> contactIds;  // contact pool indices, in solving order
     std::vector<BodyPair> contactPairs;
     std::vector<Batch> contactBatches;
@@ -89,6 +93,7 @@ struct IslandSchedule {
     void reserve(const BufferBounds& bound) {
         jointIds.reserve(bound.joints);
         jointPairs.reserve(bound.joints);
+        extraSweeps.reserve(bound.joints);
         contactIds.reserve(bound.contacts);
         contactPairs.reserve(bound.contacts);
         // A colouring makes at most one batch per colour and the overflow.

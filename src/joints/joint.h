@@ -41,6 +41,7 @@ struct Joint {
     PositionSolver solver = PositionSolver::FullNGS;
     bool hasBiasOverride = false;
     float biasOverride = 0.0f;
+    std::int32_t extraPositionIterations = 0;  // NGS sweeps beyond the world's, [0, kMaxIterations]
     JointSoftness softness;  // SoftStep's
     bool collideConnected = false;
     std::uint64_t userData = 0;

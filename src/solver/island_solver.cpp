@@ -586,11 +586,15 @@ void solveIslands(const Team& team, const IslandSet& set, int first, int count,
     // Per island of the bundle: its position sweeps over the step, and whether its last
     // substep's position phase was solved.
     std::array<int, kMostBundleMembers> positionSweeps{};
+    std::array<int, kMostBundleMembers> extraSolves{};
     const std::vector<PositionPhaseResult>& phases = work.positionScratch.memberResults;
     for (int substep = 0; substep < step.substepCount; ++substep) {
         solveSubstep(team, island, work, storage, substep == 0 ? step : later, substep, mine);
         if (!team.leader()) continue;  // the leader alone reports, and reads the phases
-        for (int m = 0; m < count; ++m) positionSweeps[m] += phases[m].sweeps;
+        for (int m = 0; m < count; ++m) {
+            positionSweeps[m] += phases[m].sweeps;
+            extraSolves[m] += phases[m].extraSolves;
+        }
     }
     writeBack(team, island, work, bodies, mine);
     team.sync();
@@ -608,6 +612,7 @@ void solveIslands(const Team& team, const IslandSet& set, int first, int count,
             report.discardedBodies += member.discardedBodies;
         }
         report.positionIterations = positionSweeps[m];
+        report.extraPositionSolves = extraSolves[m];
         const IslandSet::Range& r = set.ranges[static_cast<std::size_t>(first + m)];
         report.fellAsleep = updateSleep(set.bodies.data() + r.bodyBegin, r.bodyEnd - r.bodyBegin,
                                         bodies, step, phases[m].solved);

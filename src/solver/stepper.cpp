@@ -158,6 +158,7 @@ StepTotals Stepper::solve(SolverStorage& storage, const StepContext& context) {
         totals.edgeBodies += report.edgeBodies;
         totals.discardedBodies += report.discardedBodies;
         totals.positionIterations = std::max(totals.positionIterations, report.positionIterations);
+        totals.extraPositionSolves += report.extraPositionSolves;
     }
     if (changed) storage.islandRevision.bump();
     return totals;

@@ -31,6 +31,7 @@ struct StepTotals {
     int edgeBodies = 0;
     int discardedBodies = 0;
     int positionIterations = 0;  // the most any island ran
+    int extraPositionSolves = 0;
 };
 
 class Stepper {

@@ -183,6 +183,44 @@ PositionPhaseResult solveMemberSweeps(JointGroups& groups, const IslandSchedule&
     return result;
 }
 
+// Step 5: the sweeps over the NGS joints that ask for more than the world's. `results` has each
+// island's shared sweeps (one entry per bundle member); an island whose shared sweeps ended
+// within tolerance needs none, and each island stops as soon as its asking joints are within
+// slop, as it would alone. On one thread.
+void solveExtraSweeps(JointGroups& groups, const IslandSchedule& schedule, SolverPose* poses,
+                      std::vector<PositionPhaseResult>& results) {
+    const int count = schedule.memberCount;
+    std::array<std::uint8_t, kMostBundleMembers> active{};
+    int activeCount = 0;
+    for (int m = 0; m < count; ++m) {
+        active[m] = results[m].solved ? 0 : 1;
+        activeCount += active[m];
+    }
+    for (int sweep = 0; sweep < schedule.mostExtraSweeps && activeCount > 0; ++sweep) {
+        std::array<std::uint8_t, kMostBundleMembers> failed{};
+        groups.forEachGroup([&](auto strategy, auto& group, int g) {
+            using S = decltype(strategy);
+            if constexpr (S::kNgsSweeps) {
+                const std::int32_t start = schedule.groupStart[g];
+                for (int k = 0; k < static_cast<int>(group.size()); ++k) {
+                    const std::size_t at = static_cast<std::size_t>(start + k);
+                    if (schedule.extraSweeps[at] <= sweep) continue;
+                    const int m = count > 1 ? schedule.jointMember[at] : 0;
+                    if (!active[m]) continue;
+                    ++results[m].extraSolves;
+                    if (!S::solvePosition(group[k], poses)) failed[m] = 1;
+                }
+            }
+        });
+        for (int m = 0; m < count; ++m) {
+            if (active[m] && !failed[m]) {
+                active[m] = 0;
+                --activeCount;
+            }
+        }
+    }
+}
+
 }  // namespace
 
 PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
@@ -217,8 +255,12 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
     });
     team.sync();
     if (schedule.memberCount > 1) {
-        return solveMemberSweeps(groups, schedule, contacts, poses, scratch.memberResults,
-                                 iterations);
+        PositionPhaseResult bundle = solveMemberSweeps(groups, schedule, contacts, poses,
+                                                       scratch.memberResults, iterations);
+        if (schedule.mostExtraSweeps > 0) {
+            solveExtraSweeps(groups, schedule, poses, scratch.memberResults);
+        }
+        return bundle;
     }
 
     // A sweep is solved when no block of it found a contact out of tolerance (NaN included)
@@ -252,6 +294,17 @@ PositionPhaseResult solvePositionPhase(const Team& team, JointGroups& groups,
             result.solved = true;
             break;
         }
+    }
+    if (schedule.mostExtraSweeps > 0 && !result.solved) {
+        // One block, so one member runs every extra sweep, in solving order; sync() waits for
+        // blocks, not for members, so the work must be one.
+        team.forBlocks(1, 1, [&](IndexRange) {
+            scratch.memberResults[0] = result;
+            solveExtraSweeps(groups, schedule, poses, scratch.memberResults);
+        });
+        team.sync();
+        result.extraSolves = scratch.memberResults[0].extraSolves;
+        return result;
     }
     if (team.leader()) scratch.memberResults[0] = result;  // every member found the same
     return result;

@@ -9,7 +9,11 @@
 //   4. the NGS sweeps: up to `iterations`, each over the NGS contacts, then the joints of the
 //      strategies that take part (ModifiedNGS, then FullNGS), stopping once every joint is
 //      within slop (linear and angular) and no contact is deeper than
-//      ContactSolver::withinTolerance allows.
+//      ContactSolver::withinTolerance allows;
+//   5. if they stopped with something out of tolerance, the extra sweeps: over only the NGS
+//      joints that ask for more (Joint::extraPositionIterations), each in as many as it asks,
+//      until those are within slop. On one thread, in solving order, and for each island of a
+//      bundle apart, so the bits are the same on any worker count and in any bundle.
 // Contacts come first in a sweep, so a joint has the last word on a body both move, and a
 // joint's error is the one users look at (as in Box2D 2.4.1's position loop).
 #pragma once
@@ -31,6 +35,7 @@ namespace pivot {
 struct PositionPhaseResult {
     int sweeps = 0;       ///< NGS sweeps run
     bool solved = false;  ///< every NGS joint and contact ended within tolerance
+    int extraSolves = 0;  ///< joint solves of the extra sweeps (step 5)
 };
 
 /// The position phase's scratch.

@@ -144,6 +144,7 @@ void World::Impl::step(float dt, int velocityIterations, int positionIterations)
     stats.edgeBodyCount = totals.edgeBodies;
     stats.discardedBodyCount = totals.discardedBodies;
     stats.positionIterations = totals.positionIterations;
+    stats.extraPositionSolves = totals.extraPositionSolves;
     const IslandSet& islands = stepper.islands();
     for (std::size_t i = 0; i < islands.ranges.size(); ++i) {
         const IslandReport& report = stepper.report(static_cast<int>(i));

@@ -141,6 +141,13 @@ inline Vec2 checkedUnitAxis(const char* call, const char* field, Vec2 axis) {
     return {inv * axis.x, inv * axis.y};
 }
 
+inline void checkExtraPositionIterations(const char* call, const char* field, int count) {
+    if (count < 0 || count > kMaxIterations) {
+        fail(call, std::string(field) + " must be in [0, kMaxIterations = " +
+                       std::to_string(kMaxIterations) + "] (got " + std::to_string(count) + ")");
+    }
+}
+
 inline void checkBiasFactor(const char* call, const char* field, float bias) {
     requireInRange(call, field, bias, 0.0f, 1.0f);
 }

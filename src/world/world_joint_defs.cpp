@@ -45,6 +45,7 @@ PositionSolver checkSolverOf(const char* call, const Def& def, const World::Impl
 template <typename Def>
 void checkBiasAndLetGo(const char* call, const Def& def) {
     if (def.biasFactor) checkBiasFactor(call, "def.biasFactor", *def.biasFactor);
+    checkExtraPositionIterations(call, "def.extraPositionIterations", def.extraPositionIterations);
     checkSoftness(call, "def.softness", def.softness);
     if (def.letGoSeparation) {
         requireNonNegative(call, "def.letGoSeparation", *def.letGoSeparation);
@@ -55,6 +56,7 @@ void setStrategyFields(Joint& joint, const Def& def, PositionSolver solver) {
     joint.solver = solver;
     joint.hasBiasOverride = def.biasFactor.has_value();
     joint.biasOverride = def.biasFactor.value_or(0.0f);
+    joint.extraPositionIterations = def.extraPositionIterations;
     joint.softness = def.softness;
     joint.hasLetGoOverride = def.letGoSeparation.has_value();
     joint.letGoOverride = def.letGoSeparation.value_or(0.0f);

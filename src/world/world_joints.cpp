@@ -264,6 +264,22 @@ void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     impl_->wakeJointBodies(j);
 }
 
+int World::jointExtraPositionIterations(JointId id) const {
+    return impl_->joints[impl_->jointIndex("World::jointExtraPositionIterations", id)]
+        .extraPositionIterations;
+}
+
+void World::setJointExtraPositionIterations(JointId id, int count) {
+    const char* call = "World::setJointExtraPositionIterations";
+    impl_->requireChange(call);
+    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
+    requirePositionError(call, id.index, j);
+    checkExtraPositionIterations(call, "count", count);
+    j.extraPositionIterations = count;
+    impl_->islandRevision.bump();  // the island plans read it
+    impl_->wakeJointBodies(j);
+}
+
 JointSoftness World::jointSoftness(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointSoftness", id)].softness;
 }

@@ -26,7 +26,7 @@ namespace pivot {
 namespace {
 
 constexpr std::uint8_t kMagic[8] = {'P', 'I', 'V', 'O', 'T', '2', 'D', 'S'};
-constexpr std::uint32_t kFormatVersion = 6;
+constexpr std::uint32_t kFormatVersion = 7;
 constexpr std::size_t kHeaderSize = sizeof kMagic + 4 + 8;
 constexpr std::size_t kChecksumSize = 8;
 constexpr int kBodyTypes = 3;
@@ -321,6 +321,14 @@ void describeJoint(Io& io, J& j) {
     io.enumValue(j.solver, kPositionSolverCount);
     io.value(j.hasBiasOverride);
     io.value(j.biasOverride);
+    io.value(j.extraPositionIterations);
+    if constexpr (Io::kReading) {
+        // A count the setter refuses would stall the step (kMaxIterations).
+        if (j.extraPositionIterations < 0 || j.extraPositionIterations > kMaxIterations) {
+            io.corrupt("a joint's extra position iterations are " +
+                       std::to_string(j.extraPositionIterations));
+        }
+    }
     io.value(j.softness.hertz);
     io.value(j.softness.dampingRatio);
     io.value(j.softness.compliance);
@@ -448,7 +456,7 @@ void describeWorld(Io& io, W& w, std::uint32_t worldId) {
     auto& s = w.stats;
     for (auto* value :
          {&s.islandCount, &s.bodyCount, &s.jointCount, &s.translationClamps, &s.rotationClamps,
-          &s.positionIterations, &s.contactCount, &s.touchingCount, &s.sleepingBodyCount,
+          &s.positionIterations, &s.extraPositionSolves, &s.contactCount, &s.touchingCount, &s.sleepingBodyCount,
           &s.letGoJointCount, &s.discardedBodyCount, &s.edgeBodyCount, &s.impactCount}) {
         io.value(*value);
     }

@@ -2,12 +2,15 @@
 // joint. On scenes with joints that matter and joints that matter less (ragdoll_pile,
 // bridge_chains, rope_load: scenes/mixing_scenes.cpp), a mixed island (FullNGS on the key
 // joints, Baumgarte on the rest) against uniform islands of either at several budgets, each
-// kTrials perturbed times: the key joints' error against the cost.
+// kTrials perturbed times: the key joints' error against the cost. And the second per-joint
+// knob the same way: a FullNGS island whose key joints ask for extra NGS sweeps
+// (extraPositionIterations) against the plain uniform islands.
 //
 // Cost is counted in joint solves per step, what each strategy actually does: every joint solves
 // once per velocity iteration, and an NGS joint once more per position sweep the step ran (its
-// early exit counted); Baumgarte joints have no position phase. Measured microseconds are shown
-// beside it (they include the contacts, which every set-up shares).
+// early exit counted) and once per extra sweep it ran (StepStats::extraPositionSolves);
+// Baumgarte joints have no position phase. Measured microseconds are shown beside it (they
+// include the contacts, which every set-up shares).
 #pragma once
 
 #include <functional>
@@ -20,13 +23,13 @@ namespace pivot::report {
 
 struct MixingStudy {
     std::string markdown;
-    std::vector<Observation> verdicts;  ///< one per scene
+    std::vector<Observation> verdicts;  ///< two per scene: mixing, then extra iterations
     int runs = 0;
 };
 
-/// Rule, written before the numbers: mixing pays on a scene when the mixed island's median
-/// largest key-joint separation is smaller than that of every uniform island costing at most
-/// this factor times the mixed one's joint solves.
+/// Rule, written before the numbers: mixing pays on a scene when each mixed island's median
+/// largest key-joint separation is smaller than that of every plain uniform island costing at
+/// most this factor times the mixed one's joint solves; the extra iterations likewise.
 constexpr double kEqualCostSlack = 1.1;
 
 MixingStudy runMixingStudy(int steps, int threads,

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "report/contact_study.h"
+#include "report/exact_baseline.h"
 #include "report/mixing_study.h"
 #include "report/observations.h"
 #include "report/page_text.h"
@@ -273,11 +274,15 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
     const ContactStudy contacts =
         runContactStudy(settings.steps, settings.threads,
                         [&](const std::string& what) { log << "running " << what << "\n"; });
-    md << contacts.markdown << mixing.markdown;
+    const ExactBaseline exact =
+        runExactBaseline(settings.steps, settings.threads,
+                         [&](const std::string& what) { log << "running " << what << "\n"; });
+    md << contacts.markdown << mixing.markdown << exact.markdown;
 
     double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     md << "This page took " << num("%.0f", seconds) << " s to generate ("
-       << (matrix.runs.size() + study.runs.size()) * kTrials + contacts.runs + mixing.runs
+       << (matrix.runs.size() + study.runs.size()) * kTrials + contacts.runs + mixing.runs +
+              exact.runs
        << " runs).\n";
     if (!writeFile(docs / "results.md", md.str(), problem)) return problem;
 

@@ -71,6 +71,7 @@ scenes::RunMetrics medianMetrics(const std::vector<scenes::RunMetrics>& trials) 
     m.translationClamps = static_cast<long>(medianField(trials, &M::translationClamps));
     m.rotationClamps = static_cast<long>(medianField(trials, &M::rotationClamps));
     m.meanPositionIterations = medianField(trials, &M::meanPositionIterations);
+    m.meanExtraPositionSolves = medianField(trials, &M::meanExtraPositionSolves);
     m.microsecondsPerStep = medianField(trials, &M::microsecondsPerStep);
     m.maxLimitViolation = medianField(trials, &M::maxLimitViolation);
     m.jitter = medianField(trials, &M::jitter);  // kNotApplicable in all or none of them

@@ -118,6 +118,7 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
     double sumSquares = 0.0;
     long samples = 0;
     long positionIterations = 0;
+    long extraPositionSolves = 0;
     Clock::duration stepTime{};
     int lastStepApart = -1;  // the last step after which some joint was beyond the slop
     double restSpeedSquares = 0.0;
@@ -142,6 +143,7 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
         m.translationClamps += stats.translationClamps;
         m.rotationClamps += stats.rotationClamps;
         positionIterations += stats.positionIterations;
+        extraPositionSolves += stats.extraPositionSolves;
 
         SeparationSample s = sampleSeparation(scene);
         if (!(s.max <= m.maxSeparation)) m.maxSeparation = s.max;
@@ -182,6 +184,7 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
     if (restSamples > 0) m.jitter = std::sqrt(restSpeedSquares / double(restSamples));
     m.rmsSeparation = samples > 0 ? std::sqrt(sumSquares / double(samples)) : 0.0;
     m.meanPositionIterations = m.steps > 0 ? double(positionIterations) / m.steps : 0.0;
+    m.meanExtraPositionSolves = m.steps > 0 ? double(extraPositionSolves) / m.steps : 0.0;
     m.microsecondsPerStep =
         m.steps > 0 ? std::chrono::duration<double, std::micro>(stepTime).count() / double(m.steps)
                     : 0.0;

@@ -56,6 +56,8 @@ struct RunMetrics {
     long translationClamps = 0;         ///< body-steps limited by kMaxTranslation
     long rotationClamps = 0;            ///< body-steps limited by kMaxRotation
     double meanPositionIterations = 0;  ///< NGS sweeps per step actually run
+    /// Joint solves per step of the extra sweeps joints asked for (StepStats::extraPositionSolves)
+    double meanExtraPositionSolves = 0;
     double microsecondsPerStep = 0;     ///< mean wall time of World::step alone
     /// rad, the furthest any limited joint went beyond its limits.
     double maxLimitViolation = 0;

@@ -8,11 +8,13 @@ RevoluteJointDef SceneOptions::jointAt(BodyId a, BodyId b, Vec2 anchor) const {
     RevoluteJointDef def = RevoluteJointDef::atWorldAnchor(a, b, anchor);
     def.positionSolver = solver;
     def.biasFactor = biasFactor;
+    def.extraPositionIterations = keyExtraIterations;
     return def;
 }
 
 RevoluteJointDef SceneOptions::secondaryJointAt(BodyId a, BodyId b, Vec2 anchor) const {
     RevoluteJointDef def = jointAt(a, b, anchor);
+    def.extraPositionIterations = 0;
     if (secondarySolver) {
         def.positionSolver = *secondarySolver;
         def.biasFactor.reset();

@@ -38,6 +38,9 @@ struct SceneOptions {
     /// a bridge's decorative chains, a rope's links far from its load), at that solver's default
     /// bias; unset: `solver` for every joint.
     std::optional<PositionSolver> secondarySolver;
+    /// Mixing's second knob: the extraPositionIterations of the joints a scene does not mark
+    /// secondary (jointAt's); secondary joints ask for none.
+    int keyExtraIterations = 0;
 
     /// A revolute joint def at a world anchor carrying this scene's solver and bias.
     RevoluteJointDef jointAt(BodyId a, BodyId b, Vec2 anchor) const;

@@ -50,6 +50,9 @@ std::unique_ptr<World> smallIslands(int substeps, ContactCorrection contacts, in
                 if (chain == 4 && i == links - 1)
                     jd.breakForce = 0.5f;  // less than the link it holds weighs
                 if (chain == 8 && i == 2) jd.letGoSeparation = 0.02f;
+                // Joints asking for more sweeps than the world's: an island stops its own
+                // extra sweeps when its asking joints are within slop, as it would alone.
+                if (chain % 4 == 2) jd.extraPositionIterations = 1 + i % 3;
                 world->createJoint(jd);
                 previous = link;
             }

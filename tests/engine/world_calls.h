@@ -259,6 +259,8 @@ inline const std::vector<ChangingCall>& everyChangingCall() {
          [](W& w, const E& e) { w.setJointPositionSolver(e.distance, PositionSolver::Baumgarte); }},
         {"setJointBiasFactor", false,
          [](W& w, const E& e) { w.setJointBiasFactor(e.distance, 0.5f); }},
+        {"setJointExtraPositionIterations", false,
+         [](W& w, const E& e) { w.setJointExtraPositionIterations(e.distance, 2); }},
         {"setJointSoftness", false,
          [](W& w, const E& e) { w.setJointSoftness(e.distance, JointSoftness{30.0f, 1.0f, 0.0f}); }},
         {"setJointUserData", false, [](W& w, const E& e) { w.setJointUserData(e.distance, 3); }},

@@ -1927,6 +1927,18 @@ private:
                             [&] { journal_.setJointSoftness(joint.value, softness); });
                     break;
                 }
+                if (random_.chance(0.2f)) {
+                    // Mostly a count in range, now and then one outside it.
+                    const bool outside = random_.chance(0.2f);
+                    const int count = outside ? (random_.chance(0.5f) ? -1 : kMaxIterations + 1)
+                                              : random_.below(7);
+                    trace("setJointExtraPositionIterations " + idText(joint.value) + " " +
+                          std::to_string(count));
+                    attempt("World::setJointExtraPositionIterations",
+                            verdict(joint.bad || velocityOnly(joint) || outside),
+                            [&] { journal_.setJointExtraPositionIterations(joint.value, count); });
+                    break;
+                }
                 std::optional<float> bias;
                 bool bad = joint.bad || velocityOnly(joint);
                 if (random_.chance(0.7f)) {
@@ -2164,6 +2176,8 @@ private:
             {"World::jointLength", [&] { w.jointLength(joint.value); }},
             {"World::jointPositionSolver", [&] { w.jointPositionSolver(joint.value); }},
             {"World::jointBiasFactor", [&] { w.jointBiasFactor(joint.value); }},
+            {"World::jointExtraPositionIterations",
+             [&] { w.jointExtraPositionIterations(joint.value); }},
             {"World::isJointLetGo", [&] { w.isJointLetGo(joint.value); }},
             {"World::jointLetGoSeparation", [&] { w.jointLetGoSeparation(joint.value); }},
             {"World::jointUserData", [&] { w.jointUserData(joint.value); }},

@@ -452,6 +452,10 @@ void Journal::setJointBiasFactor(JointId id, std::optional<float> bias) {
     world_->setJointBiasFactor(id, bias);
     lines_.push_back("bias " + nameOf('j', id) + " " + num(bias.value_or(-1.0f)));
 }
+void Journal::setJointExtraPositionIterations(JointId id, int count) {
+    world_->setJointExtraPositionIterations(id, count);
+    lines_.push_back("extra " + nameOf('j', id) + " " + num(count));
+}
 void Journal::setJointSoftness(JointId id, const JointSoftness& softness) {
     world_->setJointSoftness(id, softness);
     lines_.push_back("softness " + nameOf('j', id) + " " + num(softness.hertz) + " " +
@@ -1214,6 +1218,10 @@ ReplayResult replay(std::istream& in) {
             std::optional<float> bias;
             if (b >= 0.0f) bias = b;
             call = [&w, j, bias] { w.setJointBiasFactor(j, bias); };
+        } else if (command == "extra") {
+            JointId j = joint(f.word());
+            const int count = f.i();
+            call = [&w, j, count] { w.setJointExtraPositionIterations(j, count); };
         } else if (command == "softness") {
             JointId j = joint(f.word());
             const float hertz = f.f();

@@ -93,6 +93,7 @@ public:
     void setJointMotor(JointId id, const JointMotor& motor);
     void setJointPositionSolver(JointId id, PositionSolver solver);
     void setJointBiasFactor(JointId id, std::optional<float> bias);
+    void setJointExtraPositionIterations(JointId id, int count);
     void setJointSoftness(JointId id, const JointSoftness& softness);
     void setJointLetGoSeparation(JointId id, std::optional<float> separation);
     void rearmJoint(JointId id);
