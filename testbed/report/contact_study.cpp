@@ -35,6 +35,7 @@ std::vector<Setup> setups() {
         for (int substeps : {1, 4, 8}) out.push_back({c, substeps, 8, 3});
     }
     out.push_back({ContactCorrection::Soft, 4, 1, 1});  // Box2D v3's soft step
+    out.push_back({ContactCorrection::Soft, 4, 1, 0});  // the same without its relax sweep
     return out;
 }
 
@@ -47,7 +48,8 @@ ContactStudy runContactStudy(int steps, int threads,
     md << "## Contacts\n\n"
        << "The contacts' position correction on the stacks made to stress it, with every "
           "correction at 1, 4 and 8 substeps of 8 velocity and 3 position iterations, and Box2D "
-          "v3's soft step (soft contacts, 4 substeps of 1/1); each the median over "
+          "v3's soft step (soft contacts, 4 substeps of 1/1), with and without its relax sweep "
+          "(4 x 1/0); each the median over "
        << kTrials
        << " perturbed runs [with their range]. *height lost* is how far the bodies' centre of "
           "mass ended below where it began; *overlap* the deepest overlap of any contact, over "
@@ -69,6 +71,7 @@ ContactStudy runContactStudy(int steps, int threads,
               "overlap (m) | fastest (m/s) | drift (J) | us/step | verdict |\n"
            << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
         std::string passed;
+        double fastestRelaxed = 0.0, fastestBare = 0.0;  // soft 4 x 1/1 and 4 x 1/0
         for (const Setup& s : setups()) {
             scenes::SceneOptions options;
             options.contactCorrection = s.contacts;
@@ -81,6 +84,9 @@ ContactStudy runContactStudy(int steps, int threads,
                 runTrials(*info, options, settings, threads);
             out.runs += static_cast<int>(trials.size());
             const scenes::RunMetrics m = medianMetrics(trials);
+            if (s.contacts == ContactCorrection::Soft && s.substeps == 4 && s.velocity == 1) {
+                (s.position > 0 ? fastestRelaxed : fastestBare) = m.maxSpeed;
+            }
             const bool stack = std::string(name) != "overlap_recovery";
             const bool ok =
                 stack ? m.heightLost < kStackHoldsWithin
@@ -105,6 +111,22 @@ ContactStudy runContactStudy(int steps, int threads,
         md << "\n"
            << (std::string(name) != "overlap_recovery" ? "Holds" : "Recovers gently")
            << " with: " << (passed.empty() ? "none" : passed) << ".\n\n";
+        if (std::string(name) == "overlap_recovery") {
+            // Solver2D's relax row where the overshoot it removes shows: soft contacts push
+            // the overlapping boxes apart with a biased velocity, which the warm start carries
+            // into the next substeps unless a relax sweep takes it away again.
+            Observation o;
+            o.algorithm = "Solver2D (Catto 2024), on overshoot";
+            o.claim = "relaxation improves the simulation quality dramatically";
+            o.test =
+                "overlap_recovery (a pyramid created a quarter of a box deep), soft contacts at 4 "
+                "substeps of 1 velocity iteration, with 1 relax iteration and with none; confirmed "
+                "if relax at least halves the median pop-out speed (the fastest body)";
+            o.result = "fastest body " + num("%.3g", fastestRelaxed) + " m/s with relax, " +
+                       num("%.3g", fastestBare) + " m/s without";
+            o.verdict = fastestRelaxed <= 0.5 * fastestBare ? "confirmed" : "not confirmed";
+            out.verdicts.push_back(o);
+        }
     }
     out.markdown = md.str();
     return out;

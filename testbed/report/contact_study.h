@@ -1,19 +1,24 @@
 // The report's study of the contacts' position correction: heavy_stack (six 1 kg boxes under a
 // 100 kg one), light_on_heavy (the same boxes on it) and overlap_recovery (a pyramid created a
 // quarter of a box deep) with every contact correction (NGS, Baumgarte, soft) at 1, 4 and 8
-// substeps of 8 velocity and 3 position iterations, and Box2D v3's soft step of 4 substeps of 1/1;
-// every configuration kTrials perturbed times. The scenes have no joint, so the joints' strategy
-// plays no part.
+// substeps of 8 velocity and 3 position iterations, and Box2D v3's soft step of 4 substeps of 1/1
+// with and without its relax sweep (1/0); every configuration kTrials perturbed times. The scenes
+// have no joint, so the joints' strategy plays no part.
 #pragma once
 
 #include <functional>
 #include <string>
+#include <vector>
+
+#include "report/observations.h"
 
 namespace pivot::report {
 
 struct ContactStudy {
     std::string markdown;  ///< for docs/results.md
     int runs = 0;          ///< runs made, trials counted
+    /// Solver2D's relax row on overlap_recovery, where its overshoot shows.
+    std::vector<Observation> verdicts;
 };
 
 /// Rules, written before the numbers: heavy_stack (and light_on_heavy) holds when the median run's

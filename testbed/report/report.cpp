@@ -274,6 +274,7 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
     const ContactStudy contacts =
         runContactStudy(settings.steps, settings.threads,
                         [&](const std::string& what) { log << "running " << what << "\n"; });
+    observations.insert(observations.end(), contacts.verdicts.begin(), contacts.verdicts.end());
     const ExactBaseline exact =
         runExactBaseline(settings.steps, settings.threads,
                          [&](const std::string& what) { log << "running " << what << "\n"; });
