@@ -191,13 +191,7 @@ struct DistanceJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
-    /// In [0, kMaxIterations]: NGS position sweeps this joint asks for beyond the world's
-    /// (ModifiedNGS and FullNGS; the other strategies ignore it). When an island's shared sweeps
-    /// stop with something still beyond the slop, sweeps over only the joints that asked repeat,
-    /// each joint in as many as it asked for, until they are all within it: a joint that matters
-    /// can be held tighter without every joint of the island paying for it (as Jolt lets a
-    /// constraint raise its own iteration counts). 0, the default: the world's sweeps only.
-    int extraPositionIterations = 0;
+    int extraPositionIterations = 0;  ///< as RevoluteJointDef's
     JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far its
     /// length is outside what the joint allows (World::jointSeparation).
@@ -232,13 +226,7 @@ struct PulleyJointDef {
     std::optional<float> lengthB;
     std::optional<PositionSolver> positionSolver;
     std::optional<float> biasFactor;
-    /// In [0, kMaxIterations]: NGS position sweeps this joint asks for beyond the world's
-    /// (ModifiedNGS and FullNGS; the other strategies ignore it). When an island's shared sweeps
-    /// stop with something still beyond the slop, sweeps over only the joints that asked repeat,
-    /// each joint in as many as it asked for, until they are all within it: a joint that matters
-    /// can be held tighter without every joint of the island paying for it (as Jolt lets a
-    /// constraint raise its own iteration counts). 0, the default: the world's sweeps only.
-    int extraPositionIterations = 0;
+    int extraPositionIterations = 0;  ///< as RevoluteJointDef's
     JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation).
     std::optional<float> letGoSeparation;
@@ -296,13 +284,7 @@ struct PrismaticJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
-    /// In [0, kMaxIterations]: NGS position sweeps this joint asks for beyond the world's
-    /// (ModifiedNGS and FullNGS; the other strategies ignore it). When an island's shared sweeps
-    /// stop with something still beyond the slop, sweeps over only the joints that asked repeat,
-    /// each joint in as many as it asked for, until they are all within it: a joint that matters
-    /// can be held tighter without every joint of the island paying for it (as Jolt lets a
-    /// constraint raise its own iteration counts). 0, the default: the world's sweeps only.
-    int extraPositionIterations = 0;
+    int extraPositionIterations = 0;  ///< as RevoluteJointDef's
     JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far anchor B
     /// is off the axis line, and beyond a reached limit (World::jointSeparation).
@@ -346,13 +328,7 @@ struct WeldJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
-    /// In [0, kMaxIterations]: NGS position sweeps this joint asks for beyond the world's
-    /// (ModifiedNGS and FullNGS; the other strategies ignore it). When an island's shared sweeps
-    /// stop with something still beyond the slop, sweeps over only the joints that asked repeat,
-    /// each joint in as many as it asked for, until they are all within it: a joint that matters
-    /// can be held tighter without every joint of the island paying for it (as Jolt lets a
-    /// constraint raise its own iteration counts). 0, the default: the world's sweeps only.
-    int extraPositionIterations = 0;
+    int extraPositionIterations = 0;  ///< as RevoluteJointDef's
     JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as |anchorB - anchorA| (0 while the point
     /// is soft: World::jointSeparation).
@@ -398,13 +374,7 @@ struct WheelJointDef {
     std::optional<PositionSolver> positionSolver;
     /// Fraction of the position error corrected, in [0, 1]. Unset: defaultBiasFactor(solver).
     std::optional<float> biasFactor;
-    /// In [0, kMaxIterations]: NGS position sweeps this joint asks for beyond the world's
-    /// (ModifiedNGS and FullNGS; the other strategies ignore it). When an island's shared sweeps
-    /// stop with something still beyond the slop, sweeps over only the joints that asked repeat,
-    /// each joint in as many as it asked for, until they are all within it: a joint that matters
-    /// can be held tighter without every joint of the island paying for it (as Jolt lets a
-    /// constraint raise its own iteration counts). 0, the default: the world's sweeps only.
-    int extraPositionIterations = 0;
+    int extraPositionIterations = 0;  ///< as RevoluteJointDef's
     JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as the joint's separation: how far the
     /// anchor is off the axis line, and beyond a reached limit (World::jointSeparation).
@@ -451,13 +421,7 @@ struct GearJointDef {
     float ratio = 1.0f;
     std::optional<PositionSolver> positionSolver;
     std::optional<float> biasFactor;
-    /// In [0, kMaxIterations]: NGS position sweeps this joint asks for beyond the world's
-    /// (ModifiedNGS and FullNGS; the other strategies ignore it). When an island's shared sweeps
-    /// stop with something still beyond the slop, sweeps over only the joints that asked repeat,
-    /// each joint in as many as it asked for, until they are all within it: a joint that matters
-    /// can be held tighter without every joint of the island paying for it (as Jolt lets a
-    /// constraint raise its own iteration counts). 0, the default: the world's sweeps only.
-    int extraPositionIterations = 0;
+    int extraPositionIterations = 0;  ///< as RevoluteJointDef's
     JointSoftness softness;  ///< SoftStep's and XPBD's softness (unused by the others)
     /// As RevoluteJointDef::letGoSeparation, measured as |C| (World::jointSeparation), in
     /// joint1's units: rad for a revolute joint, m for a prismatic one.
