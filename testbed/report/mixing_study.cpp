@@ -1,5 +1,6 @@
 #include "report/mixing_study.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -14,44 +15,73 @@ namespace pivot::report {
 
 namespace {
 
-struct Setup {
+// A scene of the study and the strategy its joints that matter less would take in a game.
+struct MixingScene {
     const char* name;
-    PositionSolver key;
-    std::optional<PositionSolver> secondary;  // unset: uniform
+    PositionSolver cheap;
+    const char* cheapName;
+};
+
+const MixingScene kScenes[] = {
+    {"ragdoll_pile", PositionSolver::Baumgarte, "Baumgarte"},
+    {"bridge_chains", PositionSolver::Baumgarte, "Baumgarte"},
+    {"rope_load", PositionSolver::Baumgarte, "Baumgarte"},
+    {"vehicle", PositionSolver::SoftStep, "SoftStep"},  // a soft suspension
+};
+
+enum class Kind {
+    FullNGS,  ///< every joint FullNGS
+    Cheap,    ///< every joint the scene's cheap strategy
+    Mixed,    ///< FullNGS key joints, the cheap strategy elsewhere
+};
+
+struct Setup {
+    Kind kind;
     int velocity;
     int position = 3;
     int keyExtra = 0;  // the key joints' extraPositionIterations (the second knob)
 
-    bool mixed() const { return secondary.has_value(); }
+    bool mixed() const { return kind == Kind::Mixed; }
     bool knob() const { return keyExtra > 0; }
+
+    std::string name(const MixingScene& scene) const {
+        const std::string split = std::to_string(velocity) + "/" + std::to_string(position);
+        switch (kind) {
+            case Kind::FullNGS:
+                return "FullNGS " + split +
+                       (knob() ? ", key +" + std::to_string(keyExtra) : std::string());
+            case Kind::Cheap:
+                // Baumgarte has no position phase: only its velocity iterations tell set-ups apart.
+                return std::string(scene.cheapName) + " " +
+                       (scene.cheap == PositionSolver::Baumgarte ? std::to_string(velocity)
+                                                                 : split);
+            case Kind::Mixed:
+                return "mixed " + split;
+        }
+        return {};
+    }
+
+    scenes::SceneOptions options(const MixingScene& scene) const {
+        scenes::SceneOptions options;
+        options.solver = kind == Kind::Cheap ? scene.cheap : PositionSolver::FullNGS;
+        if (mixed()) options.secondarySolver = scene.cheap;
+        options.keyExtraIterations = keyExtra;
+        return options;
+    }
 };
 
 const Setup kSetups[] = {
-    {"FullNGS 2/1", PositionSolver::FullNGS, std::nullopt, 2, 1},
-    {"FullNGS 2/3", PositionSolver::FullNGS, std::nullopt, 2},
-    {"FullNGS 4/3", PositionSolver::FullNGS, std::nullopt, 4},
-    {"FullNGS 8/3", PositionSolver::FullNGS, std::nullopt, 8},
-    {"Baumgarte 8", PositionSolver::Baumgarte, std::nullopt, 8},
-    {"Baumgarte 12", PositionSolver::Baumgarte, std::nullopt, 12},
-    {"Baumgarte 16", PositionSolver::Baumgarte, std::nullopt, 16},
-    {"Baumgarte 24", PositionSolver::Baumgarte, std::nullopt, 24},
-    {"mixed 4/3", PositionSolver::FullNGS, PositionSolver::Baumgarte, 4},
-    {"mixed 8/3", PositionSolver::FullNGS, PositionSolver::Baumgarte, 8},
-    {"FullNGS 2/1, key +2", PositionSolver::FullNGS, std::nullopt, 2, 1, 2},
-    {"FullNGS 2/1, key +5", PositionSolver::FullNGS, std::nullopt, 2, 1, 5},
-    {"FullNGS 4/1, key +2", PositionSolver::FullNGS, std::nullopt, 4, 1, 2},
+    {Kind::FullNGS, 2, 1},    {Kind::FullNGS, 2},       {Kind::FullNGS, 4},
+    {Kind::FullNGS, 8},       {Kind::Cheap, 8},         {Kind::Cheap, 12},
+    {Kind::Cheap, 16},        {Kind::Cheap, 24},        {Kind::Mixed, 4},
+    {Kind::Mixed, 8},         {Kind::FullNGS, 2, 1, 2}, {Kind::FullNGS, 2, 1, 5},
+    {Kind::FullNGS, 4, 1, 2},
 };
-
-scenes::SceneOptions optionsOf(const Setup& s) {
-    scenes::SceneOptions options;
-    options.solver = s.key;
-    options.secondarySolver = s.secondary;
-    options.keyExtraIterations = s.keyExtra;
-    return options;
-}
 
 struct Result {
     const Setup* setup;
+    std::string name;
+    int sideJoints = 0;  // joints that are not key
     std::vector<scenes::RunMetrics> trials;
     scenes::RunMetrics median;
     double jointSolves = 0.0;  // per step, the median run's
@@ -65,32 +95,42 @@ MixingStudy runMixingStudy(int steps, int threads,
     std::ostringstream md;
     md << "## Mixing strategies in one island\n\n"
        << "The seed note's recommendation, measured: scenes with joints that matter (*key*) "
-          "and joints that matter less, a mixed island (FullNGS on the key joints, Baumgarte on "
-          "the rest) against uniform ones of either at several budgets, each the median over "
+          "and joints that matter less, a mixed island (FullNGS on the key joints, a cheap "
+          "strategy on the rest: Baumgarte, or SoftStep for the vehicle's suspension) against "
+          "uniform ones of either at several budgets, each the median over "
        << kTrials
        << " perturbed runs [with their range]. The error is the largest separation of the key "
-          "joints. Cost is *joint solves* per step: each joint once per velocity iteration, an "
-          "NGS joint once more per position sweep the step ran, and once per extra sweep it "
-          "asked for and ran; *us/step* is measured (contacts included). Iterations are "
-          "velocity/position, one substep; *key +n*: the key joints ask for n NGS sweeps more "
+          "joints; the other joints' is shown beside it, to see what they pay. Cost is *joint "
+          "solves* per step: each joint once per velocity iteration, an NGS joint once more per "
+          "position sweep the step ran and once per extra sweep it asked for and ran, a SoftStep "
+          "joint once more per relax sweep; *us/step* is measured (contacts included). "
+          "Iterations are velocity/position, one substep; *key +n*: the key joints ask for n NGS "
+          "sweeps more "
           "than the world's (extraPositionIterations), the second per-joint knob. Rule, set "
           "before the runs: mixing (or the knob) pays on a scene when each mixed island's (each "
           "knob island's) median error is smaller than every plain uniform island's that costs "
           "at most "
        << num("%g", kEqualCostSlack) << " times its joint solves.\n\n";
-    for (const char* name : {"ragdoll_pile", "bridge_chains", "rope_load"}) {
+    for (const MixingScene& scene : kScenes) {
+        const char* name = scene.name;
         if (progress) progress(std::string("mixing: ") + name);
         const scenes::SceneInfo* info = scenes::findScene(name);
         if (!info) throw std::logic_error(std::string("report: no scene ") + name);
         std::vector<Result> results;
         for (const Setup& s : kSetups) {
-            const scenes::SceneOptions options = optionsOf(s);
-            // How many joints run NGS sweeps, and how many there are: the same in every trial.
+            const scenes::SceneOptions options = s.options(scene);
+            // How many joints run NGS sweeps, how many run every position iteration (relax,
+            // pseudo-velocity or XPBD sweeps), and how many there are: the same in every trial.
             scenes::Scene probe = scenes::buildScene(*info, options);
             int ngs = 0;
+            int everySweep = 0;
             const int joints = static_cast<int>(probe.joints.size());
             for (JointId j : probe.joints) {
-                ngs += probe.world->jointPositionSolver(j) == PositionSolver::FullNGS ? 1 : 0;
+                const PositionSolver solver = probe.world->jointPositionSolver(j);
+                const bool isNgs =
+                    solver == PositionSolver::FullNGS || solver == PositionSolver::ModifiedNGS;
+                ngs += isNgs ? 1 : 0;
+                everySweep += !isNgs && solver != PositionSolver::Baumgarte ? 1 : 0;
             }
             scenes::RunSettings settings;
             settings.steps = steps;
@@ -98,24 +138,41 @@ MixingStudy runMixingStudy(int steps, int threads,
             settings.positionIterations = s.position;
             Result r;
             r.setup = &s;
-            r.trials = runTrials(*info, options, settings, threads,
-                                 [](scenes::Scene& scene) { scene.joints = scene.keyJoints; });
+            r.name = s.name(scene);
+            r.sideJoints = joints - static_cast<int>(probe.keyJoints.size());
+            r.trials = runTrials(*info, options, settings, threads, [](scenes::Scene& scene) {
+                for (JointId j : scene.joints) {
+                    if (std::find(scene.keyJoints.begin(), scene.keyJoints.end(), j) ==
+                        scene.keyJoints.end()) {
+                        scene.sideJoints.push_back(j);
+                    }
+                }
+                scene.joints = scene.keyJoints;
+            });
             out.runs += static_cast<int>(r.trials.size());
             r.median = medianMetrics(r.trials);
             r.jointSolves = double(s.velocity) * joints +
                             double(ngs) * r.median.meanPositionIterations +
+                            double(everySweep) * s.position +
                             r.median.meanExtraPositionSolves;
             results.push_back(std::move(r));
         }
         md << "### " << name << "\n\n"
            << info->description << ".\n\n"
-           << "| set-up | joint solves | us/step | key max sep (m) | torn |\n"
-           << "| --- | ---: | ---: | ---: | ---: |\n";
+           << "| set-up | joint solves | us/step | key max sep (m) | others' max sep (m) | torn "
+              "|\n"
+           << "| --- | ---: | ---: | ---: | ---: | ---: |\n";
         for (const Result& r : results) {
-            md << "| " << r.setup->name << " | " << num("%.0f", r.jointSolves) << " | "
+            md << "| " << r.name << " | " << num("%.0f", r.jointSolves) << " | "
                << num("%.1f", r.median.microsecondsPerStep) << " | "
                << spreadOf(r.trials, [](const scenes::RunMetrics& t) { return t.maxSeparation; })
                       .text()
+               << " | "
+               << (r.sideJoints == 0
+                       ? std::string("-")
+                       : spreadOf(r.trials,
+                                  [](const scenes::RunMetrics& t) { return t.maxSideSeparation; })
+                             .text())
                << " | " << tornCount(r.trials) << "/" << kTrials << " |\n";
         }
         // The verdicts: each mixed island, then each island whose key joints ask for extra
@@ -131,13 +188,13 @@ MixingStudy runMixingStudy(int steps, int threads,
                     if (uniform.jointSolves > kEqualCostSlack * candidate.jointSolves) continue;
                     if (!(candidate.median.maxSeparation < uniform.median.maxSeparation)) {
                         rivals += std::string(rivals.empty() ? "" : ", ") +
-                                  uniform.setup->name + " (" +
+                                  uniform.name + " (" +
                                   num("%.3g", uniform.median.maxSeparation) + " m at " +
                                   num("%.0f", uniform.jointSolves) + ")";
                     }
                 }
                 pays = pays && rivals.empty();
-                result += std::string(result.empty() ? "" : "; ") + candidate.setup->name + ": " +
+                result += std::string(result.empty() ? "" : "; ") + candidate.name + ": " +
                           num("%.3g", candidate.median.maxSeparation) + " m at " +
                           num("%.0f", candidate.jointSolves) + " joint solves" +
                           (rivals.empty() ? ", no uniform island as cheap does as well"
@@ -150,7 +207,8 @@ MixingStudy runMixingStudy(int steps, int threads,
             o.test = std::string(name) + ": the key joints' median largest separation of each " +
                      (knob ? "island whose key joints ask for extra NGS sweeps (FullNGS "
                              "throughout)"
-                           : "mixed island (FullNGS key joints, Baumgarte elsewhere)") +
+                           : "mixed island (FullNGS key joints, " +
+                                 std::string(scene.cheapName) + " elsewhere)") +
                      " against the plain uniform islands costing at most " +
                      num("%g", kEqualCostSlack) +
                      " times its joint solves; confirmed if every one is ahead of all of them";

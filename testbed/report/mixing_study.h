@@ -1,16 +1,17 @@
 // The report's test of the seed note's recommendation itself: choose the position solver per
 // joint. On scenes with joints that matter and joints that matter less (ragdoll_pile,
-// bridge_chains, rope_load: scenes/mixing_scenes.cpp), a mixed island (FullNGS on the key
-// joints, Baumgarte on the rest) against uniform islands of either at several budgets, each
+// bridge_chains, rope_load, vehicle: scenes/mixing_scenes.cpp), a mixed island (FullNGS on the
+// key joints, a cheap strategy on the rest: Baumgarte, or SoftStep on the vehicle's suspension)
+// against uniform islands of either at several budgets, each
 // kTrials perturbed times: the key joints' error against the cost. And the second per-joint
 // knob the same way: a FullNGS island whose key joints ask for extra NGS sweeps
 // (extraPositionIterations) against the plain uniform islands.
 //
 // Cost is counted in joint solves per step, what each strategy actually does: every joint solves
 // once per velocity iteration, and an NGS joint once more per position sweep the step ran (its
-// early exit counted) and once per extra sweep it ran (StepStats::extraPositionSolves);
-// Baumgarte joints have no position phase. Measured microseconds are shown beside it (they
-// include the contacts, which every set-up shares).
+// early exit counted) and once per extra sweep it ran (StepStats::extraPositionSolves); a
+// SoftStep joint once more per relax sweep; Baumgarte joints have no position phase. Measured
+// microseconds are shown beside it (they include the contacts, which every set-up shares).
 #pragma once
 
 #include <functional>

@@ -150,6 +150,10 @@ RunMetrics runScene(Scene& scene, const RunSettings& settings,
         sumSquares += s.sumSquares;
         samples += s.count;
         m.finalSeparation = s.max;
+        for (JointId id : scene.sideJoints) {
+            const double side = world.jointSeparation(id);
+            if (!(side <= m.maxSideSeparation)) m.maxSideSeparation = side;  // NaN wins
+        }
         if (i >= settleFrom && !(s.max <= m.settledSeparation)) m.settledSeparation = s.max;
         if (!(s.max <= kLinearSlop)) lastStepApart = i;
         m.maxLimitViolation = std::max(m.maxLimitViolation, limitViolation(scene));

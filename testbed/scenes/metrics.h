@@ -46,6 +46,7 @@ struct RunSettings {
 struct RunMetrics {
     int steps = 0;               ///< steps taken (a run stops at the first blown-up step)
     double maxSeparation = 0;    ///< m, over all joints and steps
+    double maxSideSeparation = 0;  ///< m, over Scene::sideJoints and all steps
     double rmsSeparation = 0;    ///< m, over all joints and steps
     double finalSeparation = 0;  ///< m, largest over joints after the last step
     /// m, largest over joints and the last kSettleSeconds of the run (the whole run if shorter)

@@ -117,4 +117,72 @@ void buildRopeLoad(Scene& scene, const SceneOptions& options) {
     scene.disturbanceEndStep = 0;  // the release
 }
 
+
+// A 36 kg car whose wheels turn on pins under light hubs, each hub on a sprung prismatic
+// suspension (4 Hz, damping ratio 0.7, travel -0.3 to +0.15 m), both wheels driven (25 rad/s, at
+// most 150 N m) back and forth between x = -14 and 14 m over a 0.2 m bump every 3 m. Key: the
+// two axles, which carry the car; secondary: the suspensions, which a game may let give.
+void buildVehicle(Scene& scene, const SceneOptions& options) {
+    World& world = *scene.world;
+    keepContinuousOffForJoints(world);
+    const BodyId ground = createGround(world);
+    ShapeDef bump;
+    bump.density = 0.0f;
+    bump.friction = 0.9f;
+    for (int i = -6; i <= 6; ++i) {
+        world.createShape(ground, bump,
+                          Polygon::box(0.6f, 0.2f, {3.0f * static_cast<float>(i), 0.0f}, 0.0f));
+    }
+    BodyDef def;
+    def.type = BodyType::Dynamic;
+    def.position = {0.0f, 1.6f};
+    const BodyId chassis = world.createBody(def);
+    ShapeDef body;
+    body.density = 20.0f;  // 36 kg
+    world.createShape(chassis, body, Polygon::box(1.5f, 0.3f));
+    scene.bodies.push_back(chassis);
+
+    ShapeDef hubShape;
+    hubShape.density = 5.0f;  // 0.35 kg
+    ShapeDef tyre;
+    tyre.density = 4.0f;  // 2.5 kg
+    tyre.friction = 0.9f;
+    std::vector<JointId> axles;
+    for (const float x : {-1.1f, 1.1f}) {
+        const Vec2 centre{x, 0.75f};
+        def.position = centre;
+        const BodyId hub = world.createBody(def);
+        world.createShape(hub, hubShape, Circle{{0.0f, 0.0f}, 0.15f});
+        const BodyId wheel = world.createBody(def);
+        world.createShape(wheel, tyre, Circle{{0.0f, 0.0f}, 0.45f});
+        scene.bodies.push_back(hub);
+        scene.bodies.push_back(wheel);
+
+        PrismaticJointDef suspension =
+            PrismaticJointDef::atWorldAnchor(chassis, hub, centre, {0.0f, 1.0f});
+        suspension.spring = {true, 4.0f, 0.7f};
+        suspension.limit = {true, -0.3f, 0.15f};
+        suspension.positionSolver = options.secondarySolver.value_or(options.solver);
+        suspension.biasFactor =
+            options.secondarySolver ? std::optional<float>() : options.biasFactor;
+        scene.joints.push_back(world.createJoint(suspension));
+
+        RevoluteJointDef axle = options.jointAt(hub, wheel, centre);
+        axle.motor = {true, -25.0f, 150.0f};
+        const JointId joint = world.createJoint(axle);
+        scene.joints.push_back(joint);
+        scene.keyJoints.push_back(joint);
+        axles.push_back(joint);
+    }
+    scene.beforeStep = [axles, chassis](Scene& s, int) {
+        JointMotor motor = s.world->jointMotor(axles.front());
+        const float x = s.world->bodyPosition(chassis).x;
+        // A negative wheel speed (clockwise) drives the car to the right.
+        if ((x > 14.0f && motor.speed < 0.0f) || (x < -14.0f && motor.speed > 0.0f)) {
+            motor.speed = -motor.speed;
+            for (const JointId axle : axles) s.world->setJointMotor(axle, motor);
+        }
+    };
+}
+
 }  // namespace pivot::scenes

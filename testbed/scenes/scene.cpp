@@ -141,6 +141,10 @@ const std::vector<SceneInfo>& allScenes() {
         {"bridge_chains",
          "the bridge with a swinging chain of six links hanging from every fifth plank",
          buildBridgeChains},
+        {"vehicle",
+         "a car on pinned wheels under hubs that slide on sprung prismatic suspensions, driven "
+         "back and forth over bumps",
+         buildVehicle},
         {"far_chain", "the chain 30 km from the origin, where floats are 2 mm apart",
          buildFarChain},
         {"ramps",

@@ -72,6 +72,9 @@ struct Scene {
     /// The joints that matter, whose error the mixing study measures (the scenes built for it
     /// name them; empty elsewhere).
     std::vector<JointId> keyJoints;
+    /// Joints measured apart from `joints` (RunMetrics::maxSideSeparation): the mixing study
+    /// puts the joints that matter less here, to show what they pay.
+    std::vector<JointId> sideJoints;
 };
 
 /// A Scene::beforeStep that reverses a revolute or wheel joint's motor every `steps` steps.
@@ -141,6 +144,7 @@ void buildMassRatio(Scene& scene, const SceneOptions& options);
 void buildRagdollPile(Scene& scene, const SceneOptions& options);
 void buildBridgeChains(Scene& scene, const SceneOptions& options);
 void buildRopeLoad(Scene& scene, const SceneOptions& options);
+void buildVehicle(Scene& scene, const SceneOptions& options);
 /// One ragdoll (ragdoll.cpp's) at `origin`, thrown with `velocity` and `spin` about its chest,
 /// its parts in collision group `group` (negative: they never collide with each other). Its neck,
 /// shoulders and hips are key joints on scene.keyJoints; elbows and knees are secondary.
