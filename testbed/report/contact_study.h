@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "report/observations.h"
+#include "report/raw_runs.h"
 
 namespace pivot::report {
 
@@ -19,6 +20,7 @@ struct ContactStudy {
     int runs = 0;          ///< runs made, trials counted
     /// Solver2D's relax row on overlap_recovery, where its overshoot shows.
     std::vector<Observation> verdicts;
+    RawRuns raw;  ///< every trial (docs/results/runs-contacts.csv)
 };
 
 /// Rules, written before the numbers: heavy_stack (and light_on_heavy) holds when the median run's

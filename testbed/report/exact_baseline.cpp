@@ -281,6 +281,8 @@ ExactBaseline runExactBaseline(int steps, int threads,
        << "| scene | strategy | from exact (m) | max sep (m) | blew up | steps without an exact "
           "answer |\n"
        << "| --- | --- | --- | --- | ---: | ---: |\n";
+    out.csv =
+        "scene,solver,seed,from_exact_m,max_separation_m,blew_up,steps_without_exact\n";
     for (const std::string& name : exactBaselineScenes()) {
         if (progress) progress("exact baseline: " + name);
         const scenes::SceneInfo* info = scenes::findScene(name);
@@ -295,6 +297,13 @@ ExactBaseline runExactBaseline(int steps, int threads,
             std::vector<double> worst, separation;
             int blewUp = 0;
             long unsolved = 0;
+            for (std::size_t t = 0; t < trials.size(); ++t) {
+                out.csv += name + ',' + positionSolverName(solver) + ',' +
+                           std::to_string(trialSeed(static_cast<int>(t))) + ',' + num("%.6g", trials[t].worst) + ',' +
+                           num("%.6g", trials[t].worstSeparation) + ',' +
+                           (trials[t].blewUp ? "1" : "0") + ',' +
+                           std::to_string(trials[t].unsolved) + '\n';
+            }
             for (const Trial& t : trials) {
                 worst.push_back(t.worst);
                 separation.push_back(t.worstSeparation);

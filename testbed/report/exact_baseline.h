@@ -24,6 +24,8 @@ namespace pivot::report {
 struct ExactBaseline {
     std::string markdown;
     int runs = 0;
+    /// Every trial: scene, strategy, seed and its figures (docs/results/runs-exact.csv).
+    std::string csv;
 };
 
 /// The scenes of the baseline (revolute pins without limits, at most a few dozen bodies).

@@ -150,6 +150,11 @@ MixingStudy runMixingStudy(int steps, int threads,
                 scene.joints = scene.keyJoints;
             });
             out.runs += static_cast<int>(r.trials.size());
+            out.raw.add({name, r.name,
+                         s.kind == Kind::Mixed ? std::string("mixed")
+                                               : positionSolverName(options.solver),
+                         options.contactCorrection, -1.0f, 1, s.velocity, s.position},
+                        r.trials);
             r.median = medianMetrics(r.trials);
             r.jointSolves = double(s.velocity) * joints +
                             double(ngs) * r.median.meanPositionIterations +

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "report/observations.h"
+#include "report/raw_runs.h"
 
 namespace pivot::report {
 
@@ -26,6 +27,7 @@ struct MixingStudy {
     std::string markdown;
     std::vector<Observation> verdicts;  ///< two per scene: mixing, then extra iterations
     int runs = 0;
+    RawRuns raw;  ///< every trial (docs/results/runs-mixing.csv)
 };
 
 /// Rule, written before the numbers: mixing pays on a scene when each mixed island's median

@@ -141,3 +141,21 @@ TEST(ReportCheck, MasksTimingsAndNothingElse) {
     EXPECT_EQ(maskTimings("This page took 4 s to generate"),
               maskTimings("This page took 3 s to generate"));
 }
+
+// The raw runs' CSVs: the last column, us_per_step, is masked; every other column is compared,
+// quoted set-up names with commas included.
+TEST(ReportCheck, MasksTheLastColumnOfARunsCsv) {
+    using pivot::report::maskCsvTimings;
+    const std::string runs = "scene,setup,max_separation_m,us_per_step\n"
+                             "rope,\"FullNGS 2/1, key +2\",0.012,10.6\n";
+    const std::string slower = "scene,setup,max_separation_m,us_per_step\n"
+                               "rope,\"FullNGS 2/1, key +2\",0.012,11.9\n";
+    const std::string apart = "scene,setup,max_separation_m,us_per_step\n"
+                              "rope,\"FullNGS 2/1, key +2\",0.013,10.6\n";
+    EXPECT_EQ(maskCsvTimings(runs), maskCsvTimings(slower));
+    EXPECT_NE(maskCsvTimings(runs), maskCsvTimings(apart));
+    // Without a timing column nothing is masked.
+    const std::string untimed = "scene,max_separation_m\nrope,0.012\n";
+    const std::string untimedApart = "scene,max_separation_m\nrope,0.013\n";
+    EXPECT_NE(maskCsvTimings(untimed), maskCsvTimings(untimedApart));
+}
