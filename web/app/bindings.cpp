@@ -4,11 +4,14 @@
 // returns 0: the page shows the message, and the world is as it was.
 #include <emscripten/emscripten.h>
 
+#include <cmath>
+#include <cstdint>
 #include <exception>
 #include <limits>
 #include <optional>
 #include <string>
 
+#include "scenes/metrics.h"
 #include "scenes/scene.h"
 #include "web_session.h"
 
@@ -235,6 +238,40 @@ EMSCRIPTEN_KEEPALIVE double pv_stat(int which) {
         case 11: return session.settings().positionIterations;
         default: return 0.0;
     }
+}
+
+/// One run of the Pareto study's (`pivot-testbed study`, testbed/report/pareto_study.cpp), apart
+/// from the page's world: scene `scene` with every joint on `solver`, perturbation `seed`, NGS
+/// contacts, `substeps` x velocity/position iterations, 600 steps at 60 Hz. Returns its largest
+/// joint separation (m), negated when the run tore (a joint still over 1 m apart at the end, or
+/// blown up); NaN, with the error set, for a refused setting.
+EMSCRIPTEN_KEEPALIVE double pv_study_run(int scene, int solver, int substeps,
+                                         int velocityIterations, int positionIterations,
+                                         int seed) {
+    double result = kNoValue;
+    guarded([&] {
+        if (scene < 0 || scene >= pv_scene_count() || !validSolver(solver) || seed < 0) {
+            session.setError("unknown scene or solver, or a negative seed");
+            return false;
+        }
+        scenes::SceneOptions options;
+        options.solver = static_cast<PositionSolver>(solver);
+        options.substepCount = substeps;
+        options.perturbation = static_cast<std::uint32_t>(seed);
+        scenes::Scene run =
+            scenes::buildScene(scenes::allScenes()[static_cast<std::size_t>(scene)], options);
+        scenes::RunSettings settings;
+        settings.steps = 600;
+        settings.velocityIterations = velocityIterations;
+        settings.positionIterations = positionIterations;
+        const scenes::RunMetrics m = scenes::runScene(run, settings);
+        // A blown-up run's separation may be NaN, which is the refusal's value: -infinity then.
+        result = !m.torn() ? m.maxSeparation
+                 : std::isfinite(m.maxSeparation) ? -m.maxSeparation
+                                                  : -std::numeric_limits<double>::infinity();
+        return true;
+    });
+    return result;
 }
 
 }  // extern "C"

@@ -33,11 +33,15 @@ class App {
       jointBias: c('pv_joint_bias', n, [n]), setJointBias: c('pv_set_joint_bias', n, [n, n]),
       jointHertz: c('pv_joint_hertz', n, [n]), setJointHertz: c('pv_set_joint_hertz', n, [n, n]),
       largestSeparation: c('pv_largest_separation', n, [n]), stat: c('pv_stat', n, [n]),
+      studyRun: c('pv_study_run', n, [n, n, n, n, n, n]),
     };
     this.solverNames = [];
     for (let s = 0; s < this.api.solverCount(); ++s) this.solverNames.push(this.api.solverName(s));
     this.view = new WorldView($('world'));
     this.plot = new SeparationPlot($('plot'), this.solverNames);
+    this.front = new FrontPanel(this.api, this.solverNames, {
+      panel: $('front-panel'), canvas: $('front'), text: $('front-config'),
+      measure: $('front-measure'), result: $('front-measured') });
     this.paused = false;
     this.selectedJoint = -1;
     this.pointer = null;  // the hand's target while the user drags, world coordinates
@@ -71,8 +75,10 @@ class App {
                       'script']) {
       $(id).addEventListener('change', () => {
         if (!this.check(this.api.setSettings(...this.settings()))) this.showSettings();
+        this.showFront();
       });
     }
+    $('solver').addEventListener('change', () => this.showFront());
     $('pause').addEventListener('click', () => this.setPaused(!this.paused));
     $('single-step').addEventListener('click', () => { this.setPaused(true); this.stepOnce(); });
     $('joint-solver').addEventListener('change', () => {
@@ -161,7 +167,10 @@ class App {
   load() {
     const ok = this.api.load(Number($('scene').value), ...this.settings());
     if (!this.check(ok)) return false;
-    $('scene-description').textContent = this.api.sceneDescription(Number($('scene').value));
+    const scene = Number($('scene').value);
+    $('scene-description').textContent = this.api.sceneDescription(scene);
+    this.front.setScene(scene, this.api.sceneName(scene));
+    this.showFront();
     this.pointer = null;
     this.selectJoint(-1);
     this.plot.clear();
@@ -169,6 +178,13 @@ class App {
     this.view.fit(this.drawList(count), count);
     this.owed = 0;
     return true;
+  }
+
+  // The form's solver, substeps and iterations on the study's front (for its scenes).
+  showFront() {
+    this.front.update({ solver: Number($('solver').value), substeps: Number($('substeps').value),
+                        velocity: Number($('velocity-iterations').value),
+                        position: Number($('position-iterations').value) });
   }
 
   drawList(count) {
