@@ -130,6 +130,10 @@ const std::vector<SceneInfo>& allScenes() {
          "30 planks of 5 kg pinned end to end holding a 120 kg ball (24 times a link), released "
          "level",
          buildRopeLoad},
+        {"joint_grid",
+         "12 x 12 circles each pinned to its neighbours above and on its left, hanging from the "
+         "middle of the top row",
+         buildJointGrid},
         {"mass_ratio",
          "20 links released level holding a ball of 3,000 times a link's mass by its rim",
          buildMassRatio},

@@ -145,6 +145,7 @@ void buildRagdollPile(Scene& scene, const SceneOptions& options);
 void buildBridgeChains(Scene& scene, const SceneOptions& options);
 void buildRopeLoad(Scene& scene, const SceneOptions& options);
 void buildVehicle(Scene& scene, const SceneOptions& options);
+void buildJointGrid(Scene& scene, const SceneOptions& options);
 /// One ragdoll (ragdoll.cpp's) at `origin`, thrown with `velocity` and `spin` about its chest,
 /// its parts in collision group `group` (negative: they never collide with each other). Its neck,
 /// shoulders and hips are key joints on scene.keyJoints; elbows and knees are secondary.

@@ -2,6 +2,7 @@
 // 1 m apart, and one holding a ball about 600 times heavier than a link. Both are 40 links
 // (boxes 1 x 0.2 m, density 1: 0.2 kg) hung from a static body at (0, 45) and released
 // horizontally; neither touches anything.
+#include "parts.h"
 #include "scene.h"
 
 namespace pivot::scenes {
@@ -98,6 +99,41 @@ void buildBallChain(Scene& scene, const SceneOptions& options) {
         previous = body;
     }
     scene.disturbanceEndStep = 0;  // the release is the disturbance
+}
+
+// Solver2D's joint grid (Box2D v3's joint_grid benchmark) at a size the report can run nine
+// times per strategy: 12 x 12 circles (0.4 m, density 1) 1 m apart, each pinned to its neighbours
+// above and on its left, hanging from the three middle bodies of its top row (static), released
+// at rest. It sags under its own weight and its free corners swing in; every body is held by up
+// to four pins pulling different ways. The full 100 x 100 grid is the benchmark's.
+void buildJointGrid(Scene& scene, const SceneOptions& options) {
+    World& world = *scene.world;
+    JointGridSpec spec;
+    spec.size = 12;
+    spec.pinnedHalfWidth = 1;
+    const Vec2 topLeft{-5.5f, 20.0f};
+    std::vector<BodyId> bodies(static_cast<std::size_t>(spec.size * spec.size));
+    ShapeDef shape;
+    shape.filter = {kGridCategory, static_cast<std::uint16_t>(0xFFFF & ~kGridCategory), 0};
+    const Circle circle{{0.0f, 0.0f}, 0.4f};
+    layJointGrid(
+        spec,
+        [&](int index, Vec2 position, bool pinned) {
+            BodyDef def;
+            def.type = pinned ? BodyType::Static : BodyType::Dynamic;
+            def.position = topLeft + position;
+            const BodyId body = world.createBody(def);
+            shape.density = pinned ? 0.0f : 1.0f;
+            world.createShape(body, shape, circle);
+            bodies[static_cast<std::size_t>(index)] = body;
+            if (!pinned) scene.bodies.push_back(body);
+        },
+        [&](int a, int b, Vec2 anchor) {
+            scene.joints.push_back(world.createJoint(options.jointAt(
+                bodies[static_cast<std::size_t>(a)], bodies[static_cast<std::size_t>(b)],
+                topLeft + anchor)));
+        });
+    scene.origin = topLeft + Vec2{5.5f, -5.5f};
 }
 
 }  // namespace pivot::scenes

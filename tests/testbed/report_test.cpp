@@ -30,6 +30,17 @@ int countColumns(const std::string& row) {
     return bars - 1;
 }
 
+// Fields of a CSV row; a quoted field may hold commas.
+int countCsvFields(const std::string& row) {
+    int fields = 1;
+    bool quoted = false;
+    for (char c : row) {
+        if (c == '"') quoted = !quoted;
+        fields += c == ',' && !quoted;
+    }
+    return fields;
+}
+
 }  // namespace
 
 TEST(Report, GeneratesWellFormedMarkdownAndSvg) {
@@ -78,8 +89,25 @@ TEST(Report, GeneratesWellFormedMarkdownAndSvg) {
     EXPECT_GT(rows, 100);
     EXPECT_GT(images, 20);
 
-    int svgs = 0;
+    int svgs = 0, csvs = 0;
     for (const auto& entry : fs::directory_iterator(dir / "results")) {
+        if (entry.path().extension() == ".csv") {
+            // Every run's CSV: each row as many fields as the header (quoted fields may hold
+            // commas), and every number finite.
+            std::istringstream csv(readFile(entry.path()));
+            std::string row;
+            int fields = -1, count = 0;
+            while (std::getline(csv, row)) {
+                if (fields < 0) fields = countCsvFields(row);
+                EXPECT_EQ(countCsvFields(row), fields) << entry.path() << ": " << row;
+                EXPECT_EQ(row.find("nan"), std::string::npos) << entry.path() << ": " << row;
+                EXPECT_EQ(row.find("inf"), std::string::npos) << entry.path() << ": " << row;
+                ++count;
+            }
+            EXPECT_GT(count, 1) << entry.path();
+            ++csvs;
+            continue;
+        }
         std::string svg = readFile(entry.path());
         std::string problem;
         EXPECT_TRUE(report::isWellFormedXml(svg, &problem)) << entry.path() << ": " << problem;
@@ -88,6 +116,7 @@ TEST(Report, GeneratesWellFormedMarkdownAndSvg) {
         ++svgs;
     }
     EXPECT_GT(svgs, 20);
+    EXPECT_EQ(csvs, 5);  // runs-{scenes,substeps,contacts,mixing,exact}.csv
 
     const std::string pc = readFile(dir / "position-correction.md");
     EXPECT_EQ(pc.find("stale"), std::string::npos);
