@@ -9,6 +9,6 @@ export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
 # The engine and scenes only: no tests, no Box2D. Exceptions on everywhere, so that the engine's
 # refusals (pivot::Error) reach the page's calls instead of aborting.
 emcmake cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS=-fexceptions \
-    -DPIVOT_BUILD_TESTS=OFF -DPIVOT_BUILD_TESTBED=ON -DPIVOT_BUILD_WEB=ON > /dev/null
+    -DPIVOT_BUILD_TESTS=OFF -DPIVOT_BUILD_TESTBED=OFF -DPIVOT_BUILD_WEB=ON > /dev/null
 cmake --build "$build" --target pivot-web
 echo "the page: $build/web/site/index.html"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "box2d/box2d_scenes.h"
+#include "scenes/box2d/box2d_scenes.h"
 #include "scenes/metrics.h"
 #include "scenes/scene.h"
 

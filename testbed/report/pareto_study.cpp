@@ -208,7 +208,7 @@ std::string generateParetoStudy(const ParetoSettings& settings, std::ostream& lo
           "x velocity iterations {1, 2, 4, 8} x position iterations {0, 1, 3} (Baumgarte, "
           "which has no position phase, at 0 only), NGS contacts, each configuration "
        << kTrials
-       << " times with its own perturbation (`testbed/scenes/perturbation.h`). The error is "
+       << " times with its own perturbation (`scenes/perturbation.h`). The error is "
           "the median over those runs of the largest joint separation over the run; a run is "
           "*torn* when a joint is still over "
        << num("%g", scenes::kTornSeparation) << " m apart in its last "

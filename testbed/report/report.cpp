@@ -208,7 +208,7 @@ std::string generateReport(const ReportSettings& settings, std::ostream& log) {
        << ": gravity tilted and scaled, and every body's initial velocity scaled, each by up "
           "to "
        << num("%g", scenes::kPerturbation)
-       << " relative; `testbed/scenes/perturbation.h`), and every figure is the median over "
+       << " relative; `scenes/perturbation.h`), and every figure is the median over "
           "those runs; *max sep* also gives their range. Microseconds per step depend on the "
           "machine: this run: "
        << machineName() << ", " << todayUtc()

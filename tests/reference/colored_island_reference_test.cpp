@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "box2d/parts.h"
+#include "scenes/box2d/parts.h"
 #include "islands/island_schedule.h"
 #include "pivot/pivot.h"
 #include "scenes/parts.h"

@@ -1,4 +1,4 @@
-// The browser testbed's simulation side: one testbed scene (testbed/scenes, the very code the
+// The browser testbed's simulation side: one testbed scene (scenes, the very code the
 // headless testbed and the report run), stepped one 1/60 s step per call, with the page's hand
 // (a mouse joint), its chosen settings, per-joint solver changes, and the world drawn into a
 // flat list of numbers the page paints (web/page/app.js reads it: see DrawList).

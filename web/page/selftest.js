@@ -59,7 +59,7 @@
     choose('scene', index);  // loads it
   }
 
-  // The testbed's drag (testbed/scenes/drag.cpp): grab the ball at rest 5 m below the pivot,
+  // The testbed's drag (scenes/drag.cpp): grab the ball at rest 5 m below the pivot,
   // then pull it round a 3 m circle whose rate rises to 4 rev/s at 3 s; returns the largest
   // separation of the solver's joints.
   function whirl(app, solver) {

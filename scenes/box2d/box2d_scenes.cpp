@@ -1,8 +1,8 @@
-#include "box2d/box2d_scenes.h"
+#include "scenes/box2d/box2d_scenes.h"
 
 #include <cmath>
 
-#include "box2d/parts.h"
+#include "scenes/box2d/parts.h"
 
 namespace pivot::box2d {
 
@@ -20,7 +20,7 @@ b2Body* staticBody(b2World& world) {
     return world.CreateBody(&def);
 }
 
-// As testbed/scenes/ground.h: a slab whose top face is y = 0.
+// As scenes/ground.h: a slab whose top face is y = 0.
 b2Body* ground(b2World& world) {
     b2Body* body = staticBody(world);
     b2PolygonShape slab;

@@ -1,4 +1,4 @@
-#include "box2d/parts.h"
+#include "scenes/box2d/parts.h"
 
 namespace pivot::box2d {
 

@@ -1,7 +1,7 @@
 // Parts that the benchmark, the tests and the testbed build into worlds: a shelf, a pyramid of
 // boxes, a jointed grid of circles, chains. Each part's layout is written once here, as
 // a template that hands out positions; the pivot2d builders below and their Box2D twins
-// (testbed/box2d/parts.h) both take it, so the two engines get the same bodies in the same
+// (scenes/box2d/parts.h) both take it, so the two engines get the same bodies in the same
 // creation order.
 #pragma once
 
