@@ -127,6 +127,27 @@ struct World::Impl {
         wakeUp(bodies[joint.bodyA()], islandRevision);
         wakeUp(bodies[joint.bodyB()], islandRevision);
     }
+
+    /// The one path of a joint setter. Refusals come first, in this order, each before anything
+    /// changes: a world that may not change now (requireChange), a joint `find` refuses (its
+    /// slot index, or pivot::Error for a dead, foreign or other-typed id), a value `check`
+    /// refuses (given the joint). Then `apply` changes the joint, and its bodies wake: a joint
+    /// changed by the API acts at once.
+    template <typename Find, typename Check, typename Apply>
+    void setJoint(const char* call, Find&& find, Check&& check, Apply&& apply) {
+        requireChange(call);
+        Joint& joint = joints[find()];
+        check(joint);
+        apply(joint);
+        wakeJointBodies(joint);
+    }
+    /// setJoint for the data of one joint type: `check()` checks the value, `apply(data)` sets it.
+    template <typename T, typename Check, typename Apply>
+    void setJointData(const char* call, JointId id, JointType type, Check&& check, Apply&& apply) {
+        setJoint(
+            call, [&] { return jointIndexOfType(call, id, type); }, [&](const Joint&) { check(); },
+            [&](Joint& joint) { apply(std::get<T>(joint.data)); });
+    }
 };
 
 /// A world id never used before in this process (pivot::Error from `call` once they run out).

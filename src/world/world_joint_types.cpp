@@ -25,16 +25,15 @@ JointLimit World::jointLimit(JointId id) const {
 }
 void World::setJointLimit(JointId id, const JointLimit& limit) {
     const char* call = "World::setJointLimit";
-    impl_->requireChange(call);
-    Joint& j = impl_->joints[impl_->jointIndexOfType(call, id, JointType::Revolute)];
-    checkLimit(call, "limit", limit);
-    RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
-    r.enableLimit = limit.enabled;
-    r.lowerAngle = limit.lower;
-    r.upperAngle = limit.upper;
-    r.lowerImpulse = 0.0f;
-    r.upperImpulse = 0.0f;
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<RevoluteJoint>(
+        call, id, JointType::Revolute, [&] { checkLimit(call, "limit", limit); },
+        [&](RevoluteJoint& r) {
+            r.enableLimit = limit.enabled;
+            r.lowerAngle = limit.lower;
+            r.upperAngle = limit.upper;
+            r.lowerImpulse = 0.0f;
+            r.upperImpulse = 0.0f;
+        });
 }
 JointMotor World::jointMotor(JointId id) const {
     const Joint& j = impl_->joints[impl_->jointIndexOfTypes("World::jointMotor", id,
@@ -47,19 +46,20 @@ JointMotor World::jointMotor(JointId id) const {
 }
 void World::setJointMotor(JointId id, const JointMotor& motor) {
     const char* call = "World::setJointMotor";
-    impl_->requireChange(call);
-    Joint& j =
-        impl_->joints[impl_->jointIndexOfTypes(call, id, JointType::Revolute, JointType::Wheel)];
-    checkMotor(call, "motor", motor);
-    if (auto* wheel = std::get_if<WheelJoint>(&j.data)) {
-        setMotor(*wheel, motor);
-    } else {
-        RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
-        r.enableMotor = motor.enabled;
-        r.motorSpeed = motor.speed;
-        r.maxMotorTorque = motor.maxTorque;
-    }
-    impl_->wakeJointBodies(j);
+    impl_->setJoint(
+        call,
+        [&] { return impl_->jointIndexOfTypes(call, id, JointType::Revolute, JointType::Wheel); },
+        [&](const Joint&) { checkMotor(call, "motor", motor); },
+        [&](Joint& j) {
+            if (auto* wheel = std::get_if<WheelJoint>(&j.data)) {
+                setMotor(*wheel, motor);
+            } else {
+                RevoluteJoint& r = std::get<RevoluteJoint>(j.data);
+                r.enableMotor = motor.enabled;
+                r.motorSpeed = motor.speed;
+                r.maxMotorTorque = motor.maxTorque;
+            }
+        });
 }
 
 float World::distanceJointRestLength(JointId id) const {
@@ -69,12 +69,9 @@ float World::distanceJointRestLength(JointId id) const {
 }
 void World::setDistanceJointRestLength(JointId id, float length) {
     const char* call = "World::setDistanceJointRestLength";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
-    checkRestLength(call, "length", length);
-    Joint& j = impl_->joints[index];
-    std::get<DistanceJoint>(j.data).length = length;
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<DistanceJoint>(
+        call, id, JointType::Distance, [&] { checkRestLength(call, "length", length); },
+        [&](DistanceJoint& d) { d.length = length; });
 }
 LengthLimit World::distanceJointLimit(JointId id) const {
     const DistanceJoint& d =
@@ -83,14 +80,12 @@ LengthLimit World::distanceJointLimit(JointId id) const {
 }
 void World::setDistanceJointLimit(JointId id, const LengthLimit& limit) {
     const char* call = "World::setDistanceJointLimit";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
-    checkLengthLimit(call, "limit", limit);
-    Joint& j = impl_->joints[index];
-    DistanceJoint& d = std::get<DistanceJoint>(j.data);
-    setLimit(d, limit);
-    d.lowerImpulse = d.upperImpulse = 0.0f;
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<DistanceJoint>(
+        call, id, JointType::Distance, [&] { checkLengthLimit(call, "limit", limit); },
+        [&](DistanceJoint& d) {
+            setLimit(d, limit);
+            d.lowerImpulse = d.upperImpulse = 0.0f;
+        });
 }
 JointSpring World::distanceJointSpring(JointId id) const {
     const DistanceJoint& d =
@@ -99,12 +94,9 @@ JointSpring World::distanceJointSpring(JointId id) const {
 }
 void World::setDistanceJointSpring(JointId id, const JointSpring& spring) {
     const char* call = "World::setDistanceJointSpring";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Distance);
-    checkSpring(call, "spring", spring);
-    Joint& j = impl_->joints[index];
-    setSpring(std::get<DistanceJoint>(j.data), spring);
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<DistanceJoint>(
+        call, id, JointType::Distance, [&] { checkSpring(call, "spring", spring); },
+        [&](DistanceJoint& d) { setSpring(d, spring); });
 }
 
 Vec2 World::pulleyJointGroundAnchorA(JointId id) const {
@@ -160,11 +152,10 @@ float World::jointMaxForce(JointId id) const {
 }
 void World::setJointMaxForce(JointId id, float force) {
     const char* call = "World::setJointMaxForce";
-    impl_->requireChange(call);
-    Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
-    requireNonNegative(call, "force", force);
-    *velocityJointLimits(j).force = force;
-    impl_->wakeJointBodies(j);
+    impl_->setJoint(
+        call, [&] { return impl_->velocityJointIndex(call, id); },
+        [&](const Joint&) { requireNonNegative(call, "force", force); },
+        [&](Joint& j) { *velocityJointLimits(j).force = force; });
 }
 float World::jointMaxTorque(JointId id) const {
     Joint& j = impl_->joints[impl_->velocityJointIndex("World::jointMaxTorque", id)];
@@ -172,11 +163,10 @@ float World::jointMaxTorque(JointId id) const {
 }
 void World::setJointMaxTorque(JointId id, float torque) {
     const char* call = "World::setJointMaxTorque";
-    impl_->requireChange(call);
-    Joint& j = impl_->joints[impl_->velocityJointIndex(call, id)];
-    requireNonNegative(call, "torque", torque);
-    *velocityJointLimits(j).torque = torque;
-    impl_->wakeJointBodies(j);
+    impl_->setJoint(
+        call, [&] { return impl_->velocityJointIndex(call, id); },
+        [&](const Joint&) { requireNonNegative(call, "torque", torque); },
+        [&](Joint& j) { *velocityJointLimits(j).torque = torque; });
 }
 
 Vec2 World::motorJointLinearOffset(JointId id) const {
@@ -185,12 +175,9 @@ Vec2 World::motorJointLinearOffset(JointId id) const {
 }
 void World::setMotorJointLinearOffset(JointId id, Vec2 offset) {
     const char* call = "World::setMotorJointLinearOffset";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
-    requireCoordinate(call, "offset", offset);
-    Joint& j = impl_->joints[index];
-    std::get<MotorJoint>(j.data).linearOffset = offset;
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<MotorJoint>(
+        call, id, JointType::Motor, [&] { requireCoordinate(call, "offset", offset); },
+        [&](MotorJoint& m) { m.linearOffset = offset; });
 }
 float World::motorJointAngularOffset(JointId id) const {
     return impl_->jointData<MotorJoint>("World::motorJointAngularOffset", id, JointType::Motor)
@@ -198,12 +185,9 @@ float World::motorJointAngularOffset(JointId id) const {
 }
 void World::setMotorJointAngularOffset(JointId id, float offset) {
     const char* call = "World::setMotorJointAngularOffset";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
-    requireMagnitude(call, "offset", offset);
-    Joint& j = impl_->joints[index];
-    std::get<MotorJoint>(j.data).angularOffset = offset;
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<MotorJoint>(
+        call, id, JointType::Motor, [&] { requireMagnitude(call, "offset", offset); },
+        [&](MotorJoint& m) { m.angularOffset = offset; });
 }
 float World::motorJointCorrectionFactor(JointId id) const {
     return impl_->jointData<MotorJoint>("World::motorJointCorrectionFactor", id, JointType::Motor)
@@ -211,12 +195,9 @@ float World::motorJointCorrectionFactor(JointId id) const {
 }
 void World::setMotorJointCorrectionFactor(JointId id, float factor) {
     const char* call = "World::setMotorJointCorrectionFactor";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Motor);
-    requireInRange(call, "factor", factor, 0.0f, 1.0f);
-    Joint& j = impl_->joints[index];
-    std::get<MotorJoint>(j.data).correctionFactor = factor;
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<MotorJoint>(
+        call, id, JointType::Motor, [&] { requireInRange(call, "factor", factor, 0.0f, 1.0f); },
+        [&](MotorJoint& m) { m.correctionFactor = factor; });
 }
 
 // --- prismatic and wheel joints ----------------------------------------------------------------
@@ -289,12 +270,9 @@ TranslationLimit World::prismaticJointLimit(JointId id) const {
 }
 void World::setPrismaticJointLimit(JointId id, const TranslationLimit& limit) {
     const char* call = "World::setPrismaticJointLimit";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
-    checkTranslationLimit(call, "limit", limit);
-    Joint& j = impl_->joints[index];
-    setLimit(std::get<PrismaticJoint>(j.data), limit);
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<PrismaticJoint>(
+        call, id, JointType::Prismatic, [&] { checkTranslationLimit(call, "limit", limit); },
+        [&](PrismaticJoint& p) { setLimit(p, limit); });
 }
 LinearMotor World::prismaticJointMotor(JointId id) const {
     const PrismaticJoint& p =
@@ -303,12 +281,9 @@ LinearMotor World::prismaticJointMotor(JointId id) const {
 }
 void World::setPrismaticJointMotor(JointId id, const LinearMotor& motor) {
     const char* call = "World::setPrismaticJointMotor";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
-    checkLinearMotor(call, "motor", motor);
-    Joint& j = impl_->joints[index];
-    setMotor(std::get<PrismaticJoint>(j.data), motor);
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<PrismaticJoint>(
+        call, id, JointType::Prismatic, [&] { checkLinearMotor(call, "motor", motor); },
+        [&](PrismaticJoint& p) { setMotor(p, motor); });
 }
 JointSpring World::prismaticJointSpring(JointId id) const {
     const PrismaticJoint& p =
@@ -317,12 +292,9 @@ JointSpring World::prismaticJointSpring(JointId id) const {
 }
 void World::setPrismaticJointSpring(JointId id, const JointSpring& spring) {
     const char* call = "World::setPrismaticJointSpring";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Prismatic);
-    checkSpring(call, "spring", spring);
-    Joint& j = impl_->joints[index];
-    setSpring(std::get<PrismaticJoint>(j.data), spring);
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<PrismaticJoint>(
+        call, id, JointType::Prismatic, [&] { checkSpring(call, "spring", spring); },
+        [&](PrismaticJoint& p) { setSpring(p, spring); });
 }
 float World::prismaticJointMotorForce(JointId id) const {
     const char* call = "World::prismaticJointMotorForce";
@@ -372,21 +344,15 @@ JointSpring World::weldJointAngularSpring(JointId id) const {
 }
 void World::setWeldJointLinearSpring(JointId id, const JointSpring& spring) {
     const char* call = "World::setWeldJointLinearSpring";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
-    checkSpring(call, "spring", spring);
-    Joint& j = impl_->joints[index];
-    std::get<WeldJoint>(j.data).linearSpring = spring;
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<WeldJoint>(
+        call, id, JointType::Weld, [&] { checkSpring(call, "spring", spring); },
+        [&](WeldJoint& w) { w.linearSpring = spring; });
 }
 void World::setWeldJointAngularSpring(JointId id, const JointSpring& spring) {
     const char* call = "World::setWeldJointAngularSpring";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Weld);
-    checkSpring(call, "spring", spring);
-    Joint& j = impl_->joints[index];
-    std::get<WeldJoint>(j.data).angularSpring = spring;
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<WeldJoint>(
+        call, id, JointType::Weld, [&] { checkSpring(call, "spring", spring); },
+        [&](WeldJoint& w) { w.angularSpring = spring; });
 }
 
 // --- wheel joints ----------------------------------------------------------------------------
@@ -396,12 +362,9 @@ JointSpring World::wheelJointSpring(JointId id) const {
 }
 void World::setWheelJointSpring(JointId id, const JointSpring& spring) {
     const char* call = "World::setWheelJointSpring";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
-    checkSpring(call, "spring", spring);
-    Joint& j = impl_->joints[index];
-    std::get<WheelJoint>(j.data).spring = spring;
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<WheelJoint>(
+        call, id, JointType::Wheel, [&] { checkSpring(call, "spring", spring); },
+        [&](WheelJoint& w) { w.spring = spring; });
 }
 TranslationLimit World::wheelJointLimit(JointId id) const {
     const WheelJoint& w =
@@ -410,12 +373,9 @@ TranslationLimit World::wheelJointLimit(JointId id) const {
 }
 void World::setWheelJointLimit(JointId id, const TranslationLimit& limit) {
     const char* call = "World::setWheelJointLimit";
-    impl_->requireChange(call);
-    const std::int32_t index = impl_->jointIndexOfType(call, id, JointType::Wheel);
-    checkTranslationLimit(call, "limit", limit);
-    Joint& j = impl_->joints[index];
-    setLimit(std::get<WheelJoint>(j.data), limit);
-    impl_->wakeJointBodies(j);
+    impl_->setJointData<WheelJoint>(
+        call, id, JointType::Wheel, [&] { checkTranslationLimit(call, "limit", limit); },
+        [&](WheelJoint& w) { setLimit(w, limit); });
 }
 
 }  // namespace pivot

@@ -30,6 +30,33 @@ void requirePositionError(const char* call, std::int32_t index, const Joint& joi
     }
 }
 
+// A joint's breakForce or breakTorque. The island plans read them (the revision bumps), and the
+// joint's bodies wake, as every setter's do: a sleeping joint is not measured.
+void setBreakThreshold(World::Impl& w, const char* call, JointId id, const char* name,
+                       float value, float Joint::*threshold) {
+    w.setJoint(
+        call, [&] { return w.jointIndex(call, id); },
+        [&](const Joint&) { requireNonNegative(call, name, value); },
+        [&](Joint& j) {
+            j.*threshold = value;
+            w.islandRevision.bump();
+        });
+}
+
+// A strategy's setting (solver, bias factor, softness, extra iterations): only a joint with a
+// position error has one, so a velocity-only joint is refused before the value is checked.
+template <typename Check, typename Apply>
+void setStrategySetting(World::Impl& w, const char* call, JointId id, Check&& check,
+                        Apply&& apply) {
+    w.setJoint(
+        call, [&] { return w.jointIndex(call, id); },
+        [&](const Joint& j) {
+            requirePositionError(call, id.index, j);
+            check();
+        },
+        apply);
+}
+
 std::int32_t World::Impl::jointIndexOfType(const char* call, JointId id, JointType type) const {
     const std::int32_t index = jointIndex(call, id);
     const JointType actual = joints[index].type();
@@ -198,25 +225,14 @@ float World::jointBreakForce(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointBreakForce", id)].breakForce;
 }
 void World::setJointBreakForce(JointId id, float force) {
-    const char* call = "World::setJointBreakForce";
-    impl_->requireChange(call);
-    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
-    requireNonNegative(call, "force", force);
-    j.breakForce = force;
-    impl_->islandRevision.bump();  // the island plans read it
-    impl_->wakeJointBodies(j);     // a sleeping joint is not measured
+    setBreakThreshold(*impl_, "World::setJointBreakForce", id, "force", force, &Joint::breakForce);
 }
 float World::jointBreakTorque(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointBreakTorque", id)].breakTorque;
 }
 void World::setJointBreakTorque(JointId id, float torque) {
-    const char* call = "World::setJointBreakTorque";
-    impl_->requireChange(call);
-    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
-    requireNonNegative(call, "torque", torque);
-    j.breakTorque = torque;
-    impl_->islandRevision.bump();  // the island plans read it
-    impl_->wakeJointBodies(j);
+    setBreakThreshold(*impl_, "World::setJointBreakTorque", id, "torque", torque,
+                      &Joint::breakTorque);
 }
 Vec2 World::jointReactionForce(JointId id) const {
     return impl_->joints[impl_->jointIndex("World::jointReactionForce", id)].reactionForce();
@@ -240,13 +256,12 @@ PositionSolver World::jointPositionSolver(JointId id) const {
 
 void World::setJointPositionSolver(JointId id, PositionSolver solver) {
     const char* call = "World::setJointPositionSolver";
-    impl_->requireChange(call);
-    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
-    requirePositionError(call, id.index, j);
-    checkSolver(call, "solver", solver);
-    j.solver = solver;
-    impl_->islandRevision.bump();  // the island plans read it
-    impl_->wakeJointBodies(j);
+    setStrategySetting(
+        *impl_, call, id, [&] { checkSolver(call, "solver", solver); },
+        [&](Joint& j) {
+            j.solver = solver;
+            impl_->islandRevision.bump();  // the island plans read it
+        });
 }
 
 float World::jointBiasFactor(JointId id) const {
@@ -255,13 +270,15 @@ float World::jointBiasFactor(JointId id) const {
 
 void World::setJointBiasFactor(JointId id, std::optional<float> biasFactor) {
     const char* call = "World::setJointBiasFactor";
-    impl_->requireChange(call);
-    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
-    requirePositionError(call, id.index, j);
-    if (biasFactor) checkBiasFactor(call, "biasFactor", *biasFactor);
-    j.hasBiasOverride = biasFactor.has_value();
-    j.biasOverride = biasFactor.value_or(0.0f);
-    impl_->wakeJointBodies(j);
+    setStrategySetting(
+        *impl_, call, id,
+        [&] {
+            if (biasFactor) checkBiasFactor(call, "biasFactor", *biasFactor);
+        },
+        [&](Joint& j) {
+            j.hasBiasOverride = biasFactor.has_value();
+            j.biasOverride = biasFactor.value_or(0.0f);
+        });
 }
 
 int World::jointExtraPositionIterations(JointId id) const {
@@ -271,13 +288,12 @@ int World::jointExtraPositionIterations(JointId id) const {
 
 void World::setJointExtraPositionIterations(JointId id, int count) {
     const char* call = "World::setJointExtraPositionIterations";
-    impl_->requireChange(call);
-    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
-    requirePositionError(call, id.index, j);
-    checkExtraPositionIterations(call, "count", count);
-    j.extraPositionIterations = count;
-    impl_->islandRevision.bump();  // the island plans read it
-    impl_->wakeJointBodies(j);
+    setStrategySetting(
+        *impl_, call, id, [&] { checkExtraPositionIterations(call, "count", count); },
+        [&](Joint& j) {
+            j.extraPositionIterations = count;
+            impl_->islandRevision.bump();  // the island plans read it
+        });
 }
 
 JointSoftness World::jointSoftness(JointId id) const {
@@ -286,12 +302,9 @@ JointSoftness World::jointSoftness(JointId id) const {
 
 void World::setJointSoftness(JointId id, const JointSoftness& softness) {
     const char* call = "World::setJointSoftness";
-    impl_->requireChange(call);
-    Joint& j = impl_->joints[impl_->jointIndex(call, id)];
-    requirePositionError(call, id.index, j);
-    checkSoftness(call, "softness", softness);
-    j.softness = softness;
-    impl_->wakeJointBodies(j);
+    setStrategySetting(
+        *impl_, call, id, [&] { checkSoftness(call, "softness", softness); },
+        [&](Joint& j) { j.softness = softness; });
 }
 
 std::uint64_t World::jointUserData(JointId id) const {
