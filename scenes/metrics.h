@@ -44,11 +44,11 @@ struct RunSettings {
 };
 
 struct RunMetrics {
-    int steps = 0;               ///< steps taken (a run stops at the first blown-up step)
-    double maxSeparation = 0;    ///< m, over all joints and steps
+    int steps = 0;                 ///< steps taken (a run stops at the first blown-up step)
+    double maxSeparation = 0;      ///< m, over all joints and steps
     double maxSideSeparation = 0;  ///< m, over Scene::sideJoints and all steps
-    double rmsSeparation = 0;    ///< m, over all joints and steps
-    double finalSeparation = 0;  ///< m, largest over joints after the last step
+    double rmsSeparation = 0;      ///< m, over all joints and steps
+    double finalSeparation = 0;    ///< m, largest over joints after the last step
     /// m, largest over joints and the last kSettleSeconds of the run (the whole run if shorter)
     double settledSeparation = 0;
     double energyStart = 0;  ///< J, before the first step
@@ -59,7 +59,7 @@ struct RunMetrics {
     double meanPositionIterations = 0;  ///< NGS sweeps per step actually run
     /// Joint solves per step of the extra sweeps joints asked for (StepStats::extraPositionSolves)
     double meanExtraPositionSolves = 0;
-    double microsecondsPerStep = 0;     ///< mean wall time of World::step alone
+    double microsecondsPerStep = 0;  ///< mean wall time of World::step alone
     /// rad, the furthest any limited joint went beyond its limits.
     double maxLimitViolation = 0;
     /// s from the end of the scene's disturbance until every joint is back within kLinearSlop

@@ -117,7 +117,6 @@ void buildRopeLoad(Scene& scene, const SceneOptions& options) {
     scene.disturbanceEndStep = 0;  // the release
 }
 
-
 // A 36 kg car whose wheels turn on pins under light hubs, each hub on a sprung prismatic
 // suspension (4 Hz, damping ratio 0.7, travel -0.3 to +0.15 m), both wheels driven (25 rad/s, at
 // most 150 N m) back and forth between x = -14 and 14 m over a 0.2 m bump every 3 m. Key: the

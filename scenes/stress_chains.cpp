@@ -129,9 +129,9 @@ void buildJointGrid(Scene& scene, const SceneOptions& options) {
             if (!pinned) scene.bodies.push_back(body);
         },
         [&](int a, int b, Vec2 anchor) {
-            scene.joints.push_back(world.createJoint(options.jointAt(
-                bodies[static_cast<std::size_t>(a)], bodies[static_cast<std::size_t>(b)],
-                topLeft + anchor)));
+            scene.joints.push_back(world.createJoint(
+                options.jointAt(bodies[static_cast<std::size_t>(a)],
+                                bodies[static_cast<std::size_t>(b)], topLeft + anchor)));
         });
     scene.origin = topLeft + Vec2{5.5f, -5.5f};
 }

@@ -32,8 +32,8 @@ void requirePositionError(const char* call, std::int32_t index, const Joint& joi
 
 // A joint's breakForce or breakTorque. The island plans read them (the revision bumps), and the
 // joint's bodies wake, as every setter's do: a sleeping joint is not measured.
-void setBreakThreshold(World::Impl& w, const char* call, JointId id, const char* name,
-                       float value, float Joint::*threshold) {
+void setBreakThreshold(World::Impl& w, const char* call, JointId id, const char* name, float value,
+                       float Joint::*threshold) {
     w.setJoint(
         call, [&] { return w.jointIndex(call, id); },
         [&](const Joint&) { requireNonNegative(call, name, value); },

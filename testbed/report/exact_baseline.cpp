@@ -274,15 +274,15 @@ ExactBaseline runExactBaseline(int steps, int threads,
           "largest over bodies (centre distance plus angle times radius of gyration) and steps; "
           "*max sep* is the strategy's own largest pin separation. One substep of 8 velocity "
           "and 3 position iterations; medians over "
-       << kTrials << " perturbed runs [range]. Baumgarte, soft step and XPBD correct inside or "
+       << kTrials
+       << " perturbed runs [range]. Baumgarte, soft step and XPBD correct inside or "
           "beside the velocity phase, so their distance also holds what their velocity phase "
           "did differently; for the NGS strategies and pseudo velocities it is the position "
           "phase alone.\n\n"
        << "| scene | strategy | from exact (m) | max sep (m) | blew up | steps without an exact "
           "answer |\n"
        << "| --- | --- | --- | --- | ---: | ---: |\n";
-    out.csv =
-        "scene,solver,seed,from_exact_m,max_separation_m,blew_up,steps_without_exact\n";
+    out.csv = "scene,solver,seed,from_exact_m,max_separation_m,blew_up,steps_without_exact\n";
     for (const std::string& name : exactBaselineScenes()) {
         if (progress) progress("exact baseline: " + name);
         const scenes::SceneInfo* info = scenes::findScene(name);
@@ -299,7 +299,8 @@ ExactBaseline runExactBaseline(int steps, int threads,
             long unsolved = 0;
             for (std::size_t t = 0; t < trials.size(); ++t) {
                 out.csv += name + ',' + positionSolverName(solver) + ',' +
-                           std::to_string(trialSeed(static_cast<int>(t))) + ',' + num("%.6g", trials[t].worst) + ',' +
+                           std::to_string(trialSeed(static_cast<int>(t))) + ',' +
+                           num("%.6g", trials[t].worst) + ',' +
                            num("%.6g", trials[t].worstSeparation) + ',' +
                            (trials[t].blewUp ? "1" : "0") + ',' +
                            std::to_string(trials[t].unsolved) + '\n';
@@ -310,9 +311,9 @@ ExactBaseline runExactBaseline(int steps, int threads,
                 blewUp += t.blewUp ? 1 : 0;
                 unsolved += t.unsolved;
             }
-            md << "| " << name << " | " << positionSolverName(solver) << " | " << spreadOf(worst).text()
-               << " | " << spreadOf(separation).text() << " | " << blewUp << "/" << kTrials
-               << " | " << unsolved << " |\n";
+            md << "| " << name << " | " << positionSolverName(solver) << " | "
+               << spreadOf(worst).text() << " | " << spreadOf(separation).text() << " | " << blewUp
+               << "/" << kTrials << " | " << unsolved << " |\n";
         }
     }
     md << "\n";

@@ -55,8 +55,7 @@ struct Setup {
                 return std::string(scene.cheapName) + " " +
                        (scene.cheap == PositionSolver::Baumgarte ? std::to_string(velocity)
                                                                  : split);
-            case Kind::Mixed:
-                return "mixed " + split;
+            case Kind::Mixed: return "mixed " + split;
         }
         return {};
     }
@@ -150,16 +149,15 @@ MixingStudy runMixingStudy(int steps, int threads,
                 scene.joints = scene.keyJoints;
             });
             out.runs += static_cast<int>(r.trials.size());
-            out.raw.add({name, r.name,
-                         s.kind == Kind::Mixed ? std::string("mixed")
-                                               : positionSolverName(options.solver),
-                         options.contactCorrection, -1.0f, 1, s.velocity, s.position},
-                        r.trials);
+            out.raw.add(
+                {name, r.name,
+                 s.kind == Kind::Mixed ? std::string("mixed") : positionSolverName(options.solver),
+                 options.contactCorrection, -1.0f, 1, s.velocity, s.position},
+                r.trials);
             r.median = medianMetrics(r.trials);
             r.jointSolves = double(s.velocity) * joints +
                             double(ngs) * r.median.meanPositionIterations +
-                            double(everySweep) * s.position +
-                            r.median.meanExtraPositionSolves;
+                            double(everySweep) * s.position + r.median.meanExtraPositionSolves;
             results.push_back(std::move(r));
         }
         md << "### " << name << "\n\n"
@@ -192,8 +190,7 @@ MixingStudy runMixingStudy(int steps, int threads,
                     if (uniform.setup->mixed() || uniform.setup->knob()) continue;
                     if (uniform.jointSolves > kEqualCostSlack * candidate.jointSolves) continue;
                     if (!(candidate.median.maxSeparation < uniform.median.maxSeparation)) {
-                        rivals += std::string(rivals.empty() ? "" : ", ") +
-                                  uniform.name + " (" +
+                        rivals += std::string(rivals.empty() ? "" : ", ") + uniform.name + " (" +
                                   num("%.3g", uniform.median.maxSeparation) + " m at " +
                                   num("%.0f", uniform.jointSolves) + ")";
                     }
@@ -212,8 +209,8 @@ MixingStudy runMixingStudy(int steps, int threads,
             o.test = std::string(name) + ": the key joints' median largest separation of each " +
                      (knob ? "island whose key joints ask for extra NGS sweeps (FullNGS "
                              "throughout)"
-                           : "mixed island (FullNGS key joints, " +
-                                 std::string(scene.cheapName) + " elsewhere)") +
+                           : "mixed island (FullNGS key joints, " + std::string(scene.cheapName) +
+                                 " elsewhere)") +
                      " against the plain uniform islands costing at most " +
                      num("%g", kEqualCostSlack) +
                      " times its joint solves; confirmed if every one is ahead of all of them";

@@ -19,13 +19,12 @@ const char* contactCorrectionName(ContactCorrection contacts) {
 void RawRuns::add(const RunConfig& config, const std::vector<scenes::RunMetrics>& trials) {
     std::ostringstream out;
     // Quoted: setup names hold commas ("FullNGS 2/1, key +2").
-    const std::string prefix = config.scene + ",\"" + config.setup + "\"," + config.solver + ',' +
-                               contactCorrectionName(config.contacts) + ',' +
-                               (config.bias < 0.0f ? std::string("default")
-                                                   : num("%g", config.bias)) +
-                               ',' + std::to_string(config.substeps) + ',' +
-                               std::to_string(config.velocityIterations) + ',' +
-                               std::to_string(config.positionIterations) + ',';
+    const std::string prefix =
+        config.scene + ",\"" + config.setup + "\"," + config.solver + ',' +
+        contactCorrectionName(config.contacts) + ',' +
+        (config.bias < 0.0f ? std::string("default") : num("%g", config.bias)) + ',' +
+        std::to_string(config.substeps) + ',' + std::to_string(config.velocityIterations) + ',' +
+        std::to_string(config.positionIterations) + ',';
     for (std::size_t t = 0; t < trials.size(); ++t) {
         const scenes::RunMetrics& m = trials[t];
         out << prefix << trialSeed(static_cast<int>(t)) << ',' << m.steps << ','
@@ -34,11 +33,11 @@ void RawRuns::add(const RunConfig& config, const std::vector<scenes::RunMetrics>
             << num("%.6g", m.rmsSeparation) << ',' << num("%.6g", m.maxSideSeparation) << ','
             << num("%.6g", m.energyDrift()) << ',' << m.clampedBodySteps() << ','
             << num("%.4g", m.meanPositionIterations) << ','
-            << num("%.4g", m.meanExtraPositionSolves) << ','
-            << num("%.6g", m.maxLimitViolation) << ',' << num("%.6g", m.recoverySeconds) << ','
-            << num("%.6g", m.jitter) << ',' << num("%.6g", m.maxPenetration) << ','
-            << num("%.6g", m.settledPenetration) << ',' << num("%.6g", m.maxSpeed) << ','
-            << num("%.6g", m.heightLost) << ',' << num("%.2f", m.microsecondsPerStep) << '\n';
+            << num("%.4g", m.meanExtraPositionSolves) << ',' << num("%.6g", m.maxLimitViolation)
+            << ',' << num("%.6g", m.recoverySeconds) << ',' << num("%.6g", m.jitter) << ','
+            << num("%.6g", m.maxPenetration) << ',' << num("%.6g", m.settledPenetration) << ','
+            << num("%.6g", m.maxSpeed) << ',' << num("%.6g", m.heightLost) << ','
+            << num("%.2f", m.microsecondsPerStep) << '\n';
     }
     rows_ += out.str();
 }

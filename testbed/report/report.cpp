@@ -119,10 +119,10 @@ std::string costPlot(const RunMatrix& matrix, const std::string& scene) {
 RawRuns matrixRuns(const RunMatrix& matrix) {
     RawRuns raw;
     for (const RunRecord& r : matrix.runs) {
-        raw.add({r.scene, positionSolverName(r.solver), positionSolverName(r.solver),
-                 ContactCorrection::NGS, r.bias, 1, kBox2D241VelocityIterations,
-                 r.positionIterations},
-                r.trials);
+        raw.add(
+            {r.scene, positionSolverName(r.solver), positionSolverName(r.solver),
+             ContactCorrection::NGS, r.bias, 1, kBox2D241VelocityIterations, r.positionIterations},
+            r.trials);
     }
     return raw;
 }

@@ -175,12 +175,15 @@ TEST(ReportCheck, MasksTimingsAndNothingElse) {
 // quoted set-up names with commas included.
 TEST(ReportCheck, MasksTheLastColumnOfARunsCsv) {
     using pivot::report::maskCsvTimings;
-    const std::string runs = "scene,setup,max_separation_m,us_per_step\n"
-                             "rope,\"FullNGS 2/1, key +2\",0.012,10.6\n";
-    const std::string slower = "scene,setup,max_separation_m,us_per_step\n"
-                               "rope,\"FullNGS 2/1, key +2\",0.012,11.9\n";
-    const std::string apart = "scene,setup,max_separation_m,us_per_step\n"
-                              "rope,\"FullNGS 2/1, key +2\",0.013,10.6\n";
+    const std::string runs =
+        "scene,setup,max_separation_m,us_per_step\n"
+        "rope,\"FullNGS 2/1, key +2\",0.012,10.6\n";
+    const std::string slower =
+        "scene,setup,max_separation_m,us_per_step\n"
+        "rope,\"FullNGS 2/1, key +2\",0.012,11.9\n";
+    const std::string apart =
+        "scene,setup,max_separation_m,us_per_step\n"
+        "rope,\"FullNGS 2/1, key +2\",0.013,10.6\n";
     EXPECT_EQ(maskCsvTimings(runs), maskCsvTimings(slower));
     EXPECT_NE(maskCsvTimings(runs), maskCsvTimings(apart));
     // Without a timing column nothing is masked.

@@ -246,8 +246,7 @@ EMSCRIPTEN_KEEPALIVE double pv_stat(int which) {
 /// joint separation (m), negated when the run tore (a joint still over 1 m apart at the end, or
 /// blown up); NaN, with the error set, for a refused setting.
 EMSCRIPTEN_KEEPALIVE double pv_study_run(int scene, int solver, int substeps,
-                                         int velocityIterations, int positionIterations,
-                                         int seed) {
+                                         int velocityIterations, int positionIterations, int seed) {
     double result = kNoValue;
     guarded([&] {
         if (scene < 0 || scene >= pv_scene_count() || !validSolver(solver) || seed < 0) {
@@ -266,7 +265,7 @@ EMSCRIPTEN_KEEPALIVE double pv_study_run(int scene, int solver, int substeps,
         settings.positionIterations = positionIterations;
         const scenes::RunMetrics m = scenes::runScene(run, settings);
         // A blown-up run's separation may be NaN, which is the refusal's value: -infinity then.
-        result = !m.torn() ? m.maxSeparation
+        result = !m.torn()                        ? m.maxSeparation
                  : std::isfinite(m.maxSeparation) ? -m.maxSeparation
                                                   : -std::numeric_limits<double>::infinity();
         return true;
